@@ -1,0 +1,83 @@
+#include "control/control_law.h"
+
+#include "common/input_error.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace chaplygin {
+
+SpeedMode speedModeFromName(const std::string& name) {
+    if (name == "energy")
+        return SpeedMode::Energy;
+    if (name == "speed")
+        return SpeedMode::Speed;
+    throw InputError("--mode", "unknown mode '" + name + "' (use energy or speed)");
+}
+
+std::string speedModeName(SpeedMode mode) { return mode == SpeedMode::Energy ? "energy" : "speed"; }
+
+namespace {
+
+void addForces(const ControlParams& p, ControlState& c) {
+    const DerivedSystem& sys = p.system;
+    const double m = sys.mass, a = sys.a;
+    // physics.md sec. 2.7, eqs. (69)-(70)
+    c.forceAxial = m * (c.sddot - a * c.phidot * c.phidot);
+    c.forceLateral = m * (c.sdot * c.phidot + a * c.phiddot);
+    c.torque = sys.inertia() * c.phiddot;
+    c.knifeReaction = c.forceLateral;
+    c.controlCouple = c.torque + a * c.knifeReaction;
+}
+
+} // namespace
+
+ControlState controlOnCurve(const ControlParams& p, double kappa, double dkappa, double phi) {
+    const double m = p.system.mass, a = p.system.a, b = p.system.b;
+    ControlState c;
+    const double bk = b * kappa;
+    const double root = std::sqrt(1 + bk * bk);
+    // tan(Psi) = rho/b, eq. (45); written as Psi = atan2(1, b kappa) in (0, pi), finite at inflections
+    c.psi = std::atan2(1.0, bk);
+    if (p.mode == SpeedMode::Energy) {
+        // sdot = v_T sin(Psi) (34), phidot = (v_T/b) cos(Psi) = kappa sdot (35)
+        c.sdot = p.speed / root;
+    } else {
+        c.sdot = p.speed; // App. C: sdot = v_s
+    }
+    c.phidot = kappa * c.sdot;
+    // dPsi/ds = -b kappa_s/(1 + b^2 kappa^2)
+    c.psidot = -b * dkappa * c.sdot / (1 + bk * bk);
+    if (p.mode == SpeedMode::Energy) {
+        // sec. 2.6: sddot = b phidot Psidot, phiddot = -(sdot/b) Psidot
+        c.sddot = b * c.phidot * c.psidot;
+        c.phiddot = -(c.sdot / b) * c.psidot;
+    } else {
+        c.sddot = 0;
+        c.phiddot = c.sdot * c.sdot * dkappa;
+    }
+    c.chi = c.psi - (a / b) * phi;
+    // lambda = m b chidot = m (b Psidot - a phidot)
+    c.lambda = m * (b * c.psidot - a * c.phidot);
+    c.energy = 0.5 * m * (c.sdot * c.sdot + b * b * c.phidot * c.phidot);
+    c.vT = std::sqrt(c.sdot * c.sdot + b * b * c.phidot * c.phidot);
+    addForces(p, c);
+    return c;
+}
+
+ControlState controlAtPivot(const ControlParams& p, double phi, double turnSign) {
+    const double m = p.system.mass, a = p.system.a, b = p.system.b;
+    ControlState c;
+    // kappa -> +-inf: Psi -> 0 (left) or pi (right), sdot = 0, |phidot| = v_T/b (sec. 2.8)
+    c.psi = turnSign > 0 ? 0.0 : std::numbers::pi;
+    c.sdot = 0;
+    c.phidot = (turnSign > 0 ? 1.0 : -1.0) * p.speed / b;
+    c.chi = c.psi - (a / b) * phi;
+    c.lambda = -m * a * c.phidot;
+    c.energy = 0.5 * m * b * b * c.phidot * c.phidot;
+    c.vT = p.speed;
+    addForces(p, c);
+    return c;
+}
+
+} // namespace chaplygin

@@ -1,0 +1,45 @@
+#pragma once
+#include "systems/system.h"
+
+#include <string>
+
+namespace chaplygin {
+
+enum class SpeedMode {
+    Energy, ///< constant kinetic energy: v_T = sqrt(2T/m_eff) fixed (sec. 4)
+    Speed   ///< constant speed along the path: sdot = v_s fixed (App. C)
+};
+SpeedMode speedModeFromName(const std::string& name);
+std::string speedModeName(SpeedMode mode);
+
+/// Fixed parameters of the control law (a const value; state is separate).
+struct ControlParams {
+    DerivedSystem system;
+    SpeedMode mode = SpeedMode::Energy;
+    double speed = 1.0; ///< v_T [m/s] in Energy mode, v_s [m/s] in Speed mode
+};
+
+/// The tracking control at one point of the path (physics.md sec. 2). Units: SI.
+struct ControlState {
+    double sdot = 0, phidot = 0;   ///< [m/s], [rad/s]
+    double sddot = 0, phiddot = 0; ///< [m/s^2], [rad/s^2]
+    double psi = 0;                ///< control angle in (0, pi): Psi = atan2(1, b kappa)
+    double psidot = 0;             ///< [rad/s]
+    double chi = 0;                ///< Psi - (a/b) phi
+    double lambda = 0;             ///< m b chidot [N s/m * m = kg m/s]
+    double energy = 0;             ///< kinetic energy T [J]
+    double vT = 0;                 ///< sqrt(2T/m) [m/s]
+    double forceAxial = 0;         ///< F_cs = m (sddot - a phidot^2) [N]
+    double forceLateral = 0;       ///< F_cphi = m (sdot phidot + a phiddot) [N]
+    double torque = 0;             ///< S_c = I phiddot about the CM [N m]
+    double knifeReaction = 0;      ///< N = F_cphi, acting at P [N]
+    double controlCouple = 0;      ///< tau = S_c + a N [N m]
+};
+
+/// The control on a smooth stretch, from the curvature, its arc-length derivative and heading.
+ControlState controlOnCurve(const ControlParams& p, double kappa, double dkappa, double phi);
+
+/// The control while pivoting in place at a corner (turn > 0: left). Only Energy mode can pivot.
+ControlState controlAtPivot(const ControlParams& p, double phi, double turnSign);
+
+} // namespace chaplygin

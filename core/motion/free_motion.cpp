@@ -1,0 +1,170 @@
+#include "motion/free_motion.h"
+
+#include "numerics/gauss_legendre.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace chaplygin {
+namespace {
+
+constexpr double kTailTau = 40.0; // sech(40) < 1e-17
+
+// the Gudermannian gd(tau) = 2 atan(tanh(tau/2)) = Psi for the free sleigh
+double gd(double tau) { return 2 * std::atan(std::tanh(0.5 * tau)); }
+double sech(double tau) { return 1.0 / std::cosh(tau); }
+
+} // namespace
+
+FreeMotion::FreeMotion(const DerivedSystem& system, const FreeInitial& initial, double horizon)
+    : m_sys(system), m_init(initial), m_horizon(std::max(horizon, 0.0)) {
+    const double b = m_sys.b, a = m_sys.a;
+    m_v = std::hypot(initial.sdot, b * initial.phidot);
+    if (m_v == 0) {
+        m_case = Case::Rest;
+        return;
+    }
+    if (initial.phidot == 0) {
+        m_case = Case::Line;
+        return;
+    }
+    if (a == 0) {
+        m_case = Case::Circle;
+        return;
+    }
+    m_case = Case::General;
+    m_k = a * m_v / (b * b);
+    m_c = std::atanh(std::clamp(initial.sdot / m_v, -1.0, 1.0));
+    m_sigma = initial.phidot > 0 ? 1.0 : -1.0;
+    m_beta = b / a;
+    m_psi0 = gd(m_c);
+    double tauEnd = m_k > 0 ? kTailTau : -kTailTau;
+    m_tail = std::max(0.0, (tauEnd - m_c) / m_k);
+
+    // panels narrower than both time scales, up to the horizon or the tail
+    double span = std::min(m_tail, m_horizon);
+    double width = std::min(0.5 / std::fabs(m_k), b / m_v);
+    int panels = std::max(1, static_cast<int>(std::ceil(span / width)));
+    m_panelT.resize(panels + 1);
+    m_panelZ.resize(panels + 1);
+    m_panelZ[0] = {initial.x, initial.y};
+    for (int i = 0; i <= panels; ++i)
+        m_panelT[i] = span * i / panels;
+    for (int i = 0; i < panels; ++i)
+        m_panelZ[i + 1] = m_panelZ[i] + panelIntegral(m_panelT[i], m_panelT[i + 1]);
+}
+
+void FreeMotion::velocities(double t, double* sdot, double* phidot, double* phi) const {
+    const double b = m_sys.b;
+    switch (m_case) {
+    case Case::Rest:
+        *sdot = 0;
+        *phidot = 0;
+        *phi = m_init.phi;
+        return;
+    case Case::Line:
+        *sdot = m_init.sdot;
+        *phidot = 0;
+        *phi = m_init.phi;
+        return;
+    case Case::Circle: // a = 0: sddot = 0, phiddot = 0
+        *sdot = m_init.sdot;
+        *phidot = m_init.phidot;
+        *phi = m_init.phi + m_init.phidot * t;
+        return;
+    case Case::General: {
+        double tau = m_k * t + m_c;
+        *sdot = m_v * std::tanh(tau);
+        *phidot = m_sigma * (m_v / b) * sech(tau);
+        *phi = m_init.phi + m_sigma * m_beta * (gd(tau) - m_psi0);
+        return;
+    }
+    }
+}
+
+std::complex<double> FreeMotion::panelIntegral(double t0, double t1) const {
+    gauss::Mapped m = gauss::mapTo(t0, t1);
+    std::complex<double> z = 0;
+    for (int i = 0; i < gauss::kPoints; ++i) {
+        double sdot, phidot, phi;
+        velocities(m.x[i], &sdot, &phidot, &phi);
+        z += m.w[i] * sdot * std::complex<double>(std::cos(phi), std::sin(phi));
+    }
+    return z;
+}
+
+FreeState FreeMotion::at(double t) const {
+    FreeState st;
+    velocities(t, &st.sdot, &st.phidot, &st.phi);
+    st.energy = 0.5 * m_sys.mass * (st.sdot * st.sdot + m_sys.b * m_sys.b * st.phidot * st.phidot);
+    std::complex<double> z0(m_init.x, m_init.y), z;
+    const std::complex<double> dir0(std::cos(m_init.phi), std::sin(m_init.phi));
+    switch (m_case) {
+    case Case::Rest:
+        z = z0;
+        break;
+    case Case::Line:
+        z = z0 + m_init.sdot * t * dir0;
+        break;
+    case Case::Circle: {
+        // z = z0 + sdot/(i omega) (e^{i omega t} - 1) e^{i phi0}, with e^{i th} - 1 = -2 sin^2(th/2) + i sin th
+        double th = m_init.phidot * t, s = std::sin(0.5 * th);
+        std::complex<double> em1(-2 * s * s, std::sin(th));
+        z = z0 + m_init.sdot / m_init.phidot * std::complex<double>(0, -1) * em1 * dir0;
+        break;
+    }
+    case Case::General: {
+        double span = m_panelT.back();
+        if (t <= span) {
+            auto it = std::upper_bound(m_panelT.begin(), m_panelT.end(), t);
+            int k = std::clamp(static_cast<int>(it - m_panelT.begin()) - 1, 0, static_cast<int>(m_panelT.size()) - 2);
+            z = m_panelZ[k] + panelIntegral(m_panelT[k], t);
+        } else if (span >= m_tail) {
+            // beyond the tail the heading is constant and |sdot| = V (to 1e-17)
+            double sdot, phidot, phi;
+            velocities(span, &sdot, &phidot, &phi);
+            z = m_panelZ.back() + m_v * (m_k > 0 ? 1.0 : -1.0) * (t - span) *
+                                      std::complex<double>(std::cos(phi), std::sin(phi));
+        } else {
+            // past the tabulated horizon but before the tail: integrate on from the last panel
+            z = m_panelZ.back();
+            double width = std::min(0.5 / std::fabs(m_k), m_sys.b / m_v);
+            double t0 = span, stop = std::min(t, m_tail);
+            while (t0 < stop) {
+                double t1 = std::min(stop, t0 + width);
+                z += panelIntegral(t0, t1);
+                t0 = t1;
+            }
+            if (t > m_tail) {
+                double sdot, phidot, phi;
+                velocities(m_tail, &sdot, &phidot, &phi);
+                z += m_v * (m_k > 0 ? 1.0 : -1.0) * (t - m_tail) * std::complex<double>(std::cos(phi), std::sin(phi));
+            }
+        }
+        break;
+    }
+    }
+    st.x = z.real();
+    st.y = z.imag();
+    return st;
+}
+
+std::string FreeMotion::velocityModel() const {
+    switch (m_case) {
+    case Case::Rest:
+        return "closed form (at rest)";
+    case Case::Line:
+        return "closed form (straight line, phidot0 = 0)";
+    case Case::Circle:
+        return "closed form (uniform circle, a = 0)";
+    case Case::General:
+        return "closed form (sdot = V tanh, phidot = (V/b) sech)";
+    }
+    return "";
+}
+
+std::string FreeMotion::positionModel() const {
+    return m_case == Case::General ? "quadrature (Gauss-Legendre panels, straight-line tail)" : "closed form";
+}
+
+} // namespace chaplygin

@@ -1,0 +1,51 @@
+#pragma once
+#include "systems/system.h"
+
+#include <complex>
+#include <string>
+#include <vector>
+
+namespace chaplygin {
+
+/// Initial state of the free motion (the controlled motion's state at t = 0).
+struct FreeInitial {
+    double x = 0, y = 0, phi = 0, sdot = 0, phidot = 0;
+};
+
+struct FreeState {
+    double x = 0, y = 0, phi = 0, sdot = 0, phidot = 0;
+    double energy = 0; ///< T = (m/2)(sdot^2 + b^2 phidot^2) [J]
+};
+
+/// The free (Lagrange-d'Alembert / Neimark-Fufaev) sleigh, eqs. (D12)-(D15):
+/// sddot = a phidot^2, phiddot = -a sdot phidot/b^2. Velocities and heading in closed form
+/// (physics.md sec. 1): sdot = V tanh(kt + c), phidot = sigma (V/b) sech(kt + c),
+/// phi = phi0 + sigma (b/a)(gd(kt + c) - gd(c)), k = aV/b^2, c = atanh(sdot0/V).
+/// Position: z = x + iy integrates sdot e^{i phi} by 8-point Gauss-Legendre panels narrower than
+/// both time scales (1/k and b/V), so it is exact to rounding; past |kt + c| > 40 the heading is
+/// constant to 1e-17 and the body moves on a straight line, also in closed form.
+class FreeMotion {
+public:
+    FreeMotion(const DerivedSystem& system, const FreeInitial& initial, double horizon);
+    FreeState at(double t) const;
+    double horizon() const { return m_horizon; }
+    /// The model used for the velocities and for the position, for the Solution's report.
+    std::string velocityModel() const;
+    std::string positionModel() const;
+
+private:
+    enum class Case { Rest, Line, Circle, General };
+    void velocities(double t, double* sdot, double* phidot, double* phi) const;
+    std::complex<double> panelIntegral(double t0, double t1) const;
+
+    DerivedSystem m_sys;
+    FreeInitial m_init;
+    double m_horizon;
+    Case m_case = Case::General;
+    double m_v = 0, m_k = 0, m_c = 0, m_sigma = 1, m_beta = 0, m_psi0 = 0;
+    double m_tail = 0; // time after which the heading is constant
+    std::vector<double> m_panelT;
+    std::vector<std::complex<double>> m_panelZ;
+};
+
+} // namespace chaplygin

@@ -1,0 +1,200 @@
+#include "paths/expression.h"
+
+#include "common/input_error.h"
+
+#include <ginac/ginac.h>
+#include <muParser.h>
+
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <mutex>
+#include <set>
+#include <sstream>
+
+namespace chaplygin {
+namespace {
+
+constexpr std::size_t kMaxLength = 4000;
+constexpr int kMaxDepth = 100;
+
+const std::set<std::string> kFunctions = {"sin",  "cos",  "tan",  "asin", "acos", "atan", "sinh",
+                                          "cosh", "tanh", "exp",  "sqrt", "abs",  "ln",   "log"};
+
+std::string at(const std::string& label, std::size_t index) {
+    return label + ", position " + std::to_string(index + 1);
+}
+
+// reject everything outside the documented syntax before muparser sees it: this is what
+// keeps out assignment (`x=5`), logic (`1/0&&2`), ternaries and non-ASCII text
+void checkCharactersAndNames(const std::string& text, const std::string& variable,
+                             const std::string& label) {
+    if (text.size() > kMaxLength)
+        throw InputError(label, "expression is " + std::to_string(text.size()) +
+                                    " characters long; the limit is " + std::to_string(kMaxLength));
+    int depth = 0;
+    bool any = false;
+    for (std::size_t i = 0; i < text.size();) {
+        unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c >= 0x80)
+            throw InputError(at(label, i), "non-ASCII character; use the ASCII names (pi, sqrt, ...)");
+        if (std::isspace(c)) {
+            ++i;
+            continue;
+        }
+        any = true;
+        if (std::isalpha(c) || c == '_') {
+            std::size_t j = i;
+            while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_'))
+                ++j;
+            std::string name = text.substr(i, j - i);
+            if (name != variable && name != "pi" && name != "e" && !kFunctions.count(name)) {
+                std::string hint = name.size() == 1 ? " (the variable here is " + variable + ")" : "";
+                throw InputError(at(label, i), "unknown name '" + name + "'" + hint);
+            }
+            i = j;
+            continue;
+        }
+        if (std::isdigit(c) || c == '.') {
+            // a number, with an optional exponent such as 1e-3
+            std::size_t j = i;
+            while (j < text.size() && (std::isdigit(static_cast<unsigned char>(text[j])) || text[j] == '.'))
+                ++j;
+            if (j < text.size() && (text[j] == 'e' || text[j] == 'E') && j + 1 < text.size() &&
+                (std::isdigit(static_cast<unsigned char>(text[j + 1])) ||
+                 ((text[j + 1] == '-' || text[j + 1] == '+') && j + 2 < text.size() &&
+                  std::isdigit(static_cast<unsigned char>(text[j + 2]))))) {
+                j += 2;
+                while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j])))
+                    ++j;
+            }
+            i = j;
+            continue;
+        }
+        if (c == '(') {
+            if (++depth > kMaxDepth)
+                throw InputError(at(label, i), "parentheses nested deeper than " + std::to_string(kMaxDepth));
+        } else if (c == ')') {
+            if (--depth < 0)
+                throw InputError(at(label, i), "')' without a matching '('");
+        } else if (!std::strchr("+-*/^", c)) {
+            throw InputError(at(label, i), std::string("character '") + char(c) +
+                                               "' is not allowed (use + - * / ^ and parentheses)");
+        }
+        ++i;
+    }
+    if (!any)
+        throw InputError(label, "the expression is empty");
+    if (depth > 0)
+        throw InputError(at(label, text.size()), "missing ')'");
+}
+
+// `ln` is GiNaC's `log`; `pi` and `e` are constants
+std::string toGinacSyntax(const std::string& text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size();) {
+        if (std::isalpha(static_cast<unsigned char>(text[i]))) {
+            std::size_t j = i;
+            while (j < text.size() && std::isalnum(static_cast<unsigned char>(text[j])))
+                ++j;
+            std::string name = text.substr(i, j - i);
+            out += name == "ln" ? "log" : name;
+            i = j;
+        } else {
+            out += text[i++];
+        }
+    }
+    return out;
+}
+
+void defineCommon(mu::Parser& p) {
+    p.DefineConst("pi", M_PI);
+    p.DefineConst("e", M_E);
+    p.DefineConst("Pi", M_PI);
+    p.DefineFun("log", static_cast<double (*)(double)>(std::log));
+    p.DefineFun("ln", static_cast<double (*)(double)>(std::log));
+}
+
+} // namespace
+
+struct Expression::Impl {
+    std::string text;
+    mutable double var = 0;
+    mutable std::mutex mutex;
+    std::array<mu::Parser, 4> parsers; // value, d/dv, d2/dv2, d3/dv3
+};
+
+Expression Expression::compile(const std::string& text, const std::string& variable,
+                               const std::string& label) {
+    checkCharactersAndNames(text, variable, label);
+    auto impl = std::make_shared<Impl>();
+    impl->text = text;
+
+    // value: muparser on the user's text, which gives syntax errors with their position
+    mu::Parser& p0 = impl->parsers[0];
+    defineCommon(p0);
+    p0.DefineVar(variable, &impl->var);
+    try {
+        p0.SetExpr(text);
+        p0.Eval();
+    } catch (const mu::Parser::exception_type& e) {
+        throw InputError(at(label, static_cast<std::size_t>(std::max(0, e.GetPos()))), e.GetMsg());
+    }
+
+    // derivatives: GiNaC, printed back into muparser syntax
+    GiNaC::realsymbol sym(variable);
+    GiNaC::symtab table;
+    table[variable] = sym;
+    table["pi"] = GiNaC::Pi;
+    table["e"] = GiNaC::exp(GiNaC::ex(1));
+    GiNaC::parser reader(table);
+    reader.strict = true;
+    GiNaC::ex f;
+    try {
+        f = reader(toGinacSyntax(text));
+    } catch (const std::exception& e) {
+        std::string msg = e.what();
+        if (msg.find("power should have exactly 2 operands") != std::string::npos)
+            throw InputError(label, "chained powers a^b^c are ambiguous: write a^(b^c) or (a^b)^c");
+        throw InputError(label, "cannot be differentiated: " + msg.substr(0, msg.find('\n')));
+    }
+    for (int k = 1; k <= 3; ++k) {
+        f = f.diff(sym);
+        std::ostringstream printed;
+        printed << f;
+        mu::Parser& pk = impl->parsers[k];
+        defineCommon(pk);
+        pk.DefineVar(variable, &impl->var);
+        try {
+            pk.SetExpr(printed.str());
+            pk.Eval();
+        } catch (const mu::Parser::exception_type&) {
+            throw InputError(label, "derivative " + std::to_string(k) + " is not a real expression (" +
+                                        printed.str().substr(0, 80) + ")");
+        }
+    }
+    Expression e;
+    e.m_impl = impl;
+    return e;
+}
+
+double Expression::value(double at) const {
+    std::lock_guard lock(m_impl->mutex);
+    m_impl->var = at;
+    return m_impl->parsers[0].Eval();
+}
+
+Jet3 Expression::jet(double at) const {
+    std::lock_guard lock(m_impl->mutex);
+    m_impl->var = at;
+    Jet3 j;
+    j.v = m_impl->parsers[0].Eval();
+    j.d1 = m_impl->parsers[1].Eval();
+    j.d2 = m_impl->parsers[2].Eval();
+    j.d3 = m_impl->parsers[3].Eval();
+    return j;
+}
+
+const std::string& Expression::text() const { return m_impl->text; }
+
+} // namespace chaplygin

@@ -1,0 +1,144 @@
+#include "paths/path.h"
+
+#include "common/input_error.h"
+#include "paths/expression_curve.h"
+#include "paths/spline_curve.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace chaplygin {
+namespace {
+
+constexpr double kStraight = 1e-12; // rad: smaller turns at a vertex are no corner
+
+double wrapAngle(double d) { return d - 2 * std::numbers::pi * std::round(d / (2 * std::numbers::pi)); }
+
+std::vector<std::pair<double, double>> distinctPoints(const PathSource& source) {
+    std::vector<std::pair<double, double>> pts;
+    for (std::size_t i = 0; i < source.points.size(); ++i) {
+        auto [x, y] = source.points[i];
+        if (!std::isfinite(x) || !std::isfinite(y))
+            throw InputError("point " + std::to_string(i + 1), "coordinates must be finite numbers");
+        if (!pts.empty() && x == pts.back().first && y == pts.back().second)
+            continue;
+        pts.emplace_back(x, y);
+    }
+    if (pts.size() < 2)
+        throw InputError("points", "a drawn path needs at least 2 distinct points");
+    return pts;
+}
+
+std::vector<PathPiece> pivotPolyline(const std::vector<std::pair<double, double>>& pts) {
+    std::vector<PathPiece> pieces;
+    double phi = 0;
+    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
+        auto curve = std::make_shared<SegmentCurve>(pts[i].first, pts[i].second, pts[i + 1].first,
+                                                    pts[i + 1].second);
+        auto table = std::make_shared<const PathTable>(curve);
+        double heading = table->nodes().front().phi;
+        if (i == 0) {
+            phi = heading;
+        } else {
+            double turn = wrapAngle(heading - phi);
+            if (std::fabs(std::fabs(turn) - std::numbers::pi) < kStraight)
+                turn = std::numbers::pi; // a reversal: turn left by convention
+            if (std::fabs(turn) > kStraight) {
+                PathPiece pivot;
+                pivot.kind = PathPiece::Kind::Pivot;
+                pivot.x = pts[i].first;
+                pivot.y = pts[i].second;
+                pivot.phiFrom = phi;
+                pivot.phiTo = phi + turn;
+                pieces.push_back(pivot);
+            }
+            phi += turn;
+        }
+        PathPiece piece;
+        piece.table = table;
+        piece.phiOffset = phi - heading;
+        pieces.push_back(piece);
+    }
+    return pieces;
+}
+
+std::vector<PathPiece> singleCurve(std::shared_ptr<const Curve> curve) {
+    PathPiece piece;
+    piece.table = std::make_shared<const PathTable>(std::move(curve));
+    return {piece};
+}
+
+} // namespace
+
+Path::Path(std::vector<PathPiece> pieces) : m_pieces(std::move(pieces)) {
+    double s = 0;
+    for (PathPiece& p : m_pieces) {
+        p.s0 = s;
+        if (p.kind == PathPiece::Kind::Curve)
+            s += p.table->length();
+    }
+    m_length = s;
+}
+
+PathNode Path::start() const {
+    const PathPiece& p = m_pieces.front();
+    PathNode n = p.table->nodes().front();
+    n.phi += p.phiOffset;
+    return n;
+}
+
+PathNode Path::end() const {
+    const PathPiece& p = m_pieces.back();
+    PathNode n = p.table->nodes().back();
+    n.phi += p.phiOffset;
+    n.s = m_length;
+    return n;
+}
+
+int Path::pivotCount() const {
+    int n = 0;
+    for (const PathPiece& p : m_pieces)
+        n += p.kind == PathPiece::Kind::Pivot;
+    return n;
+}
+
+std::shared_ptr<const Path> buildPath(const PathSource& source) {
+    switch (source.kind) {
+    case PathKind::Graph: {
+        Expression y = Expression::compile(source.y, "x", "y(x)");
+        return std::make_shared<const Path>(singleCurve(std::make_shared<GraphCurve>(y, source.from, source.to)));
+    }
+    case PathKind::Parametric: {
+        Expression x = Expression::compile(source.xOfU, "u", "x(u)");
+        Expression y = Expression::compile(source.yOfU, "u", "y(u)");
+        return std::make_shared<const Path>(
+            singleCurve(std::make_shared<ParametricCurve>(x, y, source.from, source.to)));
+    }
+    case PathKind::Polyline: {
+        auto pts = distinctPoints(source);
+        if (source.corners == CornerMode::Pivot || pts.size() == 2)
+            return std::make_shared<const Path>(pivotPolyline(pts));
+        if (!(source.smoothing >= 0) || !std::isfinite(source.smoothing))
+            throw InputError("smoothing", "must be a finite number >= 0, got " + formatNumber(source.smoothing));
+        std::vector<double> xs, ys;
+        for (auto [x, y] : pts) {
+            xs.push_back(x);
+            ys.push_back(y);
+        }
+        return std::make_shared<const Path>(singleCurve(std::make_shared<SplineCurve>(xs, ys, source.smoothing)));
+    }
+    }
+    throw InputError("path", "unknown path kind");
+}
+
+CornerMode cornerModeFromName(const std::string& name) {
+    if (name == "pivot")
+        return CornerMode::Pivot;
+    if (name == "smooth")
+        return CornerMode::Smooth;
+    throw InputError("--corners", "unknown corner mode '" + name + "' (use pivot or smooth)");
+}
+
+std::string cornerModeName(CornerMode mode) { return mode == CornerMode::Pivot ? "pivot" : "smooth"; }
+
+} // namespace chaplygin

@@ -1,0 +1,42 @@
+#pragma once
+#include "paths/path_source.h"
+#include "paths/path_table.h"
+
+#include <memory>
+#include <vector>
+
+namespace chaplygin {
+
+/// One piece of a path: a smooth tabulated curve, or a corner where the body pivots in place
+/// about the knife point, turning from phiFrom to phiTo (physics.md sec. 2.8).
+struct PathPiece {
+    enum class Kind { Curve, Pivot };
+    Kind kind = Kind::Curve;
+    std::shared_ptr<const PathTable> table; ///< Curve only
+    double phiOffset = 0;                   ///< Curve: 2 pi n added to the table's phi
+    double x = 0, y = 0, phiFrom = 0, phiTo = 0; ///< Pivot only
+    double s0 = 0;                          ///< arc length at the start of the piece
+};
+
+/// A path as the core sees it: pieces in order of traversal, built once per path change.
+class Path {
+public:
+    explicit Path(std::vector<PathPiece> pieces);
+    const std::vector<PathPiece>& pieces() const { return m_pieces; }
+    double length() const { return m_length; }
+    /// Geometry at the start (s = 0) and at the end.
+    PathNode start() const;
+    PathNode end() const;
+    /// Number of pivot corners.
+    int pivotCount() const;
+
+private:
+    std::vector<PathPiece> m_pieces;
+    double m_length = 0;
+};
+
+/// Builds and tabulates the path. Throws InputError naming the expression position, the
+/// x or u where the path breaks, or the point of a polyline.
+std::shared_ptr<const Path> buildPath(const PathSource& source);
+
+} // namespace chaplygin

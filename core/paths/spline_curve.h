@@ -1,0 +1,35 @@
+#pragma once
+#include "paths/curve.h"
+
+#include <vector>
+
+namespace chaplygin {
+
+/// A parametric cubic smoothing spline through noisy points (what a mouse draws).
+/// Parameter u is the cumulative chord length. Each coordinate minimises
+/// sum (g_i - p_i)^2 + alpha \int g''^2 du (Reinsch; Green and Silverman, ch. 2), with
+/// alpha = (w h)^4 / h for mean point spacing h and a bandwidth of w spacings, so a shaky line
+/// gets a smooth, C2 curve whose curvature is continuous. w = 0 interpolates.
+class SplineCurve final : public Curve {
+public:
+    SplineCurve(const std::vector<double>& x, const std::vector<double>& y, double bandwidth);
+    CurvePoint eval(double u) const override;
+    double u0() const override { return m_knots.front(); }
+    double u1() const override { return m_knots.back(); }
+    std::string parameterName() const override { return "u"; }
+    std::vector<double> breakpoints() const override { return m_knots; }
+
+private:
+    struct Coordinate {
+        std::vector<double> g;     // values at the knots
+        std::vector<double> gamma; // second derivatives at the knots (natural: 0 at the ends)
+    };
+    Coordinate smooth(const std::vector<double>& data, double alpha) const;
+    void evalCoordinate(const Coordinate& c, int i, double u, double* v, double* d1, double* d2,
+                        double* d3) const;
+
+    std::vector<double> m_knots;
+    Coordinate m_x, m_y;
+};
+
+} // namespace chaplygin

@@ -1,0 +1,33 @@
+#pragma once
+#include "scene/scene.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace chaplygin {
+
+/// The parsed headless command line (design.md sec. 3).
+struct HeadlessOptions {
+    Scene scene;
+    std::optional<std::vector<double>> times; ///< --times: rows exactly at these times
+    int samples = 501;                        ///< --samples: rows evenly spaced on [0, t_end]
+    std::string csvPath, summaryPath, plotsDir;
+    std::vector<std::string> formats{"png"};
+    bool help = false;
+};
+
+/// Parses the arguments after --headless (and the scene options the screenshot mode shares).
+/// Throws InputError naming the option and what is wrong with it.
+HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args);
+
+/// Parses a whole string as a finite double; throws InputError(where) otherwise.
+double parseNumber(const std::string& text, const std::string& where);
+
+/// The usage text printed by --help.
+std::string headlessUsage();
+
+/// Default parameters of each system (SI units), used when --param does not give them.
+std::map<std::string, double> defaultSystemParams(SystemKind kind);
+
+} // namespace chaplygin

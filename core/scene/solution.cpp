@@ -1,0 +1,164 @@
+#include "scene/solution.h"
+
+#include "common/input_error.h"
+
+#include <cmath>
+
+namespace chaplygin {
+namespace {
+
+ControlParams paramsOf(const Scene& scene) {
+    ControlParams p;
+    p.system = deriveSystem(scene.system);
+    p.mode = scene.mode;
+    p.speed = scene.speed;
+    return p;
+}
+
+FreeInitial initialState(const std::shared_ptr<const Path>& path, const ControlParams& params) {
+    FreeInitial init;
+    const PathPiece& first = path->pieces().front();
+    PathNode n = path->start();
+    init.x = n.x;
+    init.y = n.y;
+    init.phi = n.phi;
+    ControlState c = first.kind == PathPiece::Kind::Pivot
+                         ? controlAtPivot(params, n.phi, first.phiTo - first.phiFrom)
+                         : controlOnCurve(params, n.kappa, n.dkappa, n.phi);
+    init.sdot = c.sdot;
+    init.phidot = c.phidot;
+    return init;
+}
+
+double horizonOf(const Scene& scene, double duration) {
+    if (!scene.tEnd)
+        return duration;
+    double t = *scene.tEnd;
+    if (!std::isfinite(t) || !(t > 0))
+        throw InputError("--t-end", "must be a finite number > 0, got " + formatNumber(t));
+    if (t > duration * (1 + 1e-12))
+        throw InputError("--t-end", formatNumber(t) + " s is beyond the end of the path, which the body "
+                                    "reaches at t = " + formatNumber(duration) + " s");
+    return std::min(t, duration);
+}
+
+} // namespace
+
+Solution Solution::compute(const Scene& scene) {
+    ControlParams params = paramsOf(scene); // parameters first: cheaper to reject
+    return Solution(scene, buildPath(scene.path), params);
+}
+
+Solution Solution::compute(const Scene& scene, std::shared_ptr<const Path> path) {
+    return Solution(scene, std::move(path), paramsOf(scene));
+}
+
+Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path, const ControlParams& params)
+    : m_scene(scene), m_path(std::move(path)), m_params(params), m_timeLaw(m_path, params),
+      m_free(params.system, initialState(m_path, params), horizonOf(scene, m_timeLaw.duration())),
+      m_tEnd(horizonOf(scene, m_timeLaw.duration())) {
+    std::size_t panels = 0;
+    for (const PathPiece& p : m_path->pieces())
+        if (p.kind == PathPiece::Kind::Curve)
+            panels += p.table->panels().size();
+    m_models.path = "tabulated once: " + std::to_string(panels) +
+                    " adaptive 8-point Gauss panels, curvature from exact derivatives";
+    if (int pivots = m_path->pivotCount())
+        m_models.path += ", " + std::to_string(pivots) + " pivot corner(s)";
+    if (params.mode == SpeedMode::Speed) {
+        m_models.timeLaw = "closed form (t = s/v_s)";
+        m_models.inversion = m_timeLaw.closedForm() ? "closed form" : "Newton on s(u)";
+    } else if (m_timeLaw.closedForm()) {
+        m_models.timeLaw = "closed form (constant curvature: t = s sqrt(1 + b^2 kappa^2)/v_T)";
+        m_models.inversion = "closed form";
+    } else {
+        m_models.timeLaw = "quadrature (Gauss-Legendre of sqrt(1 + b^2 kappa^2)/v_T ds)";
+        m_models.inversion = "Newton on t(s) with the exact dt/ds";
+    }
+    m_models.control = "closed form in kappa, dkappa/ds and phi (Psi = atan2(1, b kappa))";
+    m_models.freeVelocity = m_free.velocityModel();
+    m_models.freePosition = m_free.positionModel();
+}
+
+void Solution::controlledAt(double t, MotionSample& out) const {
+    PathLocation loc = m_timeLaw.locate(t);
+    const PathPiece& piece = m_path->pieces()[loc.piece];
+    out.t = t;
+    if (piece.kind == PathPiece::Kind::Pivot) {
+        double turn = piece.phiTo - piece.phiFrom;
+        double rate = m_params.speed / m_params.system.b;
+        out.s = piece.s0;
+        out.x = piece.x;
+        out.y = piece.y;
+        out.phi = piece.phiFrom + std::copysign(std::min(rate * loc.sincePivotStart, std::fabs(turn)), turn);
+        out.kappa = std::copysign(INFINITY, turn);
+        out.control = controlAtPivot(m_params, out.phi, turn);
+        return;
+    }
+    PathNode n = piece.table->at(loc.u);
+    out.s = piece.s0 + n.s;
+    out.x = n.x;
+    out.y = n.y;
+    out.phi = n.phi + piece.phiOffset;
+    out.kappa = n.kappa;
+    out.control = controlOnCurve(m_params, n.kappa, n.dkappa, out.phi);
+}
+
+MotionSample Solution::at(double t) const {
+    MotionSample m;
+    controlledAt(t, m);
+    m.free = m_free.at(t);
+    return m;
+}
+
+std::vector<MotionSample> Solution::sample(int count) const {
+    count = std::max(count, 2);
+    std::vector<double> times(count);
+    for (int i = 0; i < count; ++i)
+        times[i] = i + 1 == count ? m_tEnd : m_tEnd * i / (count - 1);
+    return sampleAt(times);
+}
+
+std::vector<MotionSample> Solution::sampleAt(const std::vector<double>& times) const {
+    std::vector<MotionSample> out;
+    out.reserve(times.size());
+    for (double t : times)
+        out.push_back(at(t));
+    return out;
+}
+
+std::vector<MotionSample> Solution::controlledAtNodes() const {
+    std::vector<MotionSample> out;
+    const auto& pieces = m_path->pieces();
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+        const PathPiece& piece = pieces[k];
+        if (piece.kind == PathPiece::Kind::Pivot) {
+            for (double t : {m_timeLaw.pieceStart(k), m_timeLaw.pieceStart(k + 1)}) {
+                if (t > m_tEnd)
+                    break;
+                MotionSample m;
+                controlledAt(t, m);
+                out.push_back(m);
+            }
+            continue;
+        }
+        const auto& nodes = piece.table->nodes();
+        const auto& times = m_timeLaw.nodeTimes(k);
+        for (std::size_t i = 0; i < nodes.size(); ++i) {
+            if (times[i] > m_tEnd)
+                break;
+            MotionSample m;
+            m.t = times[i];
+            m.s = piece.s0 + nodes[i].s;
+            m.x = nodes[i].x;
+            m.y = nodes[i].y;
+            m.phi = nodes[i].phi + piece.phiOffset;
+            m.kappa = nodes[i].kappa;
+            m.control = controlOnCurve(m_params, nodes[i].kappa, nodes[i].dkappa, m.phi);
+            out.push_back(m);
+        }
+    }
+    return out;
+}
+
+} // namespace chaplygin

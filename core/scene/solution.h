@@ -1,0 +1,71 @@
+#pragma once
+#include "control/control_law.h"
+#include "motion/free_motion.h"
+#include "motion/time_law.h"
+#include "paths/path.h"
+#include "scene/scene.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace chaplygin {
+
+/// The controlled and the free motion at one time.
+struct MotionSample {
+    double t = 0;
+    double s = 0, x = 0, y = 0, phi = 0, kappa = 0; ///< controlled body: knife point P, heading
+    ControlState control;
+    FreeState free; ///< free (Lagrange-d'Alembert) body from the same initial state
+};
+
+/// Which model or method produced each quantity (shown by the GUI, written to --summary).
+struct ModelReport {
+    std::string path;         ///< how the path was tabulated
+    std::string timeLaw;      ///< t(s)
+    std::string inversion;    ///< s(t)
+    std::string control;      ///< Psi, chi, lambda, forces
+    std::string freeVelocity; ///< free sdot, phidot, phi
+    std::string freePosition; ///< free x, y
+};
+
+/// One immutable result that the CLI, the GUI and the tests read. Values at any t are computed
+/// exactly on request (no interpolation of stored samples). Recomputing with new system
+/// parameters or speed reuses the tabulated path.
+class Solution {
+public:
+    /// Builds the path and solves. Throws InputError for bad input.
+    static Solution compute(const Scene& scene);
+    /// Solves on an already tabulated path (scene.path is taken to describe it).
+    static Solution compute(const Scene& scene, std::shared_ptr<const Path> path);
+
+    const Scene& scene() const { return m_scene; }
+    const std::shared_ptr<const Path>& path() const { return m_path; }
+    const DerivedSystem& system() const { return m_params.system; }
+    const ControlParams& params() const { return m_params; }
+    const ModelReport& models() const { return m_models; }
+    double duration() const { return m_timeLaw.duration(); } ///< time to traverse the path [s]
+    double tEnd() const { return m_tEnd; }                   ///< horizon [s]
+
+    MotionSample at(double t) const;
+    /// count samples evenly spaced on [0, tEnd] (count >= 2).
+    std::vector<MotionSample> sample(int count) const;
+    std::vector<MotionSample> sampleAt(const std::vector<double>& times) const;
+    /// The controlled motion at the path table's panel ends (exact values, uneven times): the
+    /// cheapest dense series, for plots. The free motion is not filled in.
+    std::vector<MotionSample> controlledAtNodes() const;
+
+private:
+    Solution(const Scene& scene, std::shared_ptr<const Path> path, const ControlParams& params);
+    void controlledAt(double t, MotionSample& out) const;
+
+    Scene m_scene;
+    std::shared_ptr<const Path> m_path;
+    ControlParams m_params;
+    TimeLaw m_timeLaw;
+    FreeMotion m_free;
+    double m_tEnd = 0;
+    ModelReport m_models;
+};
+
+} // namespace chaplygin

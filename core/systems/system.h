@@ -1,0 +1,35 @@
+#pragma once
+#include <map>
+#include <string>
+
+namespace chaplygin {
+
+enum class SystemKind { Sleigh, Disk, Carriage };
+
+/// The user's choice of system and its named parameters, as typed (SI units: kg, m, kg m^2).
+/// sleigh: m, a, and I or b; disk (App. A): m, R, I1, I2; carriage (App. B): R, a, m, I1, I2, M, I.
+struct SystemSpec {
+    SystemKind kind = SystemKind::Sleigh;
+    std::map<std::string, double> params{{"m", 1.0}, {"a", 0.5}, {"b", 1.0}};
+};
+
+/// Every Chaplygin system here reduces to a sleigh: effective mass, CM offset a, gyration radius b.
+struct DerivedSystem {
+    double mass = 1.0; ///< effective mass m_eff [kg]
+    double a = 0.5;    ///< offset of the centre of mass ahead of the contact point [m]
+    double b = 1.0;    ///< radius of gyration about the contact point [m], b^2 = a^2 + I/m
+    double inertia() const { return mass * (b * b - a * a); } ///< I about the CM [kg m^2]
+};
+
+/// Maps the spec to (m_eff, a, b). Throws InputError naming the parameter when it is missing,
+/// unknown, non-finite or outside its physical range.
+DerivedSystem deriveSystem(const SystemSpec& spec);
+
+/// "sleigh" | "disk" | "carriage" <-> SystemKind. Throws InputError for other names.
+SystemKind systemKindFromName(const std::string& name);
+std::string systemKindName(SystemKind kind);
+
+/// The parameter names each system accepts, in display order.
+const char* const* systemParameterNames(SystemKind kind, int* count);
+
+} // namespace chaplygin
