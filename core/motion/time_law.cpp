@@ -88,6 +88,10 @@ PathLocation TimeLaw::locate(double t) const {
     auto nt = std::upper_bound(times.begin(), times.end(), t);
     int k = std::clamp(static_cast<int>(nt - times.begin()) - 1, 0, static_cast<int>(table.panels().size()) - 1);
     const PathNode &lo = table.nodes()[k], &hi = table.nodes()[k + 1];
+    if (t == times[k] || t == times[k + 1]) {
+        loc.u = t == times[k] ? lo.u : hi.u;
+        return loc;
+    }
     if (table.uniform()) {
         loc.u = std::clamp(lo.u + (t - times[k]) / rate(lo.speed, lo.kappa), lo.u, hi.u);
         return loc;

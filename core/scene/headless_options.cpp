@@ -123,6 +123,9 @@ HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args) {
         };
         if (opt == "--headless") {
             continue;
+        } else if (opt == "--work-precision") {
+            once();
+            o.workPrecision = true;
         } else if (opt == "--help" || opt == "-h") {
             o.help = true;
         } else if (opt == "--preset") {

@@ -15,6 +15,7 @@ struct HeadlessOptions {
     std::string csvPath, summaryPath, plotsDir;
     std::vector<std::string> formats{"png"};
     bool help = false;
+    bool workPrecision = false; ///< --work-precision: the speed-against-accuracy sweep (issue #4)
 };
 
 /// Parses the arguments after --headless (and the scene options the screenshot mode shares).

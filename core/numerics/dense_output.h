@@ -1,0 +1,33 @@
+#pragma once
+#include "numerics/ode_problem.h"
+
+#include <array>
+#include <vector>
+
+namespace chaplygin {
+
+/// The solution of an ODE between its accepted steps, interpolated by quintic Hermite
+/// polynomials through y, y' = f and y'' = (df/dy) f + df/dt at both ends of each step. Integrating
+/// freely and interpolating keeps the step size the method chose (design.md sec. 4): the
+/// interpolation error is O(h^6), below the local error of every method here at its own step.
+class DenseOutput {
+public:
+    explicit DenseOutput(int dimension) : m_dim(dimension) {}
+
+    /// Appends the node (t, y) with y' = f(t, y) given; y'' from the problem's Jacobian.
+    void add(const OdeProblem& problem, double t, const double* y, const double* f, OdeWork& work);
+    int dimension() const { return m_dim; }
+    std::size_t size() const { return m_t.size(); }
+    double tFront() const { return m_t.front(); }
+    double tBack() const { return m_t.back(); }
+    /// y(t) into out (t clamped to the nodes' range).
+    void at(double t, double* out) const;
+
+private:
+    using Row = std::array<double, kMaxOdeDimension>;
+    int m_dim;
+    std::vector<double> m_t;
+    std::vector<Row> m_y, m_f, m_g; // y, y', y''
+};
+
+} // namespace chaplygin

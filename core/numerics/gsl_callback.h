@@ -1,0 +1,52 @@
+#pragma once
+#include "numerics/ode_problem.h"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_math.h>
+
+namespace chaplygin::gsl {
+
+/// The single GSL callback adapter: the only place where void* appears. It forwards GSL's C
+/// callbacks to a C++ callable (gsl_function) or an OdeProblem (gsl_odeiv2_system), counting
+/// the calls.
+template <class F> struct FunctionAdapter {
+    F* f;
+    long* calls;
+    static double call(double x, void* self) {
+        auto* a = static_cast<FunctionAdapter*>(self);
+        ++*a->calls;
+        return (*a->f)(x);
+    }
+    gsl_function function() { return gsl_function{&FunctionAdapter::call, this}; }
+};
+
+struct OdeAdapter {
+    const OdeProblem* problem;
+    OdeWork* work;
+    static int rhs(double t, const double y[], double f[], void* self) {
+        auto* a = static_cast<OdeAdapter*>(self);
+        ++a->work->rhsEvals;
+        a->problem->rhs(t, y, f);
+        return GSL_SUCCESS;
+    }
+    static int jacobian(double t, const double y[], double* dfdy, double dfdt[], void* self) {
+        auto* a = static_cast<OdeAdapter*>(self);
+        ++a->work->jacobianEvals;
+        a->problem->jacobian(t, y, dfdy, dfdt);
+        return GSL_SUCCESS;
+    }
+};
+
+/// GSL's default handler aborts; within this scope errors come back as return codes.
+class ErrorHandlerOff {
+public:
+    ErrorHandlerOff() : m_old(gsl_set_error_handler_off()) {}
+    ~ErrorHandlerOff() { gsl_set_error_handler(m_old); }
+    ErrorHandlerOff(const ErrorHandlerOff&) = delete;
+    ErrorHandlerOff& operator=(const ErrorHandlerOff&) = delete;
+
+private:
+    gsl_error_handler_t* m_old;
+};
+
+} // namespace chaplygin::gsl

@@ -1,0 +1,100 @@
+#include "numerics/gsl_ode.h"
+
+#include "numerics/gsl_callback.h"
+
+#include <gsl/gsl_odeiv2.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <stdexcept>
+
+namespace chaplygin {
+
+std::string gslStepperName(GslStepper stepper) {
+    switch (stepper) {
+    case GslStepper::Rk4:
+        return "gsl_rk4";
+    case GslStepper::Rkf45:
+        return "gsl_rkf45";
+    case GslStepper::Rkck:
+        return "gsl_rkck";
+    case GslStepper::Rk8pd:
+        return "gsl_rk8pd";
+    case GslStepper::MsAdams:
+        return "gsl_msadams";
+    case GslStepper::MsBdf:
+        return "gsl_msbdf";
+    }
+    return "gsl";
+}
+
+namespace {
+
+const gsl_odeiv2_step_type* stepType(GslStepper stepper) {
+    switch (stepper) {
+    case GslStepper::Rk4:
+        return gsl_odeiv2_step_rk4;
+    case GslStepper::Rkf45:
+        return gsl_odeiv2_step_rkf45;
+    case GslStepper::Rkck:
+        return gsl_odeiv2_step_rkck;
+    case GslStepper::Rk8pd:
+        return gsl_odeiv2_step_rk8pd;
+    case GslStepper::MsAdams:
+        return gsl_odeiv2_step_msadams;
+    case GslStepper::MsBdf:
+        return gsl_odeiv2_step_msbdf;
+    }
+    return gsl_odeiv2_step_rkf45;
+}
+
+struct DriverDeleter {
+    void operator()(gsl_odeiv2_driver* d) const { gsl_odeiv2_driver_free(d); }
+};
+using DriverPtr = std::unique_ptr<gsl_odeiv2_driver, DriverDeleter>;
+
+} // namespace
+
+GslSolve integrateGsl(const OdeProblem& problem, GslStepper stepper, double t0, const double* y0,
+                      double t1, double tolerance) {
+    const int n = problem.dimension();
+    GslSolve out{DenseOutput(n), OdeWork{}};
+    gsl::OdeAdapter adapter{&problem, &out.work};
+    gsl_odeiv2_system sys{&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian,
+                          static_cast<std::size_t>(n), &adapter};
+    gsl::ErrorHandlerOff quiet;
+    // a first step of tol^(1/4) of the span; the controller adapts it at once
+    double h = (t1 - t0) * std::min(0.1, std::pow(tolerance, 0.25));
+    DriverPtr driver(gsl_odeiv2_driver_alloc_standard_new(&sys, stepType(stepper), h, tolerance,
+                                                          tolerance, 1.0, 0.0));
+    if (!driver)
+        throw std::runtime_error("gsl_odeiv2_driver_alloc failed");
+    std::array<double, kMaxOdeDimension> y{}, f{};
+    std::copy_n(y0, n, y.begin());
+    double t = t0;
+    problem.rhs(t, y.data(), f.data());
+    ++out.work.rhsEvals;
+    out.dense.add(problem, t, y.data(), f.data(), out.work);
+    // free steps through the driver's own evolve, control and stepper (msadams/msbdf need the
+    // driver); never clamped to output times
+    gsl_odeiv2_driver* d = driver.get();
+    while (t < t1) {
+        int status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, &sys, &t, t1, &h, y.data());
+        if (status != GSL_SUCCESS)
+            throw std::runtime_error(gslStepperName(stepper) + ": " + gsl_strerror(status) + " at t = " +
+                                     std::to_string(t));
+        // the stepper's derivative at the new point (f(t, y) after the accepted step)
+        problem.rhs(t, y.data(), f.data());
+        ++out.work.rhsEvals;
+        out.dense.add(problem, t, y.data(), f.data(), out.work);
+        if (out.work.rhsEvals > 50'000'000)
+            throw std::runtime_error(gslStepperName(stepper) + ": too many steps");
+    }
+    out.work.steps = static_cast<long>(d->e->count);
+    out.work.rejected = static_cast<long>(d->e->failed_steps);
+    return out;
+}
+
+} // namespace chaplygin

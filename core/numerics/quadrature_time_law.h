@@ -1,0 +1,29 @@
+#pragma once
+#include "control/control_law.h"
+#include "numerics/ode_problem.h"
+#include "paths/curve.h"
+
+#include <vector>
+
+namespace chaplygin {
+
+/// The time law by adaptive GSL quadrature (QAG, 21-point Gauss-Kronrod) of
+/// t(u) = \int |r'(u)| sqrt(1 + b^2 kappa^2)/v_T du (physics.md sec. 2.3, eqs. (52)-(53) corrected)
+/// and its inversion by Newton with the exact dt/du. The tolerance bounds the quadrature's
+/// absolute error of t over the whole path; Newton converges to rounding.
+class QuadratureTimeLaw {
+public:
+    QuadratureTimeLaw(const Curve& curve, const ControlParams& params, double tolerance);
+    /// dt/du at u [s].
+    double rate(double u) const;
+    /// The curve parameter u at each of the ascending times (from t = 0 at u0). Curve evaluations
+    /// are counted as work.rhsEvals.
+    std::vector<double> invert(const std::vector<double>& times, OdeWork& work) const;
+
+private:
+    const Curve& m_curve;
+    ControlParams m_params;
+    double m_tolerance;
+};
+
+} // namespace chaplygin

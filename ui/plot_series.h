@@ -1,0 +1,27 @@
+#pragma once
+#include "scene/solution.h"
+
+#include <QString>
+#include <QVector>
+
+namespace chaplygin::ui {
+
+/// The time series the plots draw, gathered from a Solution once per recompute.
+/// Controlled quantities come from the path table's nodes (exact values at uneven times);
+/// the free motion is sampled evenly in t.
+struct PlotSeries {
+    QVector<double> t, s, x, y, psi, chi, lambda, energy;
+    QVector<double> freeT, freeX, freeY, freePsi, freeChi, freeEnergy;
+    QVector<double> pathX, pathY; ///< the prescribed path, whole
+    double tEnd = 0;
+};
+
+/// freeSamples: how many evenly spaced times for the free motion. exactSamples > 0 samples the
+/// controlled motion evenly in t as well (exact, slower: for exported figures); 0 takes the
+/// path table's nodes (cheap: for live plots).
+PlotSeries collectSeries(const Solution& solution, int freeSamples = 400, int exactSamples = 0);
+
+/// One line that states the scene's parameters, for captions and exported files.
+QString sceneCaption(const Solution& solution);
+
+} // namespace chaplygin::ui
