@@ -40,6 +40,25 @@ void writeFileAtomically(const std::string& path, const std::string& content) {
     }
     if (path.empty())
         throw IoError("cannot write: the file name is empty");
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
+        if (S_ISDIR(st.st_mode))
+            fail(path, "it is a directory", 0);
+        // a device or a pipe (/dev/stdout, a FIFO): it cannot be replaced, so write in place
+        int fd = ::open(path.c_str(), O_WRONLY);
+        if (fd < 0)
+            fail(path, "cannot open", errno);
+        errno = 0;
+        bool ok = writeAll(fd, content);
+        int err = errno;
+        if (::close(fd) != 0 && ok) {
+            ok = false;
+            err = errno;
+        }
+        if (!ok)
+            fail(path, "short write", err == 0 ? ENOSPC : err);
+        return;
+    }
     std::string tmp = path + ".tmp-XXXXXX";
     int fd = ::mkstemp(tmp.data());
     if (fd < 0)

@@ -107,13 +107,12 @@ PathLocation TimeLaw::locate(double t) const {
         double f = timeAt(piece, u) - t;
         (f > 0 ? b : a) = u;
         CurveGeometry g = geometryOf(table.curve().eval(u));
-        double next = u - f / rate(g.speed, g.kappa);
-        if (!(next > a && next < b))
-            next = 0.5 * (a + b);
-        bool done = std::fabs(next - u) <= 2e-16 * (std::fabs(u) + (hi.u - lo.u));
-        u = next;
-        if (done || a == b)
+        double step = f / rate(g.speed, g.kappa);
+        if (std::fabs(step) <= 1e-15 * (std::fabs(u) + (hi.u - lo.u))) {
+            u -= step;
             break;
+        }
+        u = (u - step > a && u - step < b) ? u - step : 0.5 * (a + b);
     }
     loc.u = u;
     return loc;

@@ -16,7 +16,7 @@ struct PathSource {
     double from = 0, to = 12.566370614359172; ///< x-range or u-range
     std::vector<std::pair<double, double>> points; ///< polyline vertices, in order
     CornerMode corners = CornerMode::Pivot;
-    double smoothing = 3.0; ///< smoothed polylines: spline bandwidth in point spacings (0 interpolates)
+    double smoothing = 10.0; ///< smoothed polylines: spline bandwidth in point spacings (0 interpolates)
 
     bool operator==(const PathSource&) const = default;
 };

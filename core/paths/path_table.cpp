@@ -245,13 +245,12 @@ double PathTable::uAtArcLength(double s) const {
         for (int i = 0; i < gauss::kPoints; ++i)
             f += part.weight[i] * part.geometry[i].speed;
         (f > 0 ? b : a) = u;
-        double next = u - f / geometryOf(m_curve->eval(u)).speed;
-        if (!(next > a && next < b))
-            next = 0.5 * (a + b);
-        bool done = std::fabs(next - u) <= 1e-15 * (std::fabs(u) + (hi.u - lo.u));
-        u = next;
-        if (done)
+        double step = f / geometryOf(m_curve->eval(u)).speed;
+        if (std::fabs(step) <= 1e-15 * (std::fabs(u) + (hi.u - lo.u))) {
+            u -= step;
             break;
+        }
+        u = (u - step > a && u - step < b) ? u - step : 0.5 * (a + b);
     }
     return u;
 }

@@ -11,6 +11,8 @@ enum class SystemKind { Sleigh, Disk, Carriage };
 struct SystemSpec {
     SystemKind kind = SystemKind::Sleigh;
     std::map<std::string, double> params{{"m", 1.0}, {"a", 0.5}, {"b", 1.0}};
+
+    bool operator==(const SystemSpec&) const = default;
 };
 
 /// Every Chaplygin system here reduces to a sleigh: effective mass, CM offset a, gyration radius b.

@@ -1,1 +1,135 @@
+// Path tabulation: arc length, unwrapped heading, curvature, domain errors with their place,
+// drawn polylines (pivots and smoothing splines).
+#include "common/input_error.h"
+#include "paths/path.h"
+
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+using namespace chaplygin;
+
+namespace {
+
+PathSource graph(const std::string& y, double x0, double x1) {
+    PathSource p;
+    p.kind = PathKind::Graph;
+    p.y = y;
+    p.from = x0;
+    p.to = x1;
+    return p;
+}
+
+std::string errorOf(const PathSource& p) {
+    try {
+        buildPath(p);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(Paths, ParabolaArcLengthCurvatureAndHeading) {
+    auto path = buildPath(graph("x^2", -1, 2));
+    const PathTable& t = *path->pieces().front().table;
+    // arc length of y = x^2: [x sqrt(1+4x^2)/2 + asinh(2x)/4]
+    auto arc = [](double x) { return x * std::sqrt(1 + 4 * x * x) / 2 + std::asinh(2 * x) / 4; };
+    EXPECT_NEAR(path->length(), arc(2) - arc(-1), 1e-12);
+    for (double x : {-0.7, 0.0, 0.31, 1.9}) {
+        PathNode n = t.at(x);
+        EXPECT_NEAR(n.s, arc(x) - arc(-1), 1e-12);
+        EXPECT_NEAR(n.kappa, 2 / std::pow(1 + 4 * x * x, 1.5), 1e-13);
+        EXPECT_NEAR(n.dkappa, -24 * x / std::pow(1 + 4 * x * x, 3), 1e-12); // dkappa/dx / (ds/dx)
+        EXPECT_NEAR(n.phi, std::atan(2 * x), 1e-14);
+        EXPECT_NEAR(t.uAtArcLength(n.s), x, 1e-13);
+    }
+}
+
+TEST(Paths, HeadingIsUnwrappedAroundSeveralTurns) {
+    PathSource p;
+    p.kind = PathKind::Parametric;
+    p.xOfU = "cos(u)";
+    p.yOfU = "sin(u)";
+    p.from = 0;
+    p.to = 6 * std::numbers::pi;
+    auto path = buildPath(p);
+    EXPECT_NEAR(path->end().phi - path->start().phi, 6 * std::numbers::pi, 1e-12);
+    EXPECT_NEAR(path->pieces().front().table->at(5 * std::numbers::pi).phi, 5.5 * std::numbers::pi, 1e-12);
+    EXPECT_TRUE(path->pieces().front().table->uniform());
+}
+
+TEST(Paths, DomainProblemsNameTheirPlace) {
+    EXPECT_NE(errorOf(graph("1/x", -1, 1)).find("path at x = "), std::string::npos) << errorOf(graph("1/x", -1, 1));
+    EXPECT_NE(errorOf(graph("1/x", 0, 1)).find("path at x = 0:"), std::string::npos) << errorOf(graph("1/x", 0, 1));
+    EXPECT_NE(errorOf(graph("sqrt(x)", -1, 1)).find("path at x = -1:"), std::string::npos);
+    EXPECT_NE(errorOf(graph("ln(x)", 0, 2)).find("path at x = 0:"), std::string::npos);
+    EXPECT_NE(errorOf(graph("exp(x)", 0, 800)).find("path at x = "), std::string::npos) << errorOf(graph("exp(x)", 0, 800));
+    // a vertical tangent at the end of a y(x) graph
+    EXPECT_NE(errorOf(graph("sqrt(1 - x^2)", -1, 1)).find("path at x = -1: the path has no finite tangent"),
+              std::string::npos)
+        << errorOf(graph("sqrt(1 - x^2)", -1, 1));
+    EXPECT_NE(errorOf(graph("x", 2, 1)).find("x-range"), std::string::npos);
+    PathSource cusp;
+    cusp.kind = PathKind::Parametric;
+    cusp.xOfU = "u^2";
+    cusp.yOfU = "u^3";
+    cusp.from = -1;
+    cusp.to = 1;
+    EXPECT_NE(errorOf(cusp).find("path at u = 0: the path stops here"), std::string::npos) << errorOf(cusp);
+}
+
+TEST(Paths, PolylineWithPivotsHasSegmentsAndCorners) {
+    PathSource p;
+    p.kind = PathKind::Polyline;
+    p.points = {{0, 0}, {1, 0}, {1, 0}, {2, 0}, {2, 1}, {1, 1}};
+    auto path = buildPath(p);
+    EXPECT_EQ(path->pivotCount(), 2); // collinear and repeated points are no corner
+    EXPECT_NEAR(path->length(), 4, 1e-14);
+    EXPECT_NEAR(path->end().phi, std::numbers::pi, 1e-14);
+    p.points = {{0, 0}, {0, 0}};
+    EXPECT_NE(errorOf(p).find("at least 2 distinct points"), std::string::npos);
+    p.points = {{0, 0}, {NAN, 1}};
+    EXPECT_NE(errorOf(p).find("point 2"), std::string::npos);
+}
+
+TEST(Paths, SmoothingSplineGivesSmoothCurvatureForAShakyCircle) {
+    PathSource p;
+    p.kind = PathKind::Polyline;
+    p.corners = CornerMode::Smooth;
+    const int n = 200;
+    const double R = 3;
+    for (int i = 0; i <= n; ++i) {
+        double th = std::numbers::pi * i / n;
+        double wobble = 0.01 * ((i * 7919) % 13 - 6) / 6.0; // deterministic "hand" jitter of 1 cm
+        p.points.emplace_back((R + wobble) * std::cos(th), (R + wobble) * std::sin(th));
+    }
+    auto path = buildPath(p);
+    const PathTable& t = *path->pieces().front().table;
+    double u0 = t.nodes().front().u, u1 = t.nodes().back().u;
+    // away from the natural ends (kappa = 0 there) the curvature is that of the circle,
+    // and along the whole path it varies smoothly: no jitter from the noisy points
+    std::vector<double> kappa;
+    for (int i = 0; i <= 400; ++i)
+        kappa.push_back(t.at(u0 + (u1 - u0) * i / 400.0).kappa);
+    for (int i = 1; i < 400; ++i) {
+        if (i >= 80 && i <= 320)
+            EXPECT_NEAR(kappa[i], 1 / R, 0.05 / R) << i;
+        EXPECT_LT(std::fabs(kappa[i + 1] - 2 * kappa[i] + kappa[i - 1]), 0.005 / R) << i;
+    }
+    // with no smoothing the spline interpolates the points, and the jitter shows in kappa
+    p.smoothing = 0;
+    auto exact = buildPath(p);
+    double rough = 0;
+    for (int i = 1; i < 400; ++i) {
+        auto k = [&](int j) { return exact->pieces().front().table->at(u0 + (u1 - u0) * j / 400.0).kappa; };
+        rough = std::max(rough, std::fabs(k(i + 1) - 2 * k(i) + k(i - 1)));
+    }
+    EXPECT_GT(rough, 100 * 0.005 / R);
+    CurvePoint q = exact->pieces().front().table->curve().eval(0);
+    EXPECT_NEAR(q.x, p.points[0].first, 1e-12);
+    EXPECT_NEAR(q.y, p.points[0].second, 1e-12);
+}

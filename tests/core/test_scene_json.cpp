@@ -1,1 +1,98 @@
+// Scene files: round trip, and rejection of broken files with the JSON path named.
+#include "common/atomic_file.h"
+#include "common/input_error.h"
+#include "scene/presets.h"
+#include "scene/scene_json.h"
+
 #include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+
+using namespace chaplygin;
+
+namespace {
+
+std::string errorOf(const std::string& text) {
+    try {
+        sceneFromJson(text);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST(SceneJson, RoundTripsEveryPreset) {
+    for (const std::string& name : presetNames()) {
+        Scene s = presetScene(name);
+        s.tEnd = 2.5;
+        EXPECT_EQ(sceneFromJson(sceneToJson(s)), s) << name;
+    }
+    Scene drawn;
+    drawn.path.kind = PathKind::Polyline;
+    drawn.path.points = {{0, 0}, {1, 0.1}, {2, -0.3}};
+    drawn.path.corners = CornerMode::Smooth;
+    drawn.system.kind = SystemKind::Disk;
+    drawn.system.params = {{"m", 1}, {"R", 0.5}, {"I1", 0.1}, {"I2", 0.05}};
+    drawn.mode = SpeedMode::Speed;
+    EXPECT_EQ(sceneFromJson(sceneToJson(drawn)), drawn);
+}
+
+TEST(SceneJson, BrokenFilesAreRejectedWithTheirPlace) {
+    std::string good = sceneToJson(presetScene("catenary"));
+    EXPECT_NE(errorOf("").find("empty"), std::string::npos);
+    EXPECT_NE(errorOf(good.substr(0, good.size() / 2)).find("not valid JSON"), std::string::npos);
+    EXPECT_NE(errorOf("\xEF\xBB\xBF" + good).find("byte-order mark"), std::string::npos);
+    EXPECT_NE(errorOf(std::string("{\"a\":\0}", 7)).find("NUL"), std::string::npos);
+    EXPECT_NE(errorOf(std::string(100, '[') + std::string(100, ']')).find("nested deeper"), std::string::npos);
+    EXPECT_NE(errorOf("[1,2]").find("scene file /: must be an object"), std::string::npos) << errorOf("[1,2]");
+    std::string s = good;
+    s.replace(s.find("\"speed\": 1.0"), 12, "\"speed\": \"fast\"");
+    EXPECT_NE(errorOf(s).find("scene file /speed: must be a number"), std::string::npos) << errorOf(s);
+    s = good;
+    s.replace(s.find("\"version\": 1"), 12, "\"version\": 7");
+    EXPECT_NE(errorOf(s).find("newer release"), std::string::npos) << errorOf(s);
+    s = good;
+    s.replace(s.find("\"m\": 1.0"), 8, "\"m\": NaN");
+    EXPECT_NE(errorOf(s).find("not valid JSON"), std::string::npos) << errorOf(s);
+    s = good;
+    s.replace(s.find("\"range\": ["), 10, "\"range\": [\"a\", ");
+    EXPECT_NE(errorOf(s).find("/path/range"), std::string::npos) << errorOf(s);
+    s = good;
+    s.replace(s.find("\"parametric\""), 12, "\"spiral\"");
+    EXPECT_NE(errorOf(s).find("/path/kind"), std::string::npos) << errorOf(s);
+    EXPECT_NE(errorOf("{\"format\": \"chaplygin-lab-scene\", \"version\": 1, \"path\": \"\xff\"}").find("not valid JSON"),
+              std::string::npos);
+}
+
+TEST(SceneJson, AtomicWriteKeepsTheOldFileOnFailure) {
+    namespace fs = std::filesystem;
+    fs::path dir = fs::temp_directory_path() / "chaplygin-atomic-test";
+    fs::create_directories(dir);
+    fs::path file = dir / "scene.json";
+    writeFileAtomically(file.string(), "old contents\n");
+    // a directory in the way of the rename: the write fails and the old file stays
+    EXPECT_THROW(writeFileAtomically((dir / "missing-dir" / "x.json").string(), "new"), IoError);
+    EXPECT_THROW(writeFileAtomically(dir.string(), "new"), IoError);
+    EXPECT_THROW(writeFileAtomically("", "new"), IoError);
+    std::ifstream in(file);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "old contents");
+    // a full device (a private copy of /dev/full, made where mknod is allowed): every write
+    // fails with ENOSPC, the writer says so, and the device is written in place, not replaced
+    fs::path full = dir / "full";
+    if (::mknod(full.c_str(), S_IFCHR | 0666, makedev(1, 7)) == 0) {
+        EXPECT_THROW(writeFileAtomically(full.string(), "data"), IoError);
+        EXPECT_TRUE(fs::is_character_file(full));
+        fs::remove(full);
+    }
+    for (const auto& entry : fs::directory_iterator(dir))
+        EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
+    fs::remove_all(dir);
+}

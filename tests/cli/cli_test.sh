@@ -1,0 +1,177 @@
+#!/usr/bin/env bash
+# One command-line test case: cli_test.sh EXE CASE. Exits non-zero with a message on failure.
+set -u
+exe=$1
+case_name=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL ($case_name): $*" >&2; exit 1; }
+
+# run EXPECTED_STATUS args...: runs the CLI, keeps stdout/stderr, checks the exit status
+run() {
+  local expected=$1; shift
+  "$exe" --headless "$@" >"$work/out" 2>"$work/err"
+  local status=$?
+  [ "$status" -eq "$expected" ] || fail "exit $status, expected $expected for: $* ; stderr: $(cat "$work/err")"
+}
+expect_err() { grep -q -- "$1" "$work/err" || fail "stderr lacks '$1': $(cat "$work/err")"; }
+# max |column(a) - expr| over the CSV rows, with awk (no other tools needed)
+max_abs() { awk -F, -v col="$2" "NR>1 { d = \$col - ($3); if (d < 0) d = -d; if (d > m) m = d } END { printf \"%.3g\", m + 0 }" "$1"; }
+below() { awk -v v="$1" -v tol="$2" 'BEGIN { exit !(v <= tol) }' || fail "$3: error $1 > $2"; }
+
+case "$case_name" in
+columns_and_rows)
+  run 0 --preset catenary --samples 101 --csv "$work/c.csv"
+  head -1 "$work/c.csv" | grep -q '^t,s,x,y,phi,psi,chi,lambda,energy,free_x,free_y,free_phi,free_sdot,free_phidot,free_energy' \
+    || fail "header: $(head -1 "$work/c.csv")"
+  [ "$(wc -l < "$work/c.csv")" -eq 102 ] || fail "rows: $(wc -l < "$work/c.csv")"
+  ;;
+exact_times_circle)
+  # circle R = 2, b = 1, v_T = 1: x = R cos(t/sqrt(5)), y = R sin(t/sqrt(5)), lambda = -m a phidot
+  run 0 --preset circle --times 0,0.5,1.25,3,7.5,11 --csv "$work/c.csv"
+  [ "$(wc -l < "$work/c.csv")" -eq 7 ] || fail "rows"
+  below "$(max_abs "$work/c.csv" 3 '2*cos($1/sqrt(5))')" 1e-9 "x"
+  below "$(max_abs "$work/c.csv" 4 '2*sin($1/sqrt(5))')" 1e-9 "y"
+  below "$(max_abs "$work/c.csv" 6 'atan2(2, 1)')" 1e-12 "psi"
+  below "$(max_abs "$work/c.csv" 8 '-0.5/sqrt(5)')" 1e-12 "lambda"
+  below "$(max_abs "$work/c.csv" 9 '0.5')" 1e-12 "energy"
+  ;;
+no_nan_sinusoid)
+  run 0 --preset sinusoid --samples 2001 --csv "$work/s.csv"
+  grep -qiE 'nan|inf' "$work/s.csv" && fail "NaN or inf in the CSV"
+  # psi stays in (0, pi) and the energy is constant
+  awk -F, 'NR>1 && ($6 <= 0 || $6 >= 3.14159265358979) { exit 1 }' "$work/s.csv" || fail "psi out of (0, pi)"
+  below "$(max_abs "$work/s.csv" 9 '0.5')" 1e-13 "energy"
+  below "$(max_abs "$work/s.csv" 15 '0.5')" 1e-13 "free energy"
+  ;;
+summary_keys)
+  run 0 --preset catenary --summary -
+  for key in '"a"' '"b"' '"m_eff"' '"path_length"' '"duration"' '"models"' '"time_law"' '"free_velocity"'; do
+    grep -q "$key" "$work/out" || fail "summary lacks $key"
+  done
+  grep -q '"path_length": 5.0' "$work/out" || fail "catenary length: $(grep path_length "$work/out")"
+  ;;
+disk_and_carriage)
+  # uniform disk: b = R/sqrt(6), m_eff = 1.5 m
+  run 0 --preset line --system disk --param m=2 --param R=0.6 --param I1=0.36 --param I2=0.18 --summary -
+  b=$(grep '"b"' "$work/out" | tr -dc '0-9.e-')
+  below "$(awk -v b="$b" 'BEGIN { d = b - 0.6/sqrt(6); print (d < 0 ? -d : d) }')" 1e-15 "disk b"
+  grep -q '"m_eff": 3.0' "$work/out" || fail "disk m_eff: $(grep m_eff "$work/out")"
+  run 0 --preset line --system carriage --summary -
+  b=$(grep '"b"' "$work/out" | tr -dc '0-9.e-')
+  below "$(awk -v b="$b" 'BEGIN { d = b - sqrt(0.2825/3.5); print (d < 0 ? -d : d) }')" 1e-15 "carriage b"
+  ;;
+speed_mode)
+  run 0 --preset catenary --vs 0.5 --times 0,2,4,8 --csv "$work/c.csv"
+  below "$(max_abs "$work/c.csv" 2 '0.5*$1')" 1e-12 "s = v_s t"
+  below "$(max_abs "$work/c.csv" 3 'sqrt((0.5*$1)^2 + 1)')" 1e-12 "catenary x"
+  ;;
+corners_pivot)
+  # two unit segments and a left quarter turn: duration 2 + pi/2 (b = 1, v_T = 1)
+  run 0 --points "0,0 1,0 1,1" --corners pivot --summary -
+  d=$(grep '"duration"' "$work/out" | tr -dc '0-9.e-')
+  below "$(awk -v d="$d" 'BEGIN { e = d - (2 + atan2(1, 0)); print (e < 0 ? -e : e) }')" 1e-14 "duration"
+  grep -q '"pivots": 1' "$work/out" || fail "pivots"
+  ;;
+bad_expression)
+  run 2 --path "y=sin(x" --x-range 0,1
+  expect_err "missing ')'"
+  run 2 --path "y=sin(q)" --x-range 0,1
+  expect_err "position 5: unknown name 'q'"
+  run 2 --path "y=x=5" --x-range 0,1
+  expect_err "position 2"
+  run 2 --path "y=1/0&&2" --x-range 0,1
+  expect_err "character '&'"
+  run 2 --path "y=1/x" --x-range 0,1
+  expect_err "path at x = 0"
+  run 2 --path "y=sqrt(x)" --x-range -1,1
+  expect_err "path at x = -1"
+  run 2 --path "x=u^2;y=u^3" --u-range -1,1
+  expect_err "path at u = 0"
+  ;;
+bad_parameter)
+  run 2 --preset line --param m=-1
+  expect_err "parameter m: must be > 0"
+  run 2 --preset line --param b=0.1
+  expect_err "parameter b"
+  run 2 --preset line --param m=abc
+  expect_err "'abc' is not a number"
+  run 2 --preset line --param zeta=1
+  expect_err "parameter zeta"
+  run 2 --preset line --vT 0
+  expect_err "vT"
+  run 2 --preset line --system disk --param I2=-1
+  expect_err "parameter I2"
+  ;;
+bad_option)
+  run 2 --preset line --frobnicate
+  expect_err "frobnicate"
+  run 2 --preset spiral
+  expect_err "unknown preset 'spiral'"
+  run 2 --preset line --format png,gif --plots "$work/p"
+  expect_err "gif"
+  run 2
+  expect_err "no path"
+  run 2 --preset line --csv
+  expect_err "needs a value"
+  ;;
+bad_range)
+  run 2 --path "y=x" --x-range 1,0
+  expect_err "x-range"
+  run 2 --path "y=x"
+  expect_err "needs --x-range"
+  ;;
+bad_times)
+  run 2 --preset line --times 0,1000 --csv "$work/c.csv"
+  expect_err "outside"
+  [ -e "$work/c.csv" ] && fail "a CSV was written despite the error"
+  run 2 --preset line --t-end 1e9 --csv "$work/c.csv"
+  expect_err "beyond the end of the path"
+  ;;
+unwritable_output)
+  echo "precious" > "$work/keep.csv"
+  run 2 --preset line --csv "$work/no/such/dir/c.csv"
+  expect_err "cannot write"
+  run 2 --preset line --csv "$work"
+  expect_err "directory"
+  [ "$(cat "$work/keep.csv")" = "precious" ] || fail "old file changed"
+  ;;
+speed_mode_corner)
+  run 2 --points "0,0 1,0 1,1" --mode speed --vs 1
+  expect_err "corner at (1, 0)"
+  ;;
+scene_round_trip)
+  cat > "$work/scene.json" <<'JSON'
+{ "format": "chaplygin-lab-scene", "version": 1,
+  "path": { "kind": "parametric", "x": "2*cos(u)", "y": "2*sin(u)", "range": [0, 6.283185307179586] },
+  "system": { "kind": "sleigh", "params": { "m": 1, "a": 0.5, "b": 1 } },
+  "mode": "energy", "speed": 1 }
+JSON
+  run 0 --scene "$work/scene.json" --times 3 --csv "$work/a.csv"
+  run 0 --preset circle --times 3 --csv "$work/b.csv"
+  cmp -s "$work/a.csv" "$work/b.csv" || fail "scene file and preset differ"
+  ;;
+bad_scene_file)
+  printf '{ "format": "chaplygin-lab-scene", "version": 1, "path": {' > "$work/broken.json"
+  run 2 --scene "$work/broken.json"
+  expect_err "not valid JSON"
+  run 2 --scene "$work/missing.json"
+  expect_err "cannot open"
+  ;;
+plots_all_formats)
+  run 0 --preset sinusoid --plots "$work/plots" --format png,pdf,svg
+  for stem in psi chi lambda energy trajectory paper_figure; do
+    head -c 8 "$work/plots/$stem.png" | od -An -c | grep -q 'P   N   G' || fail "$stem.png is not a PNG"
+    head -c 5 "$work/plots/$stem.pdf" | grep -q '%PDF-' || fail "$stem.pdf is not a PDF"
+    grep -q '<svg' "$work/plots/$stem.svg" || fail "$stem.svg is not an SVG"
+  done
+  ;;
+help)
+  run 0 --help
+  grep -q -- "--preset line|circle|catenary|sinusoid" "$work/out" || fail "usage"
+  ;;
+*)
+  fail "unknown case"
+  ;;
+esac
+echo "ok ($case_name)"
