@@ -32,9 +32,20 @@ void labels(QCPAxisRect* rect, const QString& x, const QString& y) {
     rect->axis(QCPAxis::atLeft)->setLabel(y);
 }
 
+// the legend goes in a row under a lone plot (so it never hides a curve), or inside a panel
 void legendIn(QCPAxisRect* rect, QCustomPlot& plot) {
     auto* legend = new QCPLegend;
-    rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+    QCPLayoutGrid* grid = plot.plotLayout();
+    if (grid->elementCount() == 1 && grid->element(0, 0) == rect) {
+        grid->addElement(1, 0, legend);
+        grid->setRowStretchFactor(1, 0.001);
+        legend->setFillOrder(QCPLegend::foColumnsFirst);
+        legend->setBorderPen(Qt::NoPen);
+        legend->setMargins(QMargins(4, 0, 4, 2));
+    } else {
+        rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+        legend->setBrush(QColor(255, 255, 255, 210));
+    }
     legend->setLayer("legend");
     legend->setFont(QFont(plot.font().family(), 8));
     for (int i = 0; i < plot.plottableCount(); ++i) {

@@ -14,6 +14,9 @@ constexpr int kMaxDepth = 40;
 constexpr std::size_t kMaxPanels = 200000;
 constexpr double kPanelTolerance = 1e-11; // parent-versus-halves difference, relative to the whole
 constexpr double kMaxTurnPerPanel = 1.0;  // rad; keeps the unwrapping of phi unambiguous
+// the time law sqrt(1 + b^2 kappa^2) sharpens near inflections as b grows; the table resolves
+// it for gyration radii up to this many times the path's size
+constexpr double kStiffScale = 100.0;
 
 std::string place(const Curve& c, double u) { return "path at " + c.parameterName() + " = " + formatNumber(u); }
 
@@ -43,7 +46,8 @@ CurveGeometry checkedGeometry(const Curve& c, double u, CurvePoint* out = nullpt
 
 struct PanelData {
     double a = 0, b = 0;
-    double length = 0, turn = 0, absTurn = 0, weighted = 0; // \int ds, \int kappa ds, \int |kappa| ds, proxy
+    double length = 0, turn = 0, absTurn = 0; // \int ds, \int kappa ds, \int |kappa| ds
+    double weighted = 0, stiff = 0;           // time-law proxies for b ~ the path's size and b >> it
     PathTable::GaussPanel gauss;
 };
 
@@ -62,13 +66,14 @@ PanelData computePanel(const Curve& c, double a, double b, double lengthScale) {
         d.absTurn += ds * std::fabs(g.kappa);
         // proxy for the time-law integrand sqrt(1 + b^2 kappa^2) ds with b of the path's size
         d.weighted += ds * std::hypot(1.0, lengthScale * g.kappa);
+        d.stiff += ds * std::hypot(1.0, kStiffScale * lengthScale * g.kappa);
     }
     return d;
 }
 
 struct Refiner {
     const Curve& curve;
-    double lengthScale, totalWidth, lengthRef, weightedRef;
+    double lengthScale, totalWidth, lengthRef, weightedRef, stiffRef;
     std::vector<PanelData> leaves;
 
     bool close(double coarse, double fine, double ref, double width) const {
@@ -82,6 +87,7 @@ struct Refiner {
         double w = parent.b - parent.a;
         bool ok = close(parent.length, left.length + right.length, lengthRef, w) &&
                   close(parent.weighted, left.weighted + right.weighted, weightedRef, w) &&
+                  close(parent.stiff, left.stiff + right.stiff, stiffRef, w) &&
                   close(parent.turn, left.turn + right.turn, std::max(1.0, weightedRef / lengthScale), w) &&
                   left.absTurn <= kMaxTurnPerPanel && right.absTurn <= kMaxTurnPerPanel;
         if (ok) {
@@ -121,7 +127,7 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve) : m_curve(std::move(cur
     double lengthScale = std::max({xmax - xmin, ymax - ymin, 1e-300});
 
     std::vector<PanelData> initial;
-    double lengthRef = 0, weightedRef = 0;
+    double lengthRef = 0, weightedRef = 0, stiffRef = 0;
     std::vector<double> edges = c.breakpoints();
     if (edges.size() < 2) {
         edges.clear();
@@ -136,8 +142,9 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve) : m_curve(std::move(cur
         initial.push_back(computePanel(c, a, b, lengthScale));
         lengthRef += initial.back().length;
         weightedRef += initial.back().weighted;
+        stiffRef += initial.back().stiff;
     }
-    Refiner refiner{c, lengthScale, u1 - u0, lengthRef, weightedRef, {}};
+    Refiner refiner{c, lengthScale, u1 - u0, lengthRef, weightedRef, stiffRef, {}};
     for (const PanelData& p : initial)
         refiner.refine(p, 0);
 

@@ -4,6 +4,7 @@
 #include "scene/presets.h"
 #include "scene/solution.h"
 
+#include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <gtest/gtest.h>
 
@@ -161,4 +162,22 @@ TEST(TimeLaw, HorizonBeyondThePathIsRejected) {
     Scene scene = presetScene("line");
     scene.tEnd = 100;
     EXPECT_THROW(Solution::compute(scene), InputError);
+}
+
+TEST(TimeLaw, SmallAndLargeGyrationRadiiStayAccurate) {
+    gsl_set_error_handler_off();
+    Scene scene = presetScene("sinusoid");
+    Solution base = Solution::compute(scene);
+    for (double b : {0.01, 0.5, 10.0, 100.0}) {
+        scene.system.params = {{"m", 1.0}, {"a", 0.0}, {"b", b}};
+        Solution sol = Solution::compute(scene, base.path());
+        // t(x) = \int sqrt(b^2 sin^2 x + (1 + cos^2 x)^3)/(1 + cos^2 x) dx, from eq. (112)
+        double exact = integrate(
+            [&](double x) {
+                double c2 = 1 + std::cos(x) * std::cos(x);
+                return std::sqrt(b * b * std::sin(x) * std::sin(x) + c2 * c2 * c2) / c2;
+            },
+            0, 4 * std::numbers::pi);
+        EXPECT_NEAR(sol.duration(), exact, 1e-11 * exact) << "b = " << b;
+    }
 }
