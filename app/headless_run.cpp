@@ -2,6 +2,7 @@
 
 #include "common/atomic_file.h"
 #include "common/input_error.h"
+#include "numerics/work_precision.h"
 #include "plot_export.h"
 #include "scene/csv_writer.h"
 #include "scene/headless_options.h"
@@ -48,6 +49,10 @@ int runHeadless(int argc, char** argv) {
         HeadlessOptions o = parseHeadlessOptions(args);
         if (o.help) {
             std::fputs(headlessUsage().c_str(), stdout);
+            return 0;
+        }
+        if (o.workPrecision) {
+            writeFileAtomically(o.csvPath.empty() ? "-" : o.csvPath, workPrecisionCsv(o.scene));
             return 0;
         }
         Solution solution = Solution::compute(o.scene);

@@ -1,18 +1,148 @@
 #include "desktop_entry.h"
 
+#include "common/input_error.h"
+#include "main_window.h"
+#include "playback.h"
+#include "plots_panel.h"
+#include "scene/headless_options.h"
+#include "scene_canvas.h"
+#include "scene_document.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QFile>
+#include <QImage>
+#include <QPixmap>
+
+#include <unistd.h>
+
 #include <cstdio>
+#include <exception>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
 
 namespace chaplygin::ui {
 
-// The main window arrives with issue #3; until then the desktop start says so plainly.
-int runDesktop(int, char**) {
-    std::fprintf(stderr, "chaplygin-lab: the desktop window is not built yet; use --headless (see --help)\n");
-    return 1;
+namespace {
+
+void describeApplication() {
+    QCoreApplication::setOrganizationName(QStringLiteral("ChaplyginLab"));
+    QCoreApplication::setApplicationName(QStringLiteral("Chaplygin Lab"));
+    QCoreApplication::setApplicationVersion(QStringLiteral("0.1.0"));
 }
 
-int runScreenshot(int, char**) {
-    std::fprintf(stderr, "chaplygin-lab: --screenshot needs the desktop window, which is not built yet\n");
-    return 1;
+// Qt wants a private runtime directory even offscreen
+void ensureRuntimeDir() {
+    if (!qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR"))
+        return;
+    QString runtime = QDir::tempPath() + QStringLiteral("/chaplygin-lab-runtime-") + QString::number(::getuid());
+    QDir().mkpath(runtime);
+    QFile::setPermissions(runtime, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+    qputenv("XDG_RUNTIME_DIR", runtime.toUtf8());
+}
+
+struct ScreenshotOptions {
+    std::string file;
+    double at = 0;
+    int width = 1280, height = 800;
+    Scene scene;
+};
+
+ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
+    ScreenshotOptions o;
+    std::vector<std::string> rest;
+    auto value = [&](int& i, const std::string& option) {
+        if (i + 1 >= argc)
+            throw InputError(option, "needs a value");
+        return std::string(argv[++i]);
+    };
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (arg == "--screenshot") {
+            o.file = value(i, arg);
+        } else if (arg == "--at") {
+            o.at = parseNumber(value(i, arg), "--at");
+            if (o.at < 0)
+                throw InputError("--at", "the time must be >= 0");
+        } else if (arg == "--size") {
+            std::string size = value(i, arg);
+            auto x = size.find('x');
+            if (x == std::string::npos)
+                throw InputError("--size", "expected WxH, e.g. 1280x800");
+            double w = parseNumber(size.substr(0, x), "--size");
+            double h = parseNumber(size.substr(x + 1), "--size");
+            if (w < 320 || h < 240 || w > 8000 || h > 8000 || w != int(w) || h != int(h))
+                throw InputError("--size", "width and height must be whole numbers in 320x240 ... 8000x8000");
+            o.width = int(w);
+            o.height = int(h);
+        } else {
+            rest.push_back(arg);
+        }
+    }
+    if (o.file.empty())
+        throw InputError("--screenshot", "needs the output file name");
+    HeadlessOptions scene = parseHeadlessOptions(rest);
+    o.scene = scene.scene;
+    return o;
+}
+
+int renderScreenshot(const ScreenshotOptions& o) {
+    MainWindow window(false);
+    window.loadScene(o.scene);
+    if (!window.document()->error().isEmpty())
+        throw InputError("scene", window.document()->error().toStdString());
+    window.resize(o.width, o.height);
+    window.show();
+    QCoreApplication::processEvents();
+    window.canvas()->fitScene();
+    window.playback()->seek(o.at);
+    window.plotsPanel()->replotNow();
+    QCoreApplication::processEvents();
+    QImage image = window.grab().toImage();
+    if (image.isNull() || !image.save(QString::fromStdString(o.file), "PNG")) {
+        std::fprintf(stderr, "chaplygin-lab: cannot write the screenshot '%s'\n", o.file.c_str());
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace
+
+int runDesktop(int argc, char** argv) {
+    ensureRuntimeDir();
+    QApplication app(argc, argv);
+    describeApplication();
+    MainWindow window;
+    window.show();
+    return app.exec();
+}
+
+int runScreenshot(int argc, char** argv) {
+    std::optional<ScreenshotOptions> options;
+    try {
+        options = parseScreenshotOptions(argc, argv);
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "chaplygin-lab: %s\n", e.what());
+        return 2;
+    }
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    ensureRuntimeDir();
+    // tests call this inside their own QApplication
+    std::unique_ptr<QApplication> app;
+    if (!QCoreApplication::instance())
+        app = std::make_unique<QApplication>(argc, argv);
+    try {
+        return renderScreenshot(*options);
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "chaplygin-lab: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "chaplygin-lab: internal error: %s\n", e.what());
+        return 1;
+    }
 }
 
 } // namespace chaplygin::ui

@@ -25,6 +25,18 @@ void DenseOutput::add(const OdeProblem& problem, double t, const double* y, cons
     m_g.push_back(gr);
 }
 
+void DenseOutput::reserve(std::size_t nodes) {
+    m_t.reserve(nodes);
+    m_y.reserve(nodes);
+    m_f.reserve(nodes);
+    m_g.reserve(nodes);
+}
+
+std::size_t DenseOutput::nodeBefore(double t) const {
+    auto it = std::upper_bound(m_t.begin(), m_t.end(), t);
+    return it == m_t.begin() ? 0 : static_cast<std::size_t>(it - m_t.begin()) - 1;
+}
+
 void DenseOutput::at(double t, double* out) const {
     if (m_t.size() == 1 || t <= m_t.front()) {
         std::copy_n(m_y.front().begin(), m_dim, out);
@@ -47,7 +59,8 @@ void DenseOutput::at(double t, double* out) const {
     const double h20 = 0.5 * (s2 - 3 * s3 + 3 * s4 - s5);
     const double h21 = 0.5 * (s3 - 2 * s4 + s5);
     for (int i = 0; i < m_dim; ++i)
-        out[i] = h00 * m_y[k][i] + h01 * m_y[k + 1][i] + h * (h10 * m_f[k][i] + h11 * m_f[k + 1][i]) +
+        out[i] = h00 * m_y[k][i] + h01 * m_y[k + 1][i] +
+                 h * (h10 * m_f[k][i] + h11 * m_f[k + 1][i]) +
                  h * h * (h20 * m_g[k][i] + h21 * m_g[k + 1][i]);
 }
 

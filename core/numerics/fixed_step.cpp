@@ -11,6 +11,7 @@ FixedStepSolve integrateRk4(const OdeProblem& problem, double t0, const double* 
         throw std::invalid_argument("integrateRk4: steps must be >= 1");
     const int n = problem.dimension();
     FixedStepSolve out{DenseOutput(n), OdeWork{}};
+    out.dense.reserve(static_cast<std::size_t>(steps) + 1);
     using Vec = std::array<double, kMaxOdeDimension>;
     Vec y{}, k1{}, k2{}, k3{}, k4{}, tmp{};
     std::copy_n(y0, n, y.begin());

@@ -39,13 +39,13 @@ struct OdeAdapter {
 
 /// GSL's default handler aborts; within this scope errors come back as return codes.
 class ErrorHandlerOff {
-public:
+  public:
     ErrorHandlerOff() : m_old(gsl_set_error_handler_off()) {}
     ~ErrorHandlerOff() { gsl_set_error_handler(m_old); }
     ErrorHandlerOff(const ErrorHandlerOff&) = delete;
     ErrorHandlerOff& operator=(const ErrorHandlerOff&) = delete;
 
-private:
+  private:
     gsl_error_handler_t* m_old;
 };
 

@@ -50,6 +50,11 @@ const gsl_odeiv2_step_type* stepType(GslStepper stepper) {
     return gsl_odeiv2_step_rkf45;
 }
 
+struct StepDeleter {
+    void operator()(gsl_odeiv2_step* s) const { gsl_odeiv2_step_free(s); }
+};
+using StepPtr = std::unique_ptr<gsl_odeiv2_step, StepDeleter>;
+
 struct DriverDeleter {
     void operator()(gsl_odeiv2_driver* d) const { gsl_odeiv2_driver_free(d); }
 };
@@ -83,8 +88,8 @@ GslSolve integrateGsl(const OdeProblem& problem, GslStepper stepper, double t0, 
     while (t < t1) {
         int status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, &sys, &t, t1, &h, y.data());
         if (status != GSL_SUCCESS)
-            throw std::runtime_error(gslStepperName(stepper) + ": " + gsl_strerror(status) + " at t = " +
-                                     std::to_string(t));
+            throw std::runtime_error(gslStepperName(stepper) + ": " + gsl_strerror(status) +
+                                     " at t = " + std::to_string(t));
         // the stepper's derivative at the new point (f(t, y) after the accepted step)
         problem.rhs(t, y.data(), f.data());
         ++out.work.rhsEvals;
@@ -94,6 +99,66 @@ GslSolve integrateGsl(const OdeProblem& problem, GslStepper stepper, double t0, 
     }
     out.work.steps = static_cast<long>(d->e->count);
     out.work.rejected = static_cast<long>(d->e->failed_steps);
+    return out;
+}
+
+OdeWork integrateGslFixed(const OdeProblem& problem, GslStepper stepper, double t0, double* y,
+                          double t1, long steps) {
+    if (stepper == GslStepper::MsAdams || stepper == GslStepper::MsBdf || steps < 1)
+        throw std::invalid_argument("integrateGslFixed: explicit steppers and steps >= 1 only");
+    const int n = problem.dimension();
+    OdeWork work;
+    gsl::OdeAdapter adapter{&problem, &work};
+    gsl_odeiv2_system sys{&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian,
+                          static_cast<std::size_t>(n), &adapter};
+    gsl::ErrorHandlerOff quiet;
+    StepPtr step(gsl_odeiv2_step_alloc(stepType(stepper), static_cast<std::size_t>(n)));
+    if (!step)
+        throw std::runtime_error("gsl_odeiv2_step_alloc failed");
+    OdeValue err{};
+    const double h = (t1 - t0) / static_cast<double>(steps);
+    for (long i = 0; i < steps; ++i) {
+        int status = gsl_odeiv2_step_apply(step.get(), t0 + h * static_cast<double>(i), h, y,
+                                           err.data(), nullptr, nullptr, &sys);
+        if (status != GSL_SUCCESS)
+            throw std::runtime_error(gslStepperName(stepper) + ": fixed step failed");
+    }
+    work.steps = steps;
+    return work;
+}
+
+std::vector<OdeValue> gslValuesAt(const OdeProblem& problem, GslStepper stepper, GslSolve& solve,
+                                  const std::vector<double>& times) {
+    const int n = problem.dimension();
+    std::vector<OdeValue> out(times.size());
+    if (stepper != GslStepper::Rk8pd) {
+        for (std::size_t i = 0; i < times.size(); ++i)
+            solve.dense.at(times[i], out[i].data());
+        return out;
+    }
+    gsl::OdeAdapter adapter{&problem, &solve.work};
+    gsl_odeiv2_system sys{&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian,
+                          static_cast<std::size_t>(n), &adapter};
+    gsl::ErrorHandlerOff quiet;
+    StepPtr step(gsl_odeiv2_step_alloc(stepType(stepper), static_cast<std::size_t>(n)));
+    if (!step)
+        throw std::runtime_error("gsl_odeiv2_step_alloc failed");
+    OdeValue err{}, dydt{};
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        const double t = times[i];
+        std::size_t k = solve.dense.nodeBefore(t);
+        const double tk = solve.dense.time(k);
+        std::copy_n(solve.dense.state(k), n, out[i].begin());
+        if (t <= tk || k + 1 == solve.dense.size())
+            continue;
+        // one step of the method itself from the accepted node, with the stored derivative
+        std::copy_n(solve.dense.derivative(k), n, dydt.begin());
+        gsl_odeiv2_step_reset(step.get());
+        int status = gsl_odeiv2_step_apply(step.get(), tk, t - tk, out[i].data(), err.data(),
+                                           dydt.data(), nullptr, &sys);
+        if (status != GSL_SUCCESS)
+            throw std::runtime_error(gslStepperName(stepper) + ": dense step failed");
+    }
     return out;
 }
 

@@ -3,6 +3,7 @@
 #include "numerics/ode_problem.h"
 
 #include <string>
+#include <vector>
 
 namespace chaplygin {
 
@@ -26,5 +27,18 @@ struct GslSolve {
 };
 GslSolve integrateGsl(const OdeProblem& problem, GslStepper stepper, double t0, const double* y0,
                       double t1, double tolerance);
+
+/// n equal steps of an explicit GSL stepper (Rk4, Rkf45, Rkck, Rk8pd) without error control,
+/// for measuring its order; y0 in, y(t1) out.
+OdeWork integrateGslFixed(const OdeProblem& problem, GslStepper stepper, double t0, double* y,
+                          double t1, long steps);
+
+/// The solution at the ascending times. A stepper whose local order exceeds the quintic Hermite
+/// interpolant's (rk8pd: 9 against 6) takes one step of its own from the last accepted point
+/// to each time (counted in work), so the output keeps the method's order; the others
+/// interpolate (their local error is at most O(h^6) already, and msadams/msbdf cannot restart
+/// a step without their history).
+std::vector<OdeValue> gslValuesAt(const OdeProblem& problem, GslStepper stepper, GslSolve& solve,
+                                  const std::vector<double>& times);
 
 } // namespace chaplygin

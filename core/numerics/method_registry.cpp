@@ -35,41 +35,41 @@ FreeInitial initialOf(const Path& path, const ControlParams& params) {
     return {n.x, n.y, n.phi, c.sdot, c.phidot};
 }
 
-long stepsFor(double span, double h) { return std::max(1L, std::lround(std::ceil(span / h - 1e-9))); }
+long stepsFor(double span, double h) {
+    return std::max(1L, std::lround(std::ceil(span / h - 1e-9)));
+}
 
-// positions on the path from the interpolated curve parameter
-MethodOutput controlledFromDense(const MethodCase& c, const DenseOutput& dense, const OdeWork& work,
-                                 const std::vector<double>& times) {
+std::vector<OdeValue> valuesOf(const DenseOutput& dense, const std::vector<double>& times) {
+    std::vector<OdeValue> v(times.size());
+    for (std::size_t i = 0; i < times.size(); ++i)
+        dense.at(times[i], v[i].data());
+    return v;
+}
+
+// positions on the path from the curve parameter
+MethodOutput controlledFrom(const MethodCase& c, const std::vector<OdeValue>& values,
+                            const OdeWork& work) {
     MethodOutput out;
     out.work = work;
-    for (double t : times) {
-        double u = 0;
-        dense.at(t, &u);
-        CurvePoint p = c.curve->eval(u);
+    for (const OdeValue& v : values) {
+        CurvePoint p = c.curve->eval(v[0]);
         out.x.push_back(p.x);
         out.y.push_back(p.y);
     }
     return out;
 }
 
-MethodOutput stateFromDense(const DenseOutput& dense, const OdeWork& work, const std::vector<double>& times,
-                            const FreeProblem* free) {
+// positions from the state (x, y, ...); energy drift for the free motion, against e0
+MethodOutput stateFrom(const std::vector<OdeValue>& values, const OdeWork& work,
+                       const FreeProblem* free, double e0) {
     MethodOutput out;
     out.work = work;
-    double y[kMaxOdeDimension] = {};
-    double e0 = 0;
-    for (std::size_t i = 0; i < times.size(); ++i) {
-        dense.at(times[i], y);
-        out.x.push_back(y[0]);
-        out.y.push_back(y[1]);
-        if (free) {
-            double e = free->energy(y);
-            if (i == 0) {
-                dense.at(dense.tFront(), y);
-                e0 = free->energy(y);
-            }
-            out.energyDrift = std::max(out.energyDrift, std::fabs(e - e0) / e0);
-        }
+    for (const OdeValue& v : values) {
+        out.x.push_back(v[0]);
+        out.y.push_back(v[1]);
+        if (free)
+            out.energyDrift =
+                std::max(out.energyDrift, std::fabs(free->energy(v.data()) - e0) / e0);
     }
     return out;
 }
@@ -93,17 +93,17 @@ void addControlled(const MethodCase& c, std::vector<Method>& out) {
     app.problem = MotionProblem::Controlled;
     app.setting = SettingKind::None;
     app.appDefault = true;
-    app.description = c.plan->timeLaw().closedForm()
-                          ? "closed-form time law (constant curvature)"
-                          : "the app's time law: 8-point Gauss panels of the path table, Newton for s(t)";
+    app.description =
+        c.plan->timeLaw().closedForm()
+            ? "closed-form time law (constant curvature)"
+            : "the app's time law: 8-point Gauss panels of the path table, Newton for s(t)";
     app.solve = [](const MethodCase& k, double, const std::vector<double>& times) {
         PlannedMotion plan(k.path, k.params);
         MethodOutput o;
-        for (double t : times) {
-            PlannedMotion::State s = plan.at(t);
-            o.x.push_back(s.x);
-            o.y.push_back(s.y);
-        }
+        o.x.resize(times.size());
+        o.y.resize(times.size());
+        for (std::size_t i = 0; i < times.size(); ++i)
+            plan.position(times[i], &o.x[i], &o.y[i]);
         return o;
     };
     out.push_back(app);
@@ -131,12 +131,14 @@ void addControlled(const MethodCase& c, std::vector<Method>& out) {
         Method m;
         m.name = gslStepperName(st);
         m.problem = MotionProblem::Controlled;
-        m.description = "ODE in t for the path parameter, du/dt = sdot/|r'|, GSL " + m.name.substr(4);
+        m.description =
+            "ODE in t for the path parameter, du/dt = sdot/|r'|, GSL " + m.name.substr(4);
         m.solve = [st](const MethodCase& k, double tol, const std::vector<double>& times) {
             ControlledProblem prob(*k.curve, k.params);
             double u0 = k.curve->u0();
             GslSolve s = integrateGsl(prob, st, 0, &u0, k.controlledEnd, tol);
-            return controlledFromDense(k, s.dense, s.work, times);
+            std::vector<OdeValue> v = gslValuesAt(prob, st, s, times);
+            return controlledFrom(k, v, s.work);
         };
         out.push_back(m);
     }
@@ -150,8 +152,9 @@ void addControlled(const MethodCase& c, std::vector<Method>& out) {
     rk4.solve = [](const MethodCase& k, double h, const std::vector<double>& times) {
         ControlledProblem prob(*k.curve, k.params);
         double u0 = k.curve->u0();
-        FixedStepSolve s = integrateRk4(prob, 0, &u0, k.controlledEnd, stepsFor(k.controlledEnd, h));
-        return controlledFromDense(k, s.dense, s.work, times);
+        FixedStepSolve s =
+            integrateRk4(prob, 0, &u0, k.controlledEnd, stepsFor(k.controlledEnd, h));
+        return controlledFrom(k, valuesOf(s.dense, times), s.work);
     };
     out.push_back(rk4);
 
@@ -160,12 +163,14 @@ void addControlled(const MethodCase& c, std::vector<Method>& out) {
     Method open;
     open.name = "open_loop_gsl_rk8pd";
     open.problem = MotionProblem::Controlled;
-    open.description = "the paper's open-loop eqs. (35)-(37) in (x, y, phi) with chi(t) given, GSL rk8pd";
+    open.description =
+        "the paper's open-loop eqs. (35)-(37) in (x, y, phi) with chi(t) given, GSL rk8pd";
     open.solve = [](const MethodCase& k, double tol, const std::vector<double>& times) {
         OpenLoopProblem prob(*k.plan);
         std::vector<double> y0 = openLoopStart(k);
         GslSolve s = integrateGsl(prob, GslStepper::Rk8pd, 0, y0.data(), k.controlledEnd, tol);
-        return stateFromDense(s.dense, s.work, times, nullptr);
+        std::vector<OdeValue> v = gslValuesAt(prob, GslStepper::Rk8pd, s, times);
+        return stateFrom(v, s.work, nullptr, 0);
     };
     out.push_back(open);
     Method openRk4 = open;
@@ -176,8 +181,9 @@ void addControlled(const MethodCase& c, std::vector<Method>& out) {
     openRk4.solve = [](const MethodCase& k, double h, const std::vector<double>& times) {
         OpenLoopProblem prob(*k.plan);
         std::vector<double> y0 = openLoopStart(k);
-        FixedStepSolve s = integrateRk4(prob, 0, y0.data(), k.controlledEnd, stepsFor(k.controlledEnd, h));
-        return stateFromDense(s.dense, s.work, times, nullptr);
+        FixedStepSolve s =
+            integrateRk4(prob, 0, y0.data(), k.controlledEnd, stepsFor(k.controlledEnd, h));
+        return stateFrom(valuesOf(s.dense, times), s.work, nullptr, 0);
     };
     out.push_back(openRk4);
 }
@@ -193,7 +199,8 @@ void addFree(std::vector<Method>& out) {
         FreeMotion free(k.params.system, k.freeInitial, k.freeEnd);
         MethodOutput o;
         const double b2 = k.params.system.b * k.params.system.b;
-        const double e0 = k.freeInitial.sdot * k.freeInitial.sdot + b2 * k.freeInitial.phidot * k.freeInitial.phidot;
+        const double e0 = k.freeInitial.sdot * k.freeInitial.sdot +
+                          b2 * k.freeInitial.phidot * k.freeInitial.phidot;
         for (double t : times) {
             FreeState s = free.at(t);
             o.x.push_back(s.x);
@@ -214,7 +221,8 @@ void addFree(std::vector<Method>& out) {
             FreeProblem prob(k.params.system);
             std::vector<double> y0 = freeStart(k);
             GslSolve s = integrateGsl(prob, st, 0, y0.data(), k.freeEnd, tol);
-            return stateFromDense(s.dense, s.work, times, &prob);
+            std::vector<OdeValue> v = gslValuesAt(prob, st, s, times);
+            return stateFrom(v, s.work, &prob, prob.energy(y0.data()));
         };
         out.push_back(m);
     }
@@ -225,8 +233,9 @@ void addFree(std::vector<Method>& out) {
         m.problem = MotionProblem::Free;
         m.setting = SettingKind::StepSize;
         m.order = 4;
-        m.description = project ? "classical RK4, fixed step, (sdot, phidot) projected onto the energy level"
-                                : "classical RK4, fixed step";
+        m.description =
+            project ? "classical RK4, fixed step, (sdot, phidot) projected onto the energy level"
+                    : "classical RK4, fixed step";
         m.solve = [project](const MethodCase& k, double h, const std::vector<double>& times) {
             FreeProblem prob(k.params.system);
             std::vector<double> y0 = freeStart(k);
@@ -234,8 +243,9 @@ void addFree(std::vector<Method>& out) {
             StepProjection proj;
             if (project)
                 proj = [&prob, e0](double* y) { prob.projectToEnergy(y, e0); };
-            FixedStepSolve s = integrateRk4(prob, 0, y0.data(), k.freeEnd, stepsFor(k.freeEnd, h), proj);
-            return stateFromDense(s.dense, s.work, times, &prob);
+            FixedStepSolve s =
+                integrateRk4(prob, 0, y0.data(), k.freeEnd, stepsFor(k.freeEnd, h), proj);
+            return stateFrom(valuesOf(s.dense, times), s.work, &prob, e0);
         };
         out.push_back(m);
     }

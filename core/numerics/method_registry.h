@@ -56,7 +56,8 @@ struct Method {
     int order = 0;           ///< the convergence order in the step size (fixed-step methods)
     std::string description;
     /// Solves on [0, horizon] and evaluates at the ascending times (within the horizon).
-    std::function<MethodOutput(const MethodCase&, double setting, const std::vector<double>& times)> solve;
+    std::function<MethodOutput(const MethodCase&, double setting, const std::vector<double>& times)>
+        solve;
 };
 
 /// The methods that apply to the case: closed form or Gauss-panel quadrature (app default),

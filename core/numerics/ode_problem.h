@@ -6,7 +6,7 @@ namespace chaplygin {
 /// A first-order system y' = f(t, y) with its exact Jacobian, as the method registry sees it.
 /// Dimensions are small (at most kMaxOdeDimension), so callers keep state in fixed arrays.
 class OdeProblem {
-public:
+  public:
     virtual ~OdeProblem() = default;
     virtual int dimension() const = 0;
     /// f(t, y) into dydt.

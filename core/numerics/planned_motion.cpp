@@ -9,8 +9,25 @@ namespace chaplygin {
 PlannedMotion::PlannedMotion(std::shared_ptr<const Path> path, const ControlParams& params)
     : m_path(std::move(path)), m_params(params), m_timeLaw(m_path, params) {}
 
+PathLocation PlannedMotion::locate(double t) const {
+    return m_timeLaw.locate(t);
+}
+
+void PlannedMotion::position(double t, double* x, double* y) const {
+    PathLocation loc = locate(t);
+    const PathPiece& piece = m_path->pieces()[loc.piece];
+    if (piece.kind == PathPiece::Kind::Pivot) {
+        *x = piece.x;
+        *y = piece.y;
+        return;
+    }
+    CurvePoint p = piece.table->curve().eval(loc.u);
+    *x = p.x;
+    *y = p.y;
+}
+
 PlannedMotion::State PlannedMotion::at(double t) const {
-    PathLocation loc = m_timeLaw.locate(t);
+    PathLocation loc = locate(t);
     const PathPiece& piece = m_path->pieces()[loc.piece];
     const double a = m_params.system.a, b = m_params.system.b;
     State st;
@@ -20,7 +37,8 @@ PlannedMotion::State PlannedMotion::at(double t) const {
         const double rate = m_params.speed / b;
         st.x = piece.x;
         st.y = piece.y;
-        st.phi = piece.phiFrom + std::copysign(std::min(rate * loc.sincePivotStart, std::fabs(turn)), turn);
+        st.phi = piece.phiFrom +
+                 std::copysign(std::min(rate * loc.sincePivotStart, std::fabs(turn)), turn);
         st.psi = turn > 0 ? 0.0 : std::numbers::pi;
         st.chidot = -(a / b) * std::copysign(rate, turn);
         return st;

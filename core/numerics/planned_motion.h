@@ -10,8 +10,9 @@ namespace chaplygin {
 /// The app's controlled motion (the time law by Gauss-panel quadrature and Newton inversion,
 /// or its closed form on lines and circles) at any time, as the method registry needs it:
 /// position, heading, the control angle Psi and the control input's rate chidot.
+/// Everything goes through TimeLaw, so the registry times exactly what the app does.
 class PlannedMotion {
-public:
+  public:
     PlannedMotion(std::shared_ptr<const Path> path, const ControlParams& params);
 
     struct State {
@@ -20,10 +21,14 @@ public:
         double chidot = 0;            ///< chidot = Psidot - (a/b) phidot, from eq. (33)
     };
     State at(double t) const;
+    /// The knife point P alone (no heading or control: one curve evaluation after locate).
+    void position(double t, double* x, double* y) const;
+    /// Where the body is at time t (clamped to [0, duration]): TimeLaw::locate.
+    PathLocation locate(double t) const;
     const TimeLaw& timeLaw() const { return m_timeLaw; }
     const ControlParams& params() const { return m_params; }
 
-private:
+  private:
     std::shared_ptr<const Path> m_path;
     ControlParams m_params;
     TimeLaw m_timeLaw;

@@ -7,8 +7,8 @@ namespace chaplygin {
 void ControlledProblem::rhs(double, const double* y, double* dydt) const {
     CurveGeometry g = geometryOf(m_curve.eval(y[0]));
     const double bk = m_params.system.b * g.kappa;
-    const double sdot =
-        m_params.mode == SpeedMode::Energy ? m_params.speed / std::sqrt(1 + bk * bk) : m_params.speed;
+    const double sdot = m_params.mode == SpeedMode::Energy ? m_params.speed / std::sqrt(1 + bk * bk)
+                                                           : m_params.speed;
     dydt[0] = sdot / g.speed;
 }
 
@@ -30,7 +30,9 @@ void ControlledProblem::jacobian(double, const double* y, double* dfdy, double* 
 
 namespace {
 constexpr double kFlush = 1e-150;
-double flushed(double v) { return std::fabs(v) < kFlush ? 0.0 : v; }
+double flushed(double v) {
+    return std::fabs(v) < kFlush ? 0.0 : v;
+}
 } // namespace
 
 void FreeProblem::rhs(double, const double* y, double* dydt) const {
@@ -39,8 +41,8 @@ void FreeProblem::rhs(double, const double* y, double* dydt) const {
     dydt[0] = sdot * std::cos(y[2]);
     dydt[1] = sdot * std::sin(y[2]);
     dydt[2] = phidot;
-    dydt[3] = a * phidot * phidot;       // (D12)
-    dydt[4] = -a * sdot * phidot / b2;   // (D13)
+    dydt[3] = a * phidot * phidot;     // (D12)
+    dydt[4] = -a * sdot * phidot / b2; // (D13)
 }
 
 void FreeProblem::jacobian(double, const double* y, double* J, double* dfdt) const {
@@ -93,8 +95,8 @@ OpenLoopTerms openLoopTerms(const PlannedMotion& plan, double t, const double* y
 void OpenLoopProblem::rhs(double t, const double* y, double* dydt) const {
     OpenLoopTerms k = openLoopTerms(m_plan, t, y);
     const double sp = std::sin(k.psi);
-    dydt[0] = k.v * sp * std::cos(k.phi);  // (36)
-    dydt[1] = k.v * sp * std::sin(k.phi);  // (37)
+    dydt[0] = k.v * sp * std::cos(k.phi);    // (36)
+    dydt[1] = k.v * sp * std::sin(k.phi);    // (37)
     dydt[2] = (k.v / k.b) * std::cos(k.psi); // (35)
 }
 

@@ -12,14 +12,14 @@ namespace chaplygin {
 /// For an arc-length parametrised curve (the catenary, eqs. (97)-(98)) u = s and this is
 /// ds/dt = v_T/sqrt(1 + b^2 kappa(s)^2); kappa and ds/du come exactly from the curve.
 class ControlledProblem final : public OdeProblem {
-public:
+  public:
     ControlledProblem(const Curve& curve, const ControlParams& params)
         : m_curve(curve), m_params(params) {}
     int dimension() const override { return 1; }
     void rhs(double t, const double* y, double* dydt) const override;
     void jacobian(double t, const double* y, double* dfdy, double* dfdt) const override;
 
-private:
+  private:
     const Curve& m_curve;
     ControlParams m_params;
 };
@@ -29,7 +29,7 @@ private:
 /// phidot below 1e-150 is flushed to 0 so that long horizons never compute with subnormal
 /// numbers (design.md sec. 4); its contribution is below 1e-150 either way.
 class FreeProblem final : public OdeProblem {
-public:
+  public:
     explicit FreeProblem(const DerivedSystem& system) : m_sys(system) {}
     int dimension() const override { return 5; }
     void rhs(double t, const double* y, double* dydt) const override;
@@ -40,7 +40,7 @@ public:
     /// diag(1, b^2), the closest point of the level set in that metric.
     void projectToEnergy(double* y, double e0) const;
 
-private:
+  private:
     DerivedSystem m_sys;
 };
 
@@ -50,13 +50,13 @@ private:
 /// Nothing pulls the body back to the path, so integration errors accumulate as drift.
 /// Energy mode only.
 class OpenLoopProblem final : public OdeProblem {
-public:
+  public:
     explicit OpenLoopProblem(const PlannedMotion& plan) : m_plan(plan) {}
     int dimension() const override { return 3; }
     void rhs(double t, const double* y, double* dydt) const override;
     void jacobian(double t, const double* y, double* dfdy, double* dfdt) const override;
 
-private:
+  private:
     const PlannedMotion& m_plan;
 };
 

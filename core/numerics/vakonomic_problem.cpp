@@ -10,9 +10,9 @@ void VakonomicProblem::rhs(double, const double* y, double* dydt) const {
     dydt[0] = sdot * std::cos(y[2]);
     dydt[1] = sdot * std::sin(y[2]);
     dydt[2] = phidot;
-    dydt[3] = l * phidot;        // m sddot = lambda_c phidot, (19) corrected
-    dydt[4] = -l * sdot / b2;    // m b^2 phiddot = -lambda_c sdot, (20)
-    dydt[5] = -sdot * phidot;    // lambda_c_dot = -m sdot phidot, (21)
+    dydt[3] = l * phidot;     // m sddot = lambda_c phidot, (19) corrected
+    dydt[4] = -l * sdot / b2; // m b^2 phiddot = -lambda_c sdot, (20)
+    dydt[5] = -sdot * phidot; // lambda_c_dot = -m sdot phidot, (21)
 }
 
 void VakonomicProblem::jacobian(double, const double* y, double* J, double* dfdt) const {

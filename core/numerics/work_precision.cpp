@@ -1,5 +1,7 @@
 #include "numerics/work_precision.h"
 
+#include "numerics/quadrature_time_law.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -35,8 +37,8 @@ struct Timed {
 };
 
 // median wall time of repeated solves
-Timed timeSolve(const Method& m, const MethodCase& c, double setting, const std::vector<double>& times,
-                double minSeconds) {
+Timed timeSolve(const Method& m, const MethodCase& c, double setting,
+                const std::vector<double>& times, double minSeconds) {
     std::vector<double> samples;
     Timed out;
     double spent = 0;
@@ -73,8 +75,10 @@ std::vector<long> defaultStepCounts() {
 WorkPrecisionReport runWorkPrecision(const Scene& scene, const WorkPrecisionOptions& options) {
     MethodCase c(scene);
     std::vector<Method> methods = methodRegistry(c);
-    const std::vector<double> tolerances = options.tolerances.empty() ? defaultTolerances() : options.tolerances;
-    const std::vector<long> stepCounts = options.stepCounts.empty() ? defaultStepCounts() : options.stepCounts;
+    const std::vector<double> tolerances =
+        options.tolerances.empty() ? defaultTolerances() : options.tolerances;
+    const std::vector<long> stepCounts =
+        options.stepCounts.empty() ? defaultStepCounts() : options.stepCounts;
     WorkPrecisionReport report;
     report.controlledEnd = c.controlledEnd;
     report.freeEnd = c.freeEnd;
@@ -88,22 +92,33 @@ WorkPrecisionReport runWorkPrecision(const Scene& scene, const WorkPrecisionOpti
             refFree = m.solve(c, 0, tf);
             report.freeReference = "free " + m.name + " (" + m.description + ")";
         }
-        if (m.problem == MotionProblem::Controlled && m.appDefault && c.plan->timeLaw().closedForm()) {
+        if (m.problem == MotionProblem::Controlled && m.appDefault &&
+            c.plan->timeLaw().closedForm()) {
             refControlled = m.solve(c, 0, tc);
             report.controlledReference = "controlled " + m.name + " (" + m.description + ")";
         }
     }
     if (report.controlledReference.empty()) {
-        auto qag = std::find_if(methods.begin(), methods.end(), [](const Method& m) { return m.name == "gsl_qag_newton"; });
+        auto qag = std::find_if(methods.begin(), methods.end(),
+                                [](const Method& m) { return m.name == "gsl_qag_newton"; });
         auto app = std::find_if(methods.begin(), methods.end(), [](const Method& m) {
             return m.problem == MotionProblem::Controlled && m.appDefault;
         });
         if (qag != methods.end()) {
-            refControlled = qag->solve(c, 1e-14, tc);
-            report.controlledReference = "controlled gsl_qag_newton at tolerance 1e-14 (the tightest method)";
+            // the tightest method, with a different rule (Gauss-Kronrod 61) from the swept one (21)
+            QuadratureTimeLaw law(*c.curve, c.params, 1e-14, 61);
+            OdeWork work;
+            for (double u : law.invert(tc, work)) {
+                CurvePoint p = c.curve->eval(u);
+                refControlled.x.push_back(p.x);
+                refControlled.y.push_back(p.y);
+            }
+            report.controlledReference = "controlled GSL QAG (Gauss-Kronrod 61) + Newton at "
+                                         "tolerance 1e-14 (the tightest method)";
         } else {
             refControlled = app->solve(c, 0, tc);
-            report.controlledReference = "controlled " + app->name + " (no independent method for this path)";
+            report.controlledReference =
+                "controlled " + app->name + " (no independent method for this path)";
         }
     }
 
@@ -118,7 +133,8 @@ WorkPrecisionReport runWorkPrecision(const Scene& scene, const WorkPrecisionOpti
             settings = tolerances;
         else
             for (long n : stepCounts)
-                settings.push_back((controlled ? c.controlledEnd : c.freeEnd) / static_cast<double>(n));
+                settings.push_back((controlled ? c.controlledEnd : c.freeEnd) /
+                                   static_cast<double>(n));
         for (double setting : settings) {
             Timed run;
             try {
@@ -147,14 +163,17 @@ std::string formatWorkPrecisionCsv(const WorkPrecisionReport& report) {
     std::string out = "problem,method,tolerance,error,seconds,rhs_evals,chosen\n";
     char buf[256];
     for (const WorkPrecisionRow& r : report.rows) {
-        std::snprintf(buf, sizeof buf, "%s,%s,%.6g,%.6e,%.6e,%ld,%d\n", motionProblemName(r.problem).c_str(),
-                      r.method.c_str(), r.setting, r.error, r.seconds, r.rhsEvals, r.chosen ? 1 : 0);
+        std::snprintf(buf, sizeof buf, "%s,%s,%.6g,%.6e,%.6e,%ld,%d\n",
+                      motionProblemName(r.problem).c_str(), r.method.c_str(), r.setting, r.error,
+                      r.seconds, r.rhsEvals, r.chosen ? 1 : 0);
         out += buf;
     }
     return out;
 }
 
-std::string workPrecisionCsv(const Scene& scene) { return formatWorkPrecisionCsv(runWorkPrecision(scene)); }
+std::string workPrecisionCsv(const Scene& scene) {
+    return formatWorkPrecisionCsv(runWorkPrecision(scene));
+}
 
 bool onParetoFront(const std::vector<WorkPrecisionRow>& rows, std::size_t index) {
     const WorkPrecisionRow& r = rows[index];

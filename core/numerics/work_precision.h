@@ -20,17 +20,18 @@ struct WorkPrecisionRow {
 };
 
 struct WorkPrecisionOptions {
-    int outputs = 100;                ///< evenly spaced times on [0, t_end], both ends included
-    std::vector<double> tolerances;   ///< default 1e-3, 1e-4, ..., 1e-13
-    std::vector<long> stepCounts;     ///< fixed-step methods: h = t_end/n; default 16, 32, ..., 16384
-    double maxSolveSeconds = 0.25;    ///< a method's sweep stops after a solve slower than this
-    double minTimingSeconds = 0.02;   ///< repeat fast solves until this much time is spent (max 9)
+    int outputs = 100;              ///< evenly spaced times on [0, t_end], both ends included
+    std::vector<double> tolerances; ///< default 1e-3, 1e-4, ..., 1e-13
+    std::vector<long> stepCounts;   ///< fixed-step methods: h = t_end/n; default 16, 32, ..., 16384
+    double maxSolveSeconds = 0.25;  ///< a method's sweep stops after a solve slower than this
+    double minTimingSeconds = 0.02; ///< repeat fast solves until this much time is spent (max 9)
 };
 
 struct WorkPrecisionReport {
     std::vector<WorkPrecisionRow> rows;
-    std::string controlledReference, freeReference; ///< which solution the errors are measured against
-    double controlledEnd = 0, freeEnd = 0;            ///< horizons [s]
+    std::string controlledReference,
+        freeReference;                     ///< which solution the errors are measured against
+    double controlledEnd = 0, freeEnd = 0; ///< horizons [s]
 };
 
 /// The speed-against-accuracy sweep of issue #4 for one scene.

@@ -1,0 +1,148 @@
+// chaplygin-bench: the GUI's recompute and animation-frame costs, measured on the real widgets
+// under the offscreen platform.
+#include "main_window.h"
+#include "playback.h"
+#include "plots_panel.h"
+#include "scene/presets.h"
+#include "scene_canvas.h"
+#include "scene_document.h"
+#include "plot_series.h"
+
+#include <QApplication>
+#include <qcustomplot.h>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <string>
+
+namespace {
+
+using namespace chaplygin;
+using namespace chaplygin::ui;
+
+// sinusoid preset; change b; recompute (path reused), gather the series and hand them to the
+// four plots (their repaint is queued to the next frame)
+void BM_RecomputeOnParameterChange(benchmark::State& state) {
+    SceneDocument document;
+    PlotsPanel plots(&document);
+    Scene scene = presetScene("sinusoid");
+    document.setSceneNow(scene);
+    double b = 1.0;
+    for (auto _ : state) {
+        b = b > 1.5 ? 1.0 : b + 0.01;
+        scene.system.params["b"] = b;
+        document.setSceneNow(scene);
+        benchmark::DoNotOptimize(document.series().psi.data());
+    }
+    if (!document.error().isEmpty())
+        state.SkipWithError(document.error().toStdString().c_str());
+}
+BENCHMARK(BM_RecomputeOnParameterChange)->Unit(benchmark::kMillisecond);
+
+// a typed path edited: every iteration a new expression, so the path is tabulated again
+void BM_RecomputeOnPathChange(benchmark::State& state) {
+    SceneDocument document;
+    PlotsPanel plots(&document);
+    Scene scene = presetScene("sinusoid");
+    document.setSceneNow(scene);
+    long k = 0;
+    for (auto _ : state) {
+        ++k;
+        scene.path.y = "-sin(x) + " + std::to_string(0.001 * (k % 100000)) + "*x";
+        document.setSceneNow(scene);
+        benchmark::DoNotOptimize(document.series().psi.data());
+    }
+    if (!document.error().isEmpty())
+        state.SkipWithError(document.error().toStdString().c_str());
+}
+BENCHMARK(BM_RecomputeOnPathChange)->Unit(benchmark::kMillisecond);
+
+// the breakdown of a parameter change: solve only, gather the series only, draw the plots only
+void BM_StageSolve(benchmark::State& state) {
+    Scene scene = presetScene("sinusoid");
+    Solution base = Solution::compute(scene);
+    for (auto _ : state) {
+        Solution s = Solution::compute(scene, base.path());
+        benchmark::DoNotOptimize(s.duration());
+    }
+}
+BENCHMARK(BM_StageSolve)->Unit(benchmark::kMillisecond);
+
+void BM_StageCollectSeries(benchmark::State& state) {
+    Solution s = Solution::compute(presetScene("sinusoid"));
+    for (auto _ : state)
+        benchmark::DoNotOptimize(collectSeries(s).psi.data());
+}
+BENCHMARK(BM_StageCollectSeries)->Unit(benchmark::kMillisecond);
+
+void BM_StageDrawPlots(benchmark::State& state) {
+    SceneDocument document;
+    PlotsPanel plots(&document);
+    document.setSceneNow(presetScene("sinusoid"));
+    for (auto _ : state)
+        plots.refresh();
+}
+BENCHMARK(BM_StageDrawPlots)->Unit(benchmark::kMillisecond);
+
+// one animation frame at 1280x800: advance the clock, repaint the canvas and the four plots
+void BM_AnimationFrame(benchmark::State& state) {
+    MainWindow window(false);
+    window.resize(1280, 800);
+    window.show();
+    QCoreApplication::processEvents();
+    window.plotsPanel()->replotNow();
+    Playback* playback = window.playback();
+    playback->setLoop(true);
+    for (auto _ : state) {
+        playback->advance(1.0 / 60);
+        window.canvas()->repaint();
+        for (int i = 0; i < 4; ++i)
+            window.plotsPanel()->plot(i)->repaint();
+    }
+    state.counters["t_end"] = playback->tEnd();
+}
+BENCHMARK(BM_AnimationFrame)->Unit(benchmark::kMillisecond);
+
+// the breakdown of a frame: the canvas alone, the plots' cursor alone
+void BM_StageFrameCanvas(benchmark::State& state) {
+    MainWindow window(false);
+    window.resize(1280, 800);
+    window.show();
+    QCoreApplication::processEvents();
+    for (auto _ : state) {
+        window.canvas()->setTime(std::fmod(window.canvas()->time() + 1.0 / 60, 17.0));
+        window.canvas()->repaint();
+    }
+}
+BENCHMARK(BM_StageFrameCanvas)->Unit(benchmark::kMillisecond);
+
+void BM_StageFramePlots(benchmark::State& state) {
+    MainWindow window(false);
+    window.resize(1280, 800);
+    window.show();
+    QCoreApplication::processEvents();
+    window.plotsPanel()->replotNow();
+    double t = 0;
+    for (auto _ : state) {
+        t = std::fmod(t + 1.0 / 60, 17.0);
+        window.plotsPanel()->setTime(t);
+        for (int i = 0; i < 4; ++i)
+            window.plotsPanel()->plot(i)->repaint();
+    }
+}
+BENCHMARK(BM_StageFramePlots)->Unit(benchmark::kMillisecond);
+
+} // namespace
+
+int main(int argc, char** argv) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    QApplication app(argc, argv);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv))
+        return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

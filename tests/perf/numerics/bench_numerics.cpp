@@ -1,0 +1,173 @@
+// chaplygin-bench-numerics: cost per right-hand-side call and per solve of every method in the
+// registry (issue #4 item 6). Compare counters ns_per_rhs against BM_Rk4ClassicalFloor, the
+// hand-written classical RK4 on the same problem: the floor.
+#include "numerics/fixed_step.h"
+#include "numerics/gsl_ode.h"
+#include "numerics/method_registry.h"
+#include "numerics/sleigh_problems.h"
+#include "scene/presets.h"
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace chaplygin {
+namespace {
+
+// the catenary scene with t_end = 10, built once
+const MethodCase& catenary() {
+    static const std::unique_ptr<MethodCase> c = [] {
+        Scene s = presetScene("catenary");
+        s.tEnd = 10;
+        return std::make_unique<MethodCase>(s);
+    }();
+    return *c;
+}
+
+std::vector<double> evenTimes(double end, int count = 100) {
+    std::vector<double> t(count);
+    for (int i = 0; i < count; ++i)
+        t[i] = i + 1 == count ? end : end * i / (count - 1);
+    return t;
+}
+
+void BM_RhsControlled(benchmark::State& state) {
+    ControlledProblem p(*catenary().curve, catenary().params);
+    double u = 1.3, f = 0;
+    for (auto _ : state) {
+        p.rhs(0, &u, &f);
+        benchmark::DoNotOptimize(f);
+        u += 1e-9;
+    }
+}
+BENCHMARK(BM_RhsControlled);
+
+void BM_RhsFree(benchmark::State& state) {
+    FreeProblem p(catenary().params.system);
+    double y[5] = {1, 0.5, 0.3, 0.7, -0.4}, f[5];
+    for (auto _ : state) {
+        p.rhs(0, y, f);
+        benchmark::DoNotOptimize(f);
+        y[2] += 1e-9;
+    }
+}
+BENCHMARK(BM_RhsFree);
+
+void BM_RhsOpenLoop(benchmark::State& state) {
+    OpenLoopProblem p(*catenary().plan);
+    double y[3] = {1.2, 0.6, 0.3}, f[3];
+    double t = 1.0;
+    for (auto _ : state) {
+        p.rhs(t, y, f);
+        benchmark::DoNotOptimize(f);
+        t += 1e-9;
+    }
+}
+BENCHMARK(BM_RhsOpenLoop);
+
+// the bare floor: classical RK4 steps on the free sleigh with no dense output, no virtual call
+void BM_Rk4BareStep(benchmark::State& state) {
+    FreeProblem p(catenary().params.system);
+    double y[5] = {1, 0, 1.5707963267948966, 0.7071067811865476, -0.7071067811865476};
+    double k1[5], k2[5], k3[5], k4[5], tmp[5];
+    const double h = 10.0 / 1024;
+    double t = 0;
+    for (auto _ : state) {
+        p.FreeProblem::rhs(t, y, k1);
+        for (int j = 0; j < 5; ++j)
+            tmp[j] = y[j] + 0.5 * h * k1[j];
+        p.FreeProblem::rhs(t + 0.5 * h, tmp, k2);
+        for (int j = 0; j < 5; ++j)
+            tmp[j] = y[j] + 0.5 * h * k2[j];
+        p.FreeProblem::rhs(t + 0.5 * h, tmp, k3);
+        for (int j = 0; j < 5; ++j)
+            tmp[j] = y[j] + h * k3[j];
+        p.FreeProblem::rhs(t + h, tmp, k4);
+        for (int j = 0; j < 5; ++j)
+            y[j] += h / 6.0 * (k1[j] + 2 * k2[j] + 2 * k3[j] + k4[j]);
+        t += h;
+        benchmark::DoNotOptimize(y);
+    }
+    state.counters["ns_per_rhs"] = benchmark::Counter(
+        4e-9, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_Rk4BareStep);
+
+// hand-written classical RK4, 1024 steps with dense output, per solve and per RHS call: the floor
+void BM_Rk4ClassicalFloor(benchmark::State& state) {
+    const bool free = state.range(0) == 1;
+    const MethodCase& c = catenary();
+    FreeProblem fp(c.params.system);
+    ControlledProblem cp(*c.curve, c.params);
+    const OdeProblem& p = free ? static_cast<const OdeProblem&>(fp) : cp;
+    const double end = free ? c.freeEnd : c.controlledEnd;
+    double y0[5] = {c.freeInitial.x, c.freeInitial.y, c.freeInitial.phi, c.freeInitial.sdot,
+                    c.freeInitial.phidot};
+    double u0 = c.curve->u0();
+    long evals = 0;
+    for (auto _ : state) {
+        FixedStepSolve s = integrateRk4(p, 0, free ? y0 : &u0, end, 1024);
+        evals = s.work.rhsEvals;
+        benchmark::DoNotOptimize(s.dense.size());
+    }
+    state.counters["rhs_evals"] = static_cast<double>(evals);
+    state.counters["ns_per_rhs"] = benchmark::Counter(
+        static_cast<double>(evals) * 1e-9,
+        benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+    state.SetLabel(free ? "free" : "controlled");
+}
+BENCHMARK(BM_Rk4ClassicalFloor)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// every registry method at tolerance 1e-10 (fixed-step methods: h = t_end/1024), 100 outputs
+void BM_Solve(benchmark::State& state, std::string problem, std::string method) {
+    const MethodCase& c = catenary();
+    std::vector<Method> methods = methodRegistry(c);
+    const Method* m = nullptr;
+    for (const Method& k : methods)
+        if (motionProblemName(k.problem) == problem && k.name == method)
+            m = &k;
+    if (!m) {
+        state.SkipWithError("no such method");
+        return;
+    }
+    const bool controlled = m->problem == MotionProblem::Controlled;
+    const double end = controlled ? c.controlledEnd : c.freeEnd;
+    const std::vector<double> times = evenTimes(end);
+    const double setting = m->setting == SettingKind::StepSize ? end / 1024 : 1e-10;
+    long evals = 0;
+    for (auto _ : state) {
+        MethodOutput o = m->solve(c, setting, times);
+        evals = o.work.rhsEvals;
+        benchmark::DoNotOptimize(o.x.data());
+    }
+    state.counters["rhs_evals"] = static_cast<double>(evals);
+    if (evals > 0)
+        state.counters["ns_per_rhs"] = benchmark::Counter(
+            static_cast<double>(evals) * 1e-9,
+            benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
+void registerSolves() {
+    const MethodCase& c = catenary();
+    for (const Method& m : methodRegistry(c)) {
+        const std::string problem = motionProblemName(m.problem);
+        benchmark::RegisterBenchmark(("BM_Solve/" + problem + "/" + m.name).c_str(), BM_Solve,
+                                     problem, m.name)
+            ->Unit(benchmark::kMicrosecond);
+    }
+}
+
+} // namespace
+} // namespace chaplygin
+
+int main(int argc, char** argv) {
+    chaplygin::registerSolves();
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv))
+        return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+}

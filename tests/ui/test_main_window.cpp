@@ -1,0 +1,364 @@
+// GUI tests: drive the real widgets of the main window under the offscreen platform.
+#include "desktop_entry.h"
+#include "main_window.h"
+#include "parameters_panel.h"
+#include "path_panel.h"
+#include "playback.h"
+#include "plots_panel.h"
+#include "scene/presets.h"
+#include "scene/scene_json.h"
+#include "scene_canvas.h"
+#include "scene_document.h"
+#include "timeline_bar.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QImage>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QSvgRenderer>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include <cmath>
+#include <memory>
+
+using namespace chaplygin;
+using namespace chaplygin::ui;
+
+namespace {
+
+QVector<double> graphValues(QCustomPlot* plot, int graph = 0) {
+    QVector<double> v;
+    for (const QCPGraphData& d : *plot->graph(graph)->data())
+        v << d.value;
+    return v;
+}
+
+double maxAbsDifference(const QVector<double>& a, const QVector<double>& b) {
+    double worst = a.size() == b.size() ? 0 : INFINITY;
+    for (int i = 0; i < std::min(a.size(), b.size()); ++i)
+        worst = std::max(worst, std::abs(a[i] - b[i]));
+    return worst;
+}
+
+void typeInto(QLineEdit* edit, const QString& text) {
+    edit->selectAll();
+    QTest::keyClick(edit, Qt::Key_Delete);
+    QTest::keyClicks(edit, text);
+}
+
+} // namespace
+
+class TestMainWindow : public QObject {
+    Q_OBJECT
+
+private slots:
+    void init();
+    void cleanup();
+
+    void typedValidPath();
+    void typedInvalidPathKeepsLastValid();
+    void drawPathWithMouse();
+    void parameterChangeUpdatesPlots();
+    void sliderDragCoalesces();
+    void invalidParameterKeepsSolution();
+    void systemSwitch();
+    void playPauseSeek();
+    void clickingPlotSeeks();
+    void undoRedo();
+    void saveLoadRoundTrip();
+    void openBadFileKeepsScene();
+    void exportFilesValid();
+    void screenshotMode();
+
+private:
+    std::unique_ptr<MainWindow> m_window;
+    QTemporaryDir m_dir;
+};
+
+void TestMainWindow::init() {
+    m_window = std::make_unique<MainWindow>(false);
+    m_window->resize(1280, 800);
+    m_window->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
+    m_window->document()->flush();
+    QVERIFY(m_window->document()->solution());
+}
+
+void TestMainWindow::cleanup() { m_window.reset(); }
+
+void TestMainWindow::typedValidPath() {
+    PathPanel* panel = m_window->pathPanel();
+    typeInto(panel->graphEdit(), QStringLiteral("0.3*x^2"));
+    panel->fromSpin()->setValue(0);
+    panel->toSpin()->setValue(3);
+    QTest::keyClick(panel->graphEdit(), Qt::Key_Return);
+    m_window->document()->flush();
+    const Scene& scene = m_window->document()->scene();
+    QCOMPARE(QString::fromStdString(scene.path.y), QStringLiteral("0.3*x^2"));
+    QVERIFY(panel->errorText().isEmpty());
+    // the new solution runs along the parabola: it ends at (3, 2.7)
+    const auto& solution = m_window->document()->solution();
+    PathNode end = solution->path()->end();
+    QVERIFY(std::abs(end.x - 3) < 1e-9);
+    QVERIFY(std::abs(end.y - 2.7) < 1e-9);
+}
+
+void TestMainWindow::typedInvalidPathKeepsLastValid() {
+    PathPanel* panel = m_window->pathPanel();
+    auto before = m_window->document()->solution();
+    Scene sceneBefore = m_window->document()->scene();
+    typeInto(panel->graphEdit(), QStringLiteral("sin(x"));
+    QTest::keyClick(panel->graphEdit(), Qt::Key_Return);
+    m_window->document()->flush();
+    QVERIFY2(!panel->errorText().isEmpty(), "an inline error is shown");
+    QVERIFY2(panel->errorText().contains(QStringLiteral("position")), qPrintable(panel->errorText()));
+    QVERIFY(panel->findChild<QLabel*>(QStringLiteral("pathError"))->isVisible());
+    QCOMPARE(m_window->document()->solution(), before);
+    QVERIFY(m_window->document()->scene() == sceneBefore);
+    QCOMPARE(m_window->undoStack()->count(), 0);
+    // a valid path afterwards clears the error
+    typeInto(panel->graphEdit(), QStringLiteral("sin(x)"));
+    QTest::keyClick(panel->graphEdit(), Qt::Key_Return);
+    QVERIFY(panel->errorText().isEmpty());
+    QCOMPARE(QString::fromStdString(m_window->document()->scene().path.y), QStringLiteral("sin(x)"));
+}
+
+void TestMainWindow::drawPathWithMouse() {
+    m_window->pathPanel()->cornersBox()->setCurrentIndex(0); // smooth
+    m_window->pathPanel()->drawButton()->click();
+    SceneCanvas* canvas = m_window->canvas();
+    QVERIFY(canvas->drawMode());
+    QPoint start(100, 200);
+    QTest::mousePress(canvas, Qt::LeftButton, {}, start);
+    for (int i = 1; i <= 30; ++i) {
+        QPoint p(100 + 15 * i, 200 - int(60 * std::sin(i / 5.0)));
+        QMouseEvent move(QEvent::MouseMove, p, canvas->mapToGlobal(p), Qt::NoButton, Qt::LeftButton, {});
+        QApplication::sendEvent(canvas, &move);
+    }
+    QPoint end(100 + 15 * 30, 200 - int(60 * std::sin(6.0)));
+    QTest::mouseRelease(canvas, Qt::LeftButton, {}, end);
+    m_window->document()->flush();
+    const PathSource& path = m_window->document()->scene().path;
+    QCOMPARE(path.kind, PathKind::Polyline);
+    QVERIFY2(path.points.size() >= 20, "the stroke is sampled");
+    QCOMPARE(path.corners, CornerMode::Smooth);
+    // the first point is where the mouse went down, in metres
+    QPointF first = canvas->toPixel(QPointF(path.points.front().first, path.points.front().second));
+    QVERIFY(QLineF(first, QPointF(start)).length() < 30); // the view may refit after the stroke
+    QVERIFY(m_window->document()->error().isEmpty());
+    QCOMPARE(m_window->document()->solution()->scene().path.kind, PathKind::Polyline);
+    QVERIFY(m_window->document()->solution()->path()->length() > 1.0);
+}
+
+void TestMainWindow::parameterChangeUpdatesPlots() {
+    QCustomPlot* psi = m_window->plotsPanel()->plot(0);
+    QVector<double> before = graphValues(psi);
+    QVERIFY(before.size() > 10);
+    QDoubleSpinBox* b = m_window->parametersPanel()->spinBox(QStringLiteral("b"));
+    QVERIFY(b);
+    b->setValue(2.0);
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->solution()->system().b, 2.0);
+    QVector<double> after = graphValues(psi);
+    QVERIFY2(maxAbsDifference(before, after) > 0.05, "Psi = atan2(1, b kappa) changed with b");
+    // tan Psi = 1/(b kappa) and max |kappa| = 1 on y = -sin x: |Psi - pi/2| peaks at pi/2 - atan(1/b) on the crests
+    double devBefore = 0, devAfter = 0;
+    for (double v : before)
+        devBefore = std::max(devBefore, std::abs(v - M_PI / 2));
+    for (double v : after)
+        devAfter = std::max(devAfter, std::abs(v - M_PI / 2));
+    QVERIFY2(std::abs(devBefore - (M_PI / 2 - std::atan(1.0))) < 1e-2, qPrintable(QString::number(devBefore)));
+    QVERIFY2(std::abs(devAfter - (M_PI / 2 - std::atan(0.5))) < 1e-2, qPrintable(QString::number(devAfter)));
+}
+
+void TestMainWindow::sliderDragCoalesces() {
+    QSlider* slider = m_window->parametersPanel()->slider(QStringLiteral("speed"));
+    QVERIFY(slider);
+    QSignalSpy solved(m_window->document(), &SceneDocument::solutionChanged);
+    for (int v = 200; v <= 400; v += 10)
+        slider->setValue(v); // one drag, no event processing in between
+    QTRY_COMPARE(solved.count(), 1);
+    double speed = m_window->document()->solution()->scene().speed;
+    QVERIFY(std::abs(speed - (0.05 + 4.95 * 400 / 1000.0)) < 1e-9);
+    QCOMPARE(m_window->undoStack()->count(), 1); // the drag is one undo step
+}
+
+void TestMainWindow::invalidParameterKeepsSolution() {
+    auto before = m_window->document()->solution();
+    QDoubleSpinBox* b = m_window->parametersPanel()->spinBox(QStringLiteral("b"));
+    b->setValue(0.2); // below a = 0.5
+    m_window->document()->flush();
+    QVERIFY(m_window->parametersPanel()->errorText().contains(QStringLiteral("b")));
+    QCOMPARE(m_window->document()->solution(), before);
+    QCOMPARE(m_window->document()->solution()->system().b, 1.0);
+    b->setValue(1.2);
+    m_window->document()->flush();
+    QVERIFY(m_window->parametersPanel()->errorText().isEmpty());
+    QCOMPARE(m_window->document()->solution()->system().b, 1.2);
+}
+
+void TestMainWindow::systemSwitch() {
+    auto* combo = m_window->parametersPanel()->findChild<QComboBox*>();
+    QVERIFY(combo);
+    combo->setFocus();
+    combo->setCurrentIndex(1);
+    emit combo->activated(1);
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->scene().system.kind, SystemKind::Disk);
+    QVERIFY(m_window->parametersPanel()->spinBox(QStringLiteral("I2")));
+    QVERIFY(!m_window->parametersPanel()->spinBox(QStringLiteral("b")));
+    QCOMPARE(m_window->document()->solution()->system().a, 0.0);
+    m_window->canvas()->grab(); // the disk paints
+}
+
+void TestMainWindow::playPauseSeek() {
+    Playback* playback = m_window->playback();
+    playback->seek(2.0);
+    QCOMPARE(m_window->canvas()->time(), 2.0);
+    QCOMPARE(m_window->plotsPanel()->cursorTime(), 2.0);
+    QVERIFY(m_window->timeline()->timeLabel()->text().contains(QStringLiteral("2.00")));
+    int sliderAt2 = m_window->timeline()->slider()->value();
+    QVERIFY(sliderAt2 > 0);
+    QTest::keyClick(m_window.get(), Qt::Key_Space);
+    QVERIFY(playback->isPlaying());
+    QTRY_VERIFY_WITH_TIMEOUT(playback->time() > 2.1, 3000);
+    QTest::keyClick(m_window.get(), Qt::Key_Space);
+    QVERIFY(!playback->isPlaying());
+    double paused = playback->time();
+    QTest::qWait(100);
+    QCOMPARE(playback->time(), paused);
+    m_window->timeline()->stepForwardAction()->trigger();
+    QVERIFY(std::abs(playback->time() - (paused + playback->stepSize())) < 1e-12);
+    // scrubbing the slider seeks
+    m_window->timeline()->slider()->setValue(1000);
+    QVERIFY(std::abs(playback->time() - playback->tEnd() / 2) < 1e-9);
+    // the end stops unless looping
+    playback->seek(playback->tEnd() - 0.01);
+    playback->play();
+    QTRY_VERIFY_WITH_TIMEOUT(!playback->isPlaying(), 3000);
+    QCOMPARE(playback->time(), playback->tEnd());
+}
+
+void TestMainWindow::clickingPlotSeeks() {
+    QCustomPlot* plot = m_window->plotsPanel()->plot(3);
+    plot->replot();
+    QCPAxis* t = plot->axisRect()->axis(QCPAxis::atBottom);
+    int x = int(std::lround(t->coordToPixel(5.0)));
+    int y = plot->axisRect()->center().y();
+    QTest::mouseClick(plot, Qt::LeftButton, {}, QPoint(x, y));
+    QVERIFY2(std::abs(m_window->playback()->time() - 5.0) < 0.1, qPrintable(QString::number(m_window->playback()->time())));
+    QVERIFY(std::abs(m_window->canvas()->time() - m_window->playback()->time()) < 1e-12);
+}
+
+void TestMainWindow::undoRedo() {
+    QUndoStack* undo = m_window->undoStack();
+    PathPanel* panel = m_window->pathPanel();
+    typeInto(panel->graphEdit(), QStringLiteral("0.5*sin(2*x)"));
+    QTest::keyClick(panel->graphEdit(), Qt::Key_Return);
+    m_window->parametersPanel()->spinBox(QStringLiteral("m"))->setValue(3.0);
+    m_window->document()->flush();
+    QCOMPARE(undo->count(), 2);
+    QCOMPARE(m_window->document()->solution()->system().mass, 3.0);
+    undo->undo();
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->solution()->system().mass, 1.0);
+    QCOMPARE(m_window->parametersPanel()->spinBox(QStringLiteral("m"))->value(), 1.0);
+    undo->undo();
+    m_window->document()->flush();
+    QCOMPARE(QString::fromStdString(m_window->document()->scene().path.y), QStringLiteral("-sin(x)"));
+    QCOMPARE(panel->graphEdit()->text(), QStringLiteral("-sin(x)"));
+    undo->redo();
+    undo->redo();
+    m_window->document()->flush();
+    QCOMPARE(QString::fromStdString(m_window->document()->solution()->scene().path.y), QStringLiteral("0.5*sin(2*x)"));
+    QCOMPARE(m_window->document()->solution()->system().mass, 3.0);
+}
+
+void TestMainWindow::saveLoadRoundTrip() {
+    m_window->parametersPanel()->spinBox(QStringLiteral("a"))->setValue(0.25);
+    m_window->parametersPanel()->spinBox(QStringLiteral("speed"))->setValue(1.5);
+    m_window->document()->flush();
+    Scene saved = m_window->document()->scene();
+    QString file = m_dir.filePath(QStringLiteral("scene.json"));
+    QVERIFY(m_window->saveFile(file));
+    QVERIFY(loadSceneFile(file.toStdString()) == saved);
+    MainWindow other(false);
+    QVERIFY(other.openFile(file));
+    other.document()->flush();
+    QVERIFY(other.document()->scene() == saved);
+    QCOMPARE(other.document()->solution()->system().a, 0.25);
+    QCOMPARE(other.parametersPanel()->spinBox(QStringLiteral("speed"))->value(), 1.5);
+    QCOMPARE(other.document()->fileName(), file);
+}
+
+void TestMainWindow::openBadFileKeepsScene() {
+    QString file = m_dir.filePath(QStringLiteral("bad.json"));
+    QFile f(file);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("{\"version\": 1, \"system\": ");
+    f.close();
+    Scene before = m_window->document()->scene();
+    QVERIFY(!m_window->openFile(file));
+    QVERIFY(m_window->lastFileError().contains(QStringLiteral("scene file")));
+    QVERIFY(m_window->document()->scene() == before);
+}
+
+void TestMainWindow::exportFilesValid() {
+    QString dir = m_dir.filePath(QStringLiteral("plots"));
+    QVERIFY(m_window->exportPlotsTo(dir, {QStringLiteral("png"), QStringLiteral("pdf"), QStringLiteral("svg")}));
+    QImage png(dir + QStringLiteral("/psi.png"));
+    QVERIFY(!png.isNull());
+    QVERIFY(png.width() >= 900);
+    QFile pdf(dir + QStringLiteral("/energy.pdf"));
+    QVERIFY(pdf.open(QIODevice::ReadOnly));
+    QVERIFY(pdf.read(5).startsWith("%PDF"));
+    QSvgRenderer svg(dir + QStringLiteral("/lambda.svg"));
+    QVERIFY(svg.isValid());
+    QString csv = m_dir.filePath(QStringLiteral("run.csv"));
+    QVERIFY(m_window->exportCsvTo(csv));
+    QFile c(csv);
+    QVERIFY(c.open(QIODevice::ReadOnly));
+    QByteArray stamp = c.readLine();
+    QVERIFY(stamp.startsWith("# Chaplygin Lab: "));
+    QVERIFY(stamp.contains("b = 1"));
+    QVERIFY(c.readLine().startsWith("t,s,x,y,phi,psi,chi,lambda,energy,free_x"));
+    int rows = 0;
+    while (!c.atEnd())
+        rows += c.readLine().trimmed().isEmpty() ? 0 : 1;
+    QCOMPARE(rows, 501);
+}
+
+void TestMainWindow::screenshotMode() {
+    QString file = m_dir.filePath(QStringLiteral("shot.png"));
+    QByteArray f = file.toUtf8();
+    const char* args[] = {"chaplygin-lab", "--screenshot", f.constData(), "--preset", "circle",
+                          "--at", "2.5", "--size", "1024x700"};
+    QCOMPARE(runScreenshot(9, const_cast<char**>(args)), 0);
+    QImage image(file);
+    QVERIFY(!image.isNull());
+    QCOMPARE(image.size(), QSize(1024, 700));
+    // the canvas is not blank: the path and the body put colour on it
+    int coloured = 0;
+    for (int y = 0; y < image.height(); y += 4)
+        for (int x = 0; x < image.width(); x += 4) {
+            QColor c = image.pixelColor(x, y);
+            coloured += c.saturation() > 80 ? 1 : 0;
+        }
+    QVERIFY(coloured > 200);
+    const char* bad[] = {"chaplygin-lab", "--screenshot", f.constData(), "--path", "y=sin(", "--x-range", "0,3"};
+    QCOMPARE(runScreenshot(7, const_cast<char**>(bad)), 2);
+    const char* badSize[] = {"chaplygin-lab", "--screenshot", f.constData(), "--size", "big"};
+    QCOMPARE(runScreenshot(5, const_cast<char**>(badSize)), 2);
+}
+
+QTEST_MAIN(TestMainWindow)
+#include "test_main_window.moc"

@@ -1,0 +1,25 @@
+#pragma once
+#include "systems/system.h"
+
+#include <QColor>
+
+class QPainter;
+
+namespace chaplygin::ui {
+
+/// A body's pose: the knife (or contact) point P and the heading phi [m, m, rad].
+struct BodyPose {
+    double x = 0, y = 0, phi = 0;
+};
+
+/// Draws the body to scale in world coordinates (the painter maps metres to pixels, y up):
+/// the sleigh as an elliptical board with its knife edge at P and its centre of mass at
+/// P + a s-hat; the disk seen from above; the carriage with two wheels on an axle through P.
+/// ghost draws it translucent, for the free motion.
+void paintBody(QPainter& painter, const SystemSpec& spec, const DerivedSystem& derived,
+               const BodyPose& pose, const QColor& color, bool ghost);
+
+/// The radius [m] of a circle around P that holds the whole body (for fitting the view).
+double bodyExtent(const SystemSpec& spec, const DerivedSystem& derived);
+
+} // namespace chaplygin::ui

@@ -1,0 +1,389 @@
+#include "main_window.h"
+
+#include "common/atomic_file.h"
+#include "common/input_error.h"
+#include "parameters_panel.h"
+#include "path_panel.h"
+#include "playback.h"
+#include "plot_export.h"
+#include "plots_panel.h"
+#include "scene/presets.h"
+#include "scene/scene_json.h"
+#include "scene_canvas.h"
+#include "scene_command.h"
+#include "scene_document.h"
+#include "scene_files.h"
+#include "timeline_bar.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QSettings>
+#include <QStatusBar>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <exception>
+
+namespace chaplygin::ui {
+
+namespace {
+
+QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content, QMainWindow* parent) {
+    auto* dock = new QDockWidget(title, parent);
+    dock->setObjectName(name);
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(content);
+    dock->setWidget(scroll);
+    return dock;
+}
+
+} // namespace
+
+MainWindow::MainWindow(bool useSettings, QWidget* parent)
+    : QMainWindow(parent), m_useSettings(useSettings), m_document(new SceneDocument(this)),
+      m_playback(new Playback(this)), m_undo(new QUndoStack(this)) {
+    m_canvas = new SceneCanvas(m_document);
+    setCentralWidget(m_canvas);
+
+    m_path = new PathPanel;
+    m_parameters = new ParametersPanel;
+    m_plots = new PlotsPanel(m_document);
+    m_pathDock = makeDock(tr("Path"), QStringLiteral("pathDock"), m_path, this);
+    m_parametersDock = makeDock(tr("System and parameters"), QStringLiteral("parametersDock"), m_parameters, this);
+    m_plotsDock = new QDockWidget(tr("Plots"), this);
+    m_plotsDock->setObjectName(QStringLiteral("plotsDock"));
+    m_plotsDock->setWidget(m_plots);
+    addDockWidget(Qt::LeftDockWidgetArea, m_pathDock);
+    addDockWidget(Qt::LeftDockWidgetArea, m_parametersDock);
+    tabifyDockWidget(m_pathDock, m_parametersDock);
+    m_pathDock->raise();
+    addDockWidget(Qt::BottomDockWidgetArea, m_plotsDock);
+    m_pathDock->setMinimumWidth(360);
+    m_parametersDock->setMinimumWidth(360);
+    resizeDocks({m_plotsDock}, {300}, Qt::Vertical);
+
+    m_timeline = new TimelineBar(m_playback, this);
+    addToolBar(Qt::BottomToolBarArea, m_timeline);
+    m_status = new QLabel;
+    statusBar()->addWidget(m_status, 1);
+
+    buildMenus();
+
+    connect(m_document, &SceneDocument::solutionChanged, this, &MainWindow::onSolutionChanged);
+    connect(m_document, &SceneDocument::errorChanged, this, &MainWindow::onDocumentError);
+    connect(m_document, &SceneDocument::fileNameChanged, this, &MainWindow::updateTitle);
+    connect(m_undo, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(m_playback, &Playback::timeChanged, this, &MainWindow::onTime);
+    connect(m_plots, &PlotsPanel::seekRequested, m_playback, &Playback::seek);
+    connect(m_path, &PathPanel::presetChosen, this, &MainWindow::choosePreset);
+    connect(m_path, &PathPanel::pathTyped, this, [this](const PathSource& s) { setPath(s, tr("Type a path")); });
+    connect(m_path, &PathPanel::drawModeToggled, m_canvas, &SceneCanvas::setDrawMode);
+    connect(m_path, &PathPanel::cornersChanged, this, [this](CornerMode mode) {
+        PathSource s = m_current.path;
+        s.corners = mode;
+        setPath(s, tr("Change the corners"));
+    });
+    connect(m_canvas, &SceneCanvas::pathDrawn, this, [this](const std::vector<std::pair<double, double>>& points) {
+        PathSource s;
+        s.kind = PathKind::Polyline;
+        s.points = points;
+        s.corners = m_path->drawCorners();
+        setPath(s, tr("Draw a path"));
+    });
+    connect(m_parameters, &ParametersPanel::sceneEdited, this, &MainWindow::onParametersEdited);
+
+    bool restored = false;
+    if (m_useSettings) {
+        QSettings settings;
+        restored = restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray());
+        restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
+    }
+    if (!restored)
+        resize(1280, 800);
+    loadScene(presetScene("sinusoid"));
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newScene);
+    file->addAction(tr("&Open\u2026"), QKeySequence::Open, this, &MainWindow::openDialog);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    rebuildRecentMenu();
+    file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { saveDialog(false); });
+    file->addAction(tr("Save &As\u2026"), QKeySequence::SaveAs, this, [this] { saveDialog(true); });
+    file->addSeparator();
+    file->addAction(tr("Export &plots\u2026"), QKeySequence(tr("Ctrl+E")), this, &MainWindow::exportPlotsDialog);
+    file->addAction(tr("Export &CSV\u2026"), QKeySequence(tr("Ctrl+Shift+E")), this, &MainWindow::exportCsvDialog);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = m_undo->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = m_undo->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(m_pathDock->toggleViewAction());
+    view->addAction(m_parametersDock->toggleViewAction());
+    view->addAction(m_plotsDock->toggleViewAction());
+    view->addAction(m_timeline->toggleViewAction());
+    view->addSeparator();
+    view->addAction(tr("&Fit scene"), QKeySequence(tr("Ctrl+0")), m_canvas, &SceneCanvas::fitScene);
+    m_followAction = view->addAction(tr("F&ollow body"));
+    m_followAction->setCheckable(true);
+    m_followAction->setShortcut(QKeySequence(tr("Ctrl+B")));
+    connect(m_followAction, &QAction::toggled, m_canvas, &SceneCanvas::setFollowBody);
+    connect(m_canvas, &SceneCanvas::followBodyChanged, m_followAction, &QAction::setChecked);
+    view->addAction(tr("Zoom &in"), QKeySequence::ZoomIn, this, [this] { m_canvas->zoomBy(1.25); });
+    view->addAction(tr("Zoom &out"), QKeySequence::ZoomOut, this, [this] { m_canvas->zoomBy(0.8); });
+
+    QMenu* play = menuBar()->addMenu(tr("&Animation"));
+    play->addAction(m_timeline->playAction());
+    play->addAction(m_timeline->stepBackAction());
+    play->addAction(m_timeline->stepForwardAction());
+    play->addAction(m_timeline->loopAction());
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&Physics notes"), QKeySequence::HelpContents, this, [this] {
+        QMessageBox::information(
+            this, tr("Physics notes"),
+            tr("<p>The knife point P follows the prescribed path. The control angle \u03a8 satisfies "
+               "tan \u03a8 = \u03c1/b (eq. 45); \u03c7 = \u03a8 \u2212 (a/b)\u03c6 is the driving angle and "
+               "\u03bb = m b d\u03c7/dt the control multiplier. The control is workless, so the kinetic "
+               "energy stays constant in the energy mode.</p>"
+               "<p>The ghost is the free (Lagrange\u2013d'Alembert, Neimark\u2013Fufaev) sleigh from the same "
+               "initial state: it turns away and ends on a straight line.</p>"
+               "<p>Disk and carriage reduce to a sleigh with effective mass m_eff, offset a and radius of "
+               "gyration b (Apps. A, B).</p><p>Models in use: %1</p>")
+                .arg(m_status->text().toHtmlEscaped()));
+    });
+    help->addAction(tr("&About Chaplygin Lab"), this, [this] {
+        QMessageBox::about(this, tr("About Chaplygin Lab"),
+                           tr("<b>Chaplygin Lab %1</b><p>Control of nonholonomic Chaplygin systems "
+                              "(Antunes, Sigaud, de Moraes, Braz. J. Phys. 2009): sleigh, rolling disk and "
+                              "two-wheeled carriage.</p>")
+                               .arg(QCoreApplication::applicationVersion()));
+    });
+}
+
+void MainWindow::rebuildRecentMenu() {
+    m_recentMenu->clear();
+    const QStringList files = m_useSettings ? recentFiles() : QStringList();
+    for (const QString& f : files)
+        m_recentMenu->addAction(QFileInfo(f).fileName(), this, [this, f] { openFile(f); })->setToolTip(f);
+    m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::applyScene(const Scene& scene) {
+    m_current = scene;
+    m_path->setScene(scene);
+    m_parameters->setScene(scene);
+    m_path->showError({});
+    m_parameters->showError({});
+    m_document->setScene(scene);
+}
+
+void MainWindow::loadScene(const Scene& scene) {
+    m_document->pathFor(scene.path);
+    deriveSystem(scene.system);
+    m_undo->clear();
+    applyScene(scene);
+    m_document->flush();
+    m_playback->seek(0);
+    m_canvas->fitScene();
+}
+
+void MainWindow::editScene(const Scene& scene, const QString& description, const QString& mergeKey) {
+    if (scene == m_current)
+        return;
+    m_undo->push(new SceneCommand(description, m_current, scene, [this](const Scene& s) { applyScene(s); },
+                                  mergeKey));
+}
+
+void MainWindow::choosePreset(const QString& name) {
+    try {
+        Scene next = presetScene(name.toStdString());
+        m_document->pathFor(next.path);
+        editScene(next, tr("Preset %1").arg(name));
+        m_canvas->fitScene();
+    } catch (const InputError& e) {
+        m_path->showError(QString::fromStdString(e.what()));
+    }
+}
+
+void MainWindow::setPath(const PathSource& source, const QString& description) {
+    try {
+        m_document->pathFor(source); // tabulates now: errors stay in the panel, the last path stays
+    } catch (const InputError& e) {
+        m_path->showError(QString::fromStdString(e.what()));
+        return;
+    }
+    m_path->showError({});
+    Scene next = m_current;
+    next.path = source;
+    next.preset.clear();
+    editScene(next, description);
+    m_document->flush();
+    m_canvas->fitScene();
+}
+
+void MainWindow::onParametersEdited(const Scene& scene, const QString& description, const QString& mergeKey) {
+    try {
+        deriveSystem(scene.system);
+    } catch (const InputError& e) {
+        m_parameters->showError(QString::fromStdString(e.what()));
+        return;
+    }
+    m_parameters->showError({});
+    editScene(scene, description, mergeKey);
+}
+
+void MainWindow::onSolutionChanged() {
+    const auto& solution = m_document->solution();
+    m_playback->setTEnd(solution->tEnd());
+    m_timeline->sync();
+    m_canvas->setTime(m_playback->time());
+    m_plots->setTime(m_playback->time());
+    const ModelReport& m = solution->models();
+    m_status->setText(QString::fromStdString("path: " + m.path + "; time law: " + m.timeLaw +
+                                             "; free motion: " + m.freeVelocity + ", " + m.freePosition));
+    updateTitle();
+}
+
+void MainWindow::onDocumentError(const QString& error) {
+    if (!error.isEmpty()) {
+        m_parameters->showError(error);
+        statusBar()->showMessage(error, 8000);
+    }
+}
+
+void MainWindow::onTime(double t) {
+    m_canvas->setTime(t);
+    m_plots->setTime(t);
+}
+
+void MainWindow::newScene() {
+    loadScene(presetScene("sinusoid"));
+    m_document->setFileName({});
+}
+
+bool MainWindow::openFile(const QString& path) {
+    try {
+        Scene scene = loadSceneFile(path.toStdString());
+        loadScene(scene);
+    } catch (const InputError& e) {
+        showFileError(QString::fromStdString(e.what()));
+        return false;
+    }
+    m_document->setFileName(path);
+    m_undo->setClean();
+    if (m_useSettings) {
+        addRecentFile(path);
+        rebuildRecentMenu();
+    }
+    return true;
+}
+
+bool MainWindow::saveFile(const QString& path) {
+    try {
+        saveSceneFile(path, m_current);
+    } catch (const std::exception& e) {
+        showFileError(QString::fromStdString(e.what()));
+        return false;
+    }
+    m_document->setFileName(path);
+    m_undo->setClean();
+    if (m_useSettings) {
+        addRecentFile(path);
+        rebuildRecentMenu();
+    }
+    statusBar()->showMessage(tr("Saved %1").arg(path), 4000);
+    return true;
+}
+
+bool MainWindow::exportPlotsTo(const QString& dir, const QStringList& formats) {
+    m_document->flush();
+    try {
+        exportPlots(*m_document->solution(), dir, formats);
+    } catch (const std::exception& e) {
+        showFileError(QString::fromStdString(e.what()));
+        return false;
+    }
+    statusBar()->showMessage(tr("Plots written to %1").arg(dir), 4000);
+    return true;
+}
+
+bool MainWindow::exportCsvTo(const QString& path) {
+    m_document->flush();
+    try {
+        exportCsvFile(path, *m_document->solution());
+    } catch (const std::exception& e) {
+        showFileError(QString::fromStdString(e.what()));
+        return false;
+    }
+    statusBar()->showMessage(tr("CSV written to %1").arg(path), 4000);
+    return true;
+}
+
+void MainWindow::openDialog() {
+    QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), {}, tr("Scenes (*.json);;All files (*)"));
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+bool MainWindow::saveDialog(bool askName) {
+    QString path = m_document->fileName();
+    if (askName || path.isEmpty())
+        path = QFileDialog::getSaveFileName(this, tr("Save scene"), path, tr("Scenes (*.json)"));
+    return !path.isEmpty() && saveFile(path);
+}
+
+void MainWindow::exportPlotsDialog() {
+    QString dir = QFileDialog::getExistingDirectory(this, tr("Export plots (PNG, PDF and SVG) into"));
+    if (!dir.isEmpty())
+        exportPlotsTo(dir, {QStringLiteral("png"), QStringLiteral("pdf"), QStringLiteral("svg")});
+}
+
+void MainWindow::exportCsvDialog() {
+    QString path = QFileDialog::getSaveFileName(this, tr("Export CSV"), {}, tr("CSV (*.csv)"));
+    if (!path.isEmpty())
+        exportCsvTo(path);
+}
+
+void MainWindow::showFileError(const QString& message) {
+    m_lastFileError = message;
+    statusBar()->showMessage(message, 10000);
+    if (isVisible() && !QCoreApplication::closingDown() && m_useSettings)
+        QMessageBox::warning(this, tr("Chaplygin Lab"), message);
+}
+
+void MainWindow::updateTitle() {
+    QString name = m_document->fileName().isEmpty() ? tr("untitled") : QFileInfo(m_document->fileName()).fileName();
+    setWindowTitle(tr("%1%2 \u2014 Chaplygin Lab").arg(name, m_undo->isClean() ? QString() : QStringLiteral("*")));
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    if (m_useSettings) {
+        QSettings settings;
+        settings.setValue(QStringLiteral("geometry"), saveGeometry());
+        settings.setValue(QStringLiteral("windowState"), saveState());
+    }
+    e->accept();
+}
+
+} // namespace chaplygin::ui

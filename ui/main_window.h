@@ -1,0 +1,98 @@
+#pragma once
+#include "scene/scene.h"
+
+#include <QMainWindow>
+
+class QAction;
+class QDockWidget;
+class QLabel;
+class QMenu;
+class QUndoStack;
+
+namespace chaplygin::ui {
+
+class ParametersPanel;
+class PathPanel;
+class Playback;
+class PlotsPanel;
+class SceneCanvas;
+class SceneDocument;
+class TimelineBar;
+
+/// The Chaplygin Lab window: the scene canvas in the centre, path, parameters and plots docks,
+/// the timeline toolbar, and the File, Edit, View and Help menus. Every path and parameter
+/// change goes through the undo stack.
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    /// useSettings: restore and save geometry, dock layout and recent files (off for tests and
+    /// screenshots).
+    explicit MainWindow(bool useSettings = true, QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    /// Replaces the scene as a new document (File > New, Open): clears the undo stack and
+    /// solves at once. Throws InputError when the scene does not solve.
+    void loadScene(const Scene& scene);
+    /// Changes the scene as one undo step (latest value wins for the recompute).
+    void editScene(const Scene& scene, const QString& description, const QString& mergeKey = {});
+
+    /// File operations without dialogs; each returns false and shows why on failure.
+    bool openFile(const QString& path);
+    bool saveFile(const QString& path);
+    bool exportPlotsTo(const QString& dir, const QStringList& formats);
+    bool exportCsvTo(const QString& path);
+
+    /// The last message shown for a failed file operation.
+    const QString& lastFileError() const { return m_lastFileError; }
+
+    SceneDocument* document() const { return m_document; }
+    Playback* playback() const { return m_playback; }
+    SceneCanvas* canvas() const { return m_canvas; }
+    ParametersPanel* parametersPanel() const { return m_parameters; }
+    PathPanel* pathPanel() const { return m_path; }
+    PlotsPanel* plotsPanel() const { return m_plots; }
+    TimelineBar* timeline() const { return m_timeline; }
+    QUndoStack* undoStack() const { return m_undo; }
+    QAction* followAction() const { return m_followAction; }
+
+protected:
+    void closeEvent(QCloseEvent* e) override;
+
+private:
+    void buildMenus();
+    void rebuildRecentMenu();
+    void applyScene(const Scene& scene);
+    void onSolutionChanged();
+    void onDocumentError(const QString& error);
+    void onTime(double t);
+    void choosePreset(const QString& name);
+    void setPath(const PathSource& source, const QString& description);
+    void onParametersEdited(const Scene& scene, const QString& description, const QString& mergeKey);
+    void newScene();
+    void openDialog();
+    bool saveDialog(bool askName);
+    void exportPlotsDialog();
+    void exportCsvDialog();
+    void showFileError(const QString& message);
+    void updateTitle();
+
+    bool m_useSettings;
+    SceneDocument* m_document;
+    Playback* m_playback;
+    QUndoStack* m_undo;
+    SceneCanvas* m_canvas;
+    PathPanel* m_path;
+    ParametersPanel* m_parameters;
+    PlotsPanel* m_plots;
+    TimelineBar* m_timeline;
+    QDockWidget* m_pathDock;
+    QDockWidget* m_parametersDock;
+    QDockWidget* m_plotsDock;
+    QMenu* m_recentMenu = nullptr;
+    QAction* m_followAction = nullptr;
+    QLabel* m_status;
+    Scene m_current;
+    QString m_lastFileError;
+};
+
+} // namespace chaplygin::ui

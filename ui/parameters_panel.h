@@ -1,0 +1,69 @@
+#pragma once
+#include "scene/scene.h"
+
+#include <QString>
+#include <QWidget>
+
+#include <map>
+#include <string>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QFormLayout;
+class QLabel;
+class QSlider;
+
+namespace chaplygin::ui {
+
+/// The parameters dock: the system, a spin box and a slider per parameter (units in the
+/// tooltips), the derived m_eff, a, b and I, the speed mode and v_T or v_s. Every edit emits
+/// sceneEdited with the whole new scene; the owner validates it and pushes an undo step.
+class ParametersPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit ParametersPanel(QWidget* parent = nullptr);
+
+    /// Shows a scene without emitting sceneEdited.
+    void setScene(const Scene& scene);
+    /// Shows an error under the parameters (empty clears it).
+    void showError(const QString& message);
+    QString errorText() const;
+
+    /// The spin box of a parameter ("m", "a", "b", ..., or "speed"), or null.
+    QDoubleSpinBox* spinBox(const QString& name) const;
+    QSlider* slider(const QString& name) const;
+
+signals:
+    /// description names the change for the undo stack; edits with the same mergeKey merge.
+    void sceneEdited(const Scene& scene, const QString& description, const QString& mergeKey);
+
+private:
+    struct Row {
+        QDoubleSpinBox* spin = nullptr;
+        QSlider* slider = nullptr;
+    };
+    void rebuildRows();
+    Row addRow(const QString& name, const QString& label, const QString& unit, double lo, double hi,
+               double value);
+    void onValueChanged(const QString& name, double value);
+    void onSystemChosen(int index);
+    void onGyrationChosen(int index);
+    void onModeChosen(int index);
+    void updateDerived();
+    void emitEdit(const QString& description, const QString& mergeKey);
+
+    Scene m_scene;
+    bool m_updating = false;
+    QComboBox* m_system;
+    QComboBox* m_gyration;
+    QLabel* m_gyrationLabel;
+    QFormLayout* m_form;
+    QWidget* m_rowsHost;
+    QLabel* m_derived;
+    QComboBox* m_mode;
+    QLabel* m_speedLabel;
+    QLabel* m_error;
+    std::map<QString, Row> m_rows;
+};
+
+} // namespace chaplygin::ui

@@ -1,0 +1,71 @@
+#pragma once
+#include "scene/scene.h"
+
+#include <QWidget>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QRadioButton;
+
+namespace chaplygin::ui {
+
+/// The path editor: the paper's presets, a typed graph y(x) or parametric x(u), y(u) with its
+/// range (errors inline; the last valid path stays), and freehand drawing on the canvas with
+/// pivot or smooth corners.
+class PathPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit PathPanel(QWidget* parent = nullptr);
+
+    /// Shows the scene's path without emitting anything.
+    void setScene(const Scene& scene);
+    /// Shows an error under the expressions (empty clears it).
+    void showError(const QString& message);
+    QString errorText() const;
+    CornerMode drawCorners() const;
+
+    QLineEdit* graphEdit() const { return m_y; }
+    QLineEdit* xOfUEdit() const { return m_xu; }
+    QLineEdit* yOfUEdit() const { return m_yu; }
+    QDoubleSpinBox* fromSpin() const { return m_from; }
+    QDoubleSpinBox* toSpin() const { return m_to; }
+    QRadioButton* parametricButton() const { return m_parametric; }
+    QPushButton* applyButton() const { return m_apply; }
+    QPushButton* drawButton() const { return m_draw; }
+    QComboBox* presetBox() const { return m_preset; }
+    QComboBox* cornersBox() const { return m_corners; }
+
+signals:
+    void presetChosen(const QString& name);
+    /// The user applied a typed path (Enter or Apply).
+    void pathTyped(const PathSource& source);
+    void drawModeToggled(bool on);
+    /// The corner mode changed while the current path is a polyline.
+    void cornersChanged(CornerMode mode);
+
+private:
+    void applyTyped();
+    void updateKind();
+
+    Scene m_scene;
+    QComboBox* m_preset;
+    QLabel* m_presetInfo;
+    QRadioButton* m_graph;
+    QRadioButton* m_parametric;
+    QLineEdit* m_y;
+    QLineEdit* m_xu;
+    QLineEdit* m_yu;
+    QDoubleSpinBox* m_from;
+    QDoubleSpinBox* m_to;
+    QLabel* m_rangeLabel;
+    QPushButton* m_apply;
+    QLabel* m_error;
+    QPushButton* m_draw;
+    QComboBox* m_corners;
+    QLabel* m_polylineInfo;
+};
+
+} // namespace chaplygin::ui

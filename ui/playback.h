@@ -1,0 +1,49 @@
+#pragma once
+#include <QElapsedTimer>
+#include <QObject>
+#include <QTimer>
+
+namespace chaplygin::ui {
+
+/// The animation clock: the shown time t in [0, tEnd], advanced in real time times a speed
+/// factor while playing, at most once per display frame.
+class Playback : public QObject {
+    Q_OBJECT
+public:
+    explicit Playback(QObject* parent = nullptr);
+
+    double time() const { return m_time; }
+    double tEnd() const { return m_tEnd; }
+    bool isPlaying() const { return m_timer.isActive(); }
+    bool loops() const { return m_loop; }
+    double speedFactor() const { return m_factor; }
+    /// Simulated seconds per single step.
+    double stepSize() const;
+
+public slots:
+    void setTEnd(double tEnd);
+    void seek(double t);
+    void play();
+    void pause();
+    void togglePlay();
+    void stepForward();
+    void stepBackward();
+    void setLoop(bool loop);
+    void setSpeedFactor(double factor);
+    /// Advances by dt real seconds (what one tick does); public for benchmarks and tests.
+    void advance(double dtReal);
+
+signals:
+    void timeChanged(double t);
+    void playingChanged(bool playing);
+
+private:
+    void tick();
+
+    QTimer m_timer;
+    QElapsedTimer m_clock;
+    double m_time = 0, m_tEnd = 0, m_factor = 1;
+    bool m_loop = false;
+};
+
+} // namespace chaplygin::ui

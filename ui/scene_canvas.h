@@ -1,0 +1,90 @@
+#pragma once
+#include "paths/path_source.h"
+#include "scene/solution.h"
+
+#include <QPixmap>
+
+#include <QPointF>
+#include <QWidget>
+
+#include <utility>
+#include <vector>
+
+namespace chaplygin::ui {
+
+class SceneDocument;
+
+/// The animation canvas: the prescribed path coloured by curvature, the controlled body to scale
+/// at its pose with its trail, and a translucent ghost of the free motion with its own trail.
+/// Wheel zooms about the cursor, dragging pans; in draw mode the left button draws a path.
+class SceneCanvas : public QWidget {
+    Q_OBJECT
+public:
+    explicit SceneCanvas(SceneDocument* document, QWidget* parent = nullptr);
+
+    double time() const { return m_time; }
+    bool followsBody() const { return m_follow; }
+    bool drawMode() const { return m_drawMode; }
+    /// Pixels per metre.
+    double scale() const { return m_scale; }
+    /// World point (metres) <-> widget pixel.
+    QPointF toPixel(QPointF world) const;
+    QPointF toWorld(QPointF pixel) const;
+
+    QSize sizeHint() const override { return {800, 500}; }
+
+public slots:
+    void setTime(double t);
+    void fitScene();
+    void setFollowBody(bool follow);
+    void setDrawMode(bool on);
+    void zoomBy(double factor);
+
+signals:
+    /// The user finished drawing a stroke: sampled points in metres, in order.
+    void pathDrawn(const std::vector<std::pair<double, double>>& points);
+    void followBodyChanged(bool follow);
+
+protected:
+    void paintEvent(QPaintEvent*) override;
+    void wheelEvent(QWheelEvent* e) override;
+    void mousePressEvent(QMouseEvent* e) override;
+    void mouseMoveEvent(QMouseEvent* e) override;
+    void mouseReleaseEvent(QMouseEvent* e) override;
+    void keyPressEvent(QKeyEvent* e) override;
+    void resizeEvent(QResizeEvent* e) override;
+
+private:
+    void onSolutionChanged();
+    QTransform worldTransform() const;
+    void paintGrid(QPainter& p) const;
+    void paintPath(QPainter& p) const;
+    void paintTrails(QPainter& p, const MotionSample& now) const;
+    void paintLegend(QPainter& p) const;
+    void paintBackground();
+    void centreOnBody();
+
+    SceneDocument* m_document;
+    double m_time = 0;
+    double m_scale = 50; // px per metre
+    QPointF m_centre;    // world point at the widget centre
+    bool m_follow = false;
+    bool m_autoFit = true; // refit on resize and new solutions until the user zooms or pans
+    bool m_drawMode = false;
+    bool m_panning = false;
+    QPointF m_lastMouse;
+    std::vector<QPointF> m_stroke; // world points of the stroke being drawn
+    struct BackgroundKey {
+        const Solution* solution = nullptr;
+        QSize size;
+        double scale = 0;
+        QPointF centre;
+        bool drawMode = false;
+        qreal dpr = 0;
+        bool operator==(const BackgroundKey&) const = default;
+    };
+    BackgroundKey m_backgroundKey;
+    QPixmap m_background; // grid, path and legend
+};
+
+} // namespace chaplygin::ui

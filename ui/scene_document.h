@@ -1,0 +1,69 @@
+#pragma once
+#include "plot_series.h"
+#include "scene/scene.h"
+#include "scene/solution.h"
+
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+#include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace chaplygin::ui {
+
+/// The open scene and its latest valid Solution, shared by every view. Scene changes are
+/// coalesced: setScene() only marks the document dirty, and one recompute runs on the next turn of
+/// the event loop with the latest scene (at most one per frame while a slider moves). A scene
+/// that fails leaves the last valid Solution in place and reports the InputError.
+class SceneDocument : public QObject {
+    Q_OBJECT
+public:
+    explicit SceneDocument(QObject* parent = nullptr);
+
+    /// The scene as the user last set it (may be the one that failed).
+    const Scene& scene() const { return m_scene; }
+    /// The last valid solution, or null before the first one.
+    const std::shared_ptr<const Solution>& solution() const { return m_solution; }
+    /// What the plots draw, gathered once per recompute.
+    const PlotSeries& series() const { return m_series; }
+    /// The message of the last failed recompute; empty when the scene is valid.
+    const QString& error() const { return m_error; }
+
+    /// Marks the scene for a coalesced recompute (latest value wins).
+    void setScene(const Scene& scene);
+    /// Recomputes now (for tests, the screenshot mode and file loading).
+    void setSceneNow(const Scene& scene);
+    /// Runs a pending recompute now, if any.
+    void flush();
+
+    /// Builds and caches the path of a source; throws InputError. Cheap when cached.
+    std::shared_ptr<const Path> pathFor(const PathSource& source);
+
+    /// The file this scene was loaded from or saved to; empty if none.
+    const QString& fileName() const { return m_fileName; }
+    void setFileName(const QString& name);
+
+signals:
+    /// A new valid solution (and series) is in place.
+    void solutionChanged();
+    /// error is empty when the latest scene solved.
+    void errorChanged(const QString& error);
+    void fileNameChanged(const QString& name);
+
+private:
+    void recompute();
+
+    Scene m_scene;
+    bool m_dirty = false;
+    QTimer m_timer;
+    std::shared_ptr<const Solution> m_solution;
+    PlotSeries m_series;
+    QString m_error;
+    QString m_fileName;
+    std::vector<std::pair<PathSource, std::shared_ptr<const Path>>> m_pathCache;
+};
+
+} // namespace chaplygin::ui

@@ -1,0 +1,40 @@
+#include "scene_files.h"
+
+#include "common/atomic_file.h"
+#include "plot_series.h"
+#include "scene/csv_writer.h"
+#include "scene/scene_json.h"
+
+#include <QFileInfo>
+#include <QSettings>
+
+namespace chaplygin::ui {
+
+namespace {
+const QString kRecentKey = QStringLiteral("recentFiles");
+constexpr int kMaxRecent = 8;
+} // namespace
+
+void saveSceneFile(const QString& path, const Scene& scene) {
+    writeFileAtomically(path.toStdString(), sceneToJson(scene));
+}
+
+void exportCsvFile(const QString& path, const Solution& solution, int rows) {
+    std::string text = "# Chaplygin Lab: " + sceneCaption(solution).toStdString() + "\n";
+    text += formatCsv(solution.sample(rows));
+    writeFileAtomically(path.toStdString(), text);
+}
+
+QStringList recentFiles() { return QSettings().value(kRecentKey).toStringList(); }
+
+void addRecentFile(const QString& path) {
+    QString full = QFileInfo(path).absoluteFilePath();
+    QStringList list = recentFiles();
+    list.removeAll(full);
+    list.prepend(full);
+    while (list.size() > kMaxRecent)
+        list.removeLast();
+    QSettings().setValue(kRecentKey, list);
+}
+
+} // namespace chaplygin::ui

@@ -1,0 +1,22 @@
+#pragma once
+#include "scene/scene.h"
+#include "scene/solution.h"
+
+#include <QString>
+#include <QStringList>
+
+namespace chaplygin::ui {
+
+/// File > Save: the scene as versioned JSON (the CLI's --scene format), written atomically.
+/// Throws IoError.
+void saveSceneFile(const QString& path, const Scene& scene);
+
+/// File > Export CSV: samples rows evenly on [0, t_end] in the CLI's columns, after one comment
+/// line "# Chaplygin Lab: <parameters>". Written atomically; throws IoError.
+void exportCsvFile(const QString& path, const Solution& solution, int rows = 501);
+
+/// The recent-files list kept in QSettings (most recent first, at most 8).
+QStringList recentFiles();
+void addRecentFile(const QString& path);
+
+} // namespace chaplygin::ui

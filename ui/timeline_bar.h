@@ -1,0 +1,44 @@
+#pragma once
+#include <QToolBar>
+
+class QAction;
+class QComboBox;
+class QLabel;
+class QSlider;
+
+namespace chaplygin::ui {
+
+class Playback;
+
+/// The timeline toolbar: play/pause (Space), single steps, speed x0.25 ... x4, loop, and a scrub
+/// slider with the time shown.
+class TimelineBar : public QToolBar {
+    Q_OBJECT
+public:
+    explicit TimelineBar(Playback* playback, QWidget* parent = nullptr);
+
+    QAction* playAction() const { return m_play; }
+    QAction* stepForwardAction() const { return m_stepForward; }
+    QAction* stepBackAction() const { return m_stepBack; }
+    QAction* loopAction() const { return m_loop; }
+    QSlider* slider() const { return m_slider; }
+    QComboBox* speedBox() const { return m_speed; }
+    QLabel* timeLabel() const { return m_timeLabel; }
+
+public slots:
+    /// Follows the clock (and a new horizon).
+    void sync();
+
+private:
+    Playback* m_playback;
+    QAction* m_play;
+    QAction* m_stepBack;
+    QAction* m_stepForward;
+    QAction* m_loop;
+    QComboBox* m_speed;
+    QSlider* m_slider;
+    QLabel* m_timeLabel;
+    bool m_syncing = false;
+};
+
+} // namespace chaplygin::ui
