@@ -37,16 +37,15 @@ struct OdeAdapter {
     }
 };
 
-/// GSL's default handler aborts; within this scope errors come back as return codes.
-class ErrorHandlerOff {
-  public:
-    ErrorHandlerOff() : m_old(gsl_set_error_handler_off()) {}
-    ~ErrorHandlerOff() { gsl_set_error_handler(m_old); }
-    ErrorHandlerOff(const ErrorHandlerOff&) = delete;
-    ErrorHandlerOff& operator=(const ErrorHandlerOff&) = delete;
-
-  private:
-    gsl_error_handler_t* m_old;
-};
+/// GSL's default error handler aborts the process. It is switched off once, process-wide, on
+/// first use, and every GSL call here checks its return code instead. A scoped save and restore
+/// would race between threads (the GUI runs sweeps in a worker).
+inline void ensureErrorHandlerOff() {
+    static const bool off = [] {
+        gsl_set_error_handler_off();
+        return true;
+    }();
+    (void)off;
+}
 
 } // namespace chaplygin::gsl

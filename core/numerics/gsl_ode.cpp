@@ -69,7 +69,7 @@ GslSolve integrateGsl(const OdeProblem& problem, GslStepper stepper, double t0, 
     gsl::OdeAdapter adapter{&problem, &out.work};
     gsl_odeiv2_system sys{&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian,
                           static_cast<std::size_t>(n), &adapter};
-    gsl::ErrorHandlerOff quiet;
+    gsl::ensureErrorHandlerOff();
     // a first step of tol^(1/4) of the span; the controller adapts it at once
     double h = (t1 - t0) * std::min(0.1, std::pow(tolerance, 0.25));
     DriverPtr driver(gsl_odeiv2_driver_alloc_standard_new(&sys, stepType(stepper), h, tolerance,
@@ -90,9 +90,9 @@ GslSolve integrateGsl(const OdeProblem& problem, GslStepper stepper, double t0, 
         if (status != GSL_SUCCESS)
             throw std::runtime_error(gslStepperName(stepper) + ": " + gsl_strerror(status) +
                                      " at t = " + std::to_string(t));
-        // the stepper's derivative at the new point (f(t, y) after the accepted step)
-        problem.rhs(t, y.data(), f.data());
-        ++out.work.rhsEvals;
+        // f(t, y) at the accepted point: every odeiv2 stepper leaves it in the evolve object's
+        // dydt_out (already counted), equal bit for bit to a fresh evaluation
+        std::copy_n(d->e->dydt_out, n, f.begin());
         out.dense.add(problem, t, y.data(), f.data(), out.work);
         if (out.work.rhsEvals > 50'000'000)
             throw std::runtime_error(gslStepperName(stepper) + ": too many steps");
@@ -111,7 +111,7 @@ OdeWork integrateGslFixed(const OdeProblem& problem, GslStepper stepper, double 
     gsl::OdeAdapter adapter{&problem, &work};
     gsl_odeiv2_system sys{&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian,
                           static_cast<std::size_t>(n), &adapter};
-    gsl::ErrorHandlerOff quiet;
+    gsl::ensureErrorHandlerOff();
     StepPtr step(gsl_odeiv2_step_alloc(stepType(stepper), static_cast<std::size_t>(n)));
     if (!step)
         throw std::runtime_error("gsl_odeiv2_step_alloc failed");
@@ -139,7 +139,7 @@ std::vector<OdeValue> gslValuesAt(const OdeProblem& problem, GslStepper stepper,
     gsl::OdeAdapter adapter{&problem, &solve.work};
     gsl_odeiv2_system sys{&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian,
                           static_cast<std::size_t>(n), &adapter};
-    gsl::ErrorHandlerOff quiet;
+    gsl::ensureErrorHandlerOff();
     StepPtr step(gsl_odeiv2_step_alloc(stepType(stepper), static_cast<std::size_t>(n)));
     if (!step)
         throw std::runtime_error("gsl_odeiv2_step_alloc failed");

@@ -68,8 +68,8 @@ MethodOutput stateFrom(const std::vector<OdeValue>& values, const OdeWork& work,
         out.x.push_back(v[0]);
         out.y.push_back(v[1]);
         if (free)
-            out.energyDrift =
-                std::max(out.energyDrift, std::fabs(free->energy(v.data()) - e0) / e0);
+            out.energyDrift = std::max(out.energyDrift, std::fabs(free->energy(v.data()) - e0) /
+                                                            std::max(e0, 1e-300));
     }
     return out;
 }
@@ -206,7 +206,7 @@ void addFree(std::vector<Method>& out) {
             o.x.push_back(s.x);
             o.y.push_back(s.y);
             double e = s.sdot * s.sdot + b2 * s.phidot * s.phidot;
-            o.energyDrift = std::max(o.energyDrift, std::fabs(e - e0) / e0);
+            o.energyDrift = std::max(o.energyDrift, std::fabs(e - e0) / std::max(e0, 1e-300));
         }
         return o;
     };

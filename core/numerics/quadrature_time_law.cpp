@@ -59,7 +59,7 @@ std::vector<double> QuadratureTimeLaw::invert(const std::vector<double>& times,
     WorkspacePtr ws(gsl_integration_workspace_alloc(kLimit));
     if (!ws)
         throw std::runtime_error("gsl_integration_workspace_alloc failed");
-    gsl::ErrorHandlerOff quiet;
+    gsl::ensureErrorHandlerOff();
     auto integrand = [this](double u) { return rate(u); };
     gsl::FunctionAdapter<decltype(integrand)> adapter{&integrand, &work.rhsEvals};
     gsl_function fn = adapter.function();

@@ -122,10 +122,11 @@ WorkPrecisionReport runWorkPrecision(const Scene& scene, const WorkPrecisionOpti
         }
     }
 
+    // every method's settings first, so progress knows the total
+    std::vector<std::vector<double>> settingsOf;
+    int total = 0;
     for (const Method& m : methods) {
         const bool controlled = m.problem == MotionProblem::Controlled;
-        const std::vector<double>& times = controlled ? tc : tf;
-        const MethodOutput& ref = controlled ? refControlled : refFree;
         std::vector<double> settings;
         if (m.setting == SettingKind::None)
             settings = {0.0};
@@ -135,13 +136,35 @@ WorkPrecisionReport runWorkPrecision(const Scene& scene, const WorkPrecisionOpti
             for (long n : stepCounts)
                 settings.push_back((controlled ? c.controlledEnd : c.freeEnd) /
                                    static_cast<double>(n));
+        total += static_cast<int>(settings.size());
+        settingsOf.push_back(std::move(settings));
+    }
+    int done = 0;
+    for (std::size_t k = 0; k < methods.size() && !report.cancelled; ++k) {
+        const Method& m = methods[k];
+        const bool controlled = m.problem == MotionProblem::Controlled;
+        const std::vector<double>& times = controlled ? tc : tf;
+        const MethodOutput& ref = controlled ? refControlled : refFree;
+        const std::vector<double>& settings = settingsOf[k];
+        int skipped = static_cast<int>(settings.size());
         for (double setting : settings) {
+            if (options.cancel && options.cancel->load()) {
+                report.cancelled = true;
+                break;
+            }
+            --skipped;
             Timed run;
+            bool solved = true;
             try {
                 run = timeSolve(m, c, setting, times, options.minTimingSeconds);
             } catch (const std::runtime_error&) {
-                continue; // a stepper that fails at this setting (e.g. too many steps) has no row
+                solved = false; // a stepper that fails at this setting (too many steps) has no row
             }
+            ++done;
+            if (options.progress)
+                options.progress(done, total);
+            if (!solved)
+                continue;
             WorkPrecisionRow row;
             row.problem = m.problem;
             row.method = m.name;
@@ -154,6 +177,12 @@ WorkPrecisionReport runWorkPrecision(const Scene& scene, const WorkPrecisionOpti
             report.rows.push_back(row);
             if (run.seconds > options.maxSolveSeconds)
                 break;
+        }
+        // settings left out after a slow solve count as done
+        if (!report.cancelled && skipped > 0) {
+            done += skipped;
+            if (options.progress)
+                options.progress(done, total);
         }
     }
     return report;

@@ -2,6 +2,8 @@
 #include "numerics/method_registry.h"
 #include "scene/scene.h"
 
+#include <atomic>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,13 +27,19 @@ struct WorkPrecisionOptions {
     std::vector<long> stepCounts;   ///< fixed-step methods: h = t_end/n; default 16, 32, ..., 16384
     double maxSolveSeconds = 0.25;  ///< a method's sweep stops after a solve slower than this
     double minTimingSeconds = 0.02; ///< repeat fast solves until this much time is spent (max 9)
+    /// Called after every configuration with (done, total), from the calling thread.
+    std::function<void(int, int)> progress;
+    /// When set and true, the sweep stops after the configuration under way (GUI cancel button).
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 struct WorkPrecisionReport {
     std::vector<WorkPrecisionRow> rows;
     std::string controlledReference,
-        freeReference;                     ///< which solution the errors are measured against
-    double controlledEnd = 0, freeEnd = 0; ///< horizons [s]
+        freeReference; ///< which solution the errors are measured against
+    double controlledEnd = 0, freeEnd = 0;
+    bool cancelled =
+        false; ///< stopped by options.cancel: rows holds what was done ///< horizons [s]
 };
 
 /// The speed-against-accuracy sweep of issue #4 for one scene.

@@ -9,6 +9,7 @@
 #include <cctype>
 #include <cmath>
 #include <mutex>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -17,6 +18,7 @@ namespace {
 
 constexpr std::size_t kMaxLength = 4000;
 constexpr int kMaxDepth = 100;
+constexpr std::size_t kMaxDerivativeLength = 15000; // muparser compiles up to 20000
 
 const std::set<std::string> kFunctions = {"sin",  "cos",  "tan",  "asin", "acos", "atan", "sinh",
                                           "cosh", "tanh", "exp",  "sqrt", "abs",  "ln",   "log"};
@@ -89,11 +91,36 @@ void checkCharactersAndNames(const std::string& text, const std::string& variabl
         throw InputError(at(label, text.size()), "missing ')'");
 }
 
-// `ln` is GiNaC's `log`; `pi` and `e` are constants
+// `ln` is GiNaC's `log`; `pi` and `e` are constants. Numbers become floating point, so that
+// GiNaC never evaluates an exact power such as 2^(10^9) digit by digit.
 std::string toGinacSyntax(const std::string& text) {
     std::string out;
     for (std::size_t i = 0; i < text.size();) {
-        if (std::isalpha(static_cast<unsigned char>(text[i]))) {
+        if (std::isdigit(static_cast<unsigned char>(text[i])) || text[i] == '.') {
+            std::size_t j = i;
+            bool fractional = false;
+            while (j < text.size() && (std::isdigit(static_cast<unsigned char>(text[j])) || text[j] == '.')) {
+                fractional = fractional || text[j] == '.';
+                ++j;
+            }
+            std::string number = text.substr(i, j - i);
+            if (number.front() == '.')
+                number.insert(0, "0");
+            if (number.back() == '.')
+                number += '0';
+            if (!fractional)
+                number += ".0";
+            out += number;
+            i = j;
+            // an exponent (1e-3) is copied as it is: the mantissa is already floating point
+            if (i < text.size() && (text[i] == 'e' || text[i] == 'E') && i + 1 < text.size() &&
+                (std::isdigit(static_cast<unsigned char>(text[i + 1])) || text[i + 1] == '-' || text[i + 1] == '+')) {
+                out += text[i++];
+                out += text[i++];
+                while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])))
+                    out += text[i++];
+            }
+        } else if (std::isalpha(static_cast<unsigned char>(text[i]))) {
             std::size_t j = i;
             while (j < text.size() && std::isalnum(static_cast<unsigned char>(text[j])))
                 ++j;
@@ -156,12 +183,18 @@ Expression Expression::compile(const std::string& text, const std::string& varia
         std::string msg = e.what();
         if (msg.find("power should have exactly 2 operands") != std::string::npos)
             throw InputError(label, "chained powers a^b^c are ambiguous: write a^(b^c) or (a^b)^c");
+        if (msg.find("division by zero") != std::string::npos)
+            throw InputError(label, "division by zero in a constant part of the expression");
         throw InputError(label, "cannot be differentiated: " + msg.substr(0, msg.find('\n')));
     }
     for (int k = 1; k <= 3; ++k) {
         f = f.diff(sym);
         std::ostringstream printed;
         printed << f;
+        if (printed.str().size() > kMaxDerivativeLength)
+            throw InputError(label, "too complex to differentiate: derivative " + std::to_string(k) + " has " +
+                                        std::to_string(printed.str().size()) + " characters (the limit is " +
+                                        std::to_string(kMaxDerivativeLength) + ")");
         mu::Parser& pk = impl->parsers[k];
         defineCommon(pk);
         pk.DefineVar(variable, &impl->var);
@@ -169,6 +202,8 @@ Expression Expression::compile(const std::string& text, const std::string& varia
             pk.SetExpr(printed.str());
             pk.Eval();
         } catch (const mu::Parser::exception_type&) {
+            if (std::regex_search(printed.str(), std::regex("E[0-9]{3,}")))
+                throw InputError(label, "a constant overflows double precision (beyond 1.8e308)");
             throw InputError(label, "derivative " + std::to_string(k) + " is not a real expression (" +
                                         printed.str().substr(0, 80) + ")");
         }

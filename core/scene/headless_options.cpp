@@ -115,6 +115,8 @@ HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args) {
         auto value = [&]() -> std::string {
             if (i + 1 >= args.size())
                 throw InputError(opt, "needs a value");
+            if (args[i + 1].rfind("--", 0) == 0)
+                throw InputError(opt, "needs a value (the next word is the option " + args[i + 1] + ")");
             return args[++i];
         };
         auto once = [&]() {

@@ -123,7 +123,8 @@ TEST_P(AdaptiveConvergence, ErrorFollowsTheToleranceOnBothProblems) {
 
 INSTANTIATE_TEST_SUITE_P(Steppers, AdaptiveConvergence,
                          ::testing::Values("gsl_rk4", "gsl_rkf45", "gsl_rkck", "gsl_rk8pd",
-                                           "gsl_msadams", "gsl_msbdf"));
+                                           "gsl_msadams", "gsl_msbdf"),
+                         [](const auto& info) { return info.param; });
 
 TEST(NumericsConvergence, AppTimeLawMatchesTheIndependentQuadrature) {
     MethodCase c(presetScene("catenary"));
@@ -132,6 +133,15 @@ TEST(NumericsConvergence, AppTimeLawMatchesTheIndependentQuadrature) {
     const Method& app = methodNamed(methods, MotionProblem::Controlled, "quadrature_gauss_newton");
     EXPECT_TRUE(app.appDefault);
     EXPECT_LE(maxDistance(app.solve(c, 0, times), test::controlledReference(c, times)), 1e-13);
+}
+
+TEST(NumericsConvergence, QagNewtonMatchesTheSixtyOnePointReference) {
+    MethodCase c(presetScene("catenary"));
+    const std::vector<double> times = evenTimes(c.controlledEnd);
+    const std::vector<Method> methods = methodRegistry(c);
+    const Method& qag = methodNamed(methods, MotionProblem::Controlled, "gsl_qag_newton");
+    // 21-point against 61-point Gauss-Kronrod: both at rounding on a smooth path
+    EXPECT_LE(maxDistance(qag.solve(c, 1e-8, times), test::controlledReference(c, times)), 1e-13);
 }
 
 TEST(NumericsConvergence, ClosedFormTimeLawOnTheCircleMatchesTheOde) {

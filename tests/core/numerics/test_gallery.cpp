@@ -104,12 +104,9 @@ TEST(Gallery, HighCurvatureMakesExplicitSteppersTakeTinySteps) {
     EXPECT_LT(hmin[1], 1e-3 * hmin[0]) << hmin[0] << " " << hmin[1];
 }
 
-// Not yet: the path table's panels are refined with the path's own length scale standing in
-// for b, so sqrt(1 + b^2 kappa^2), which has a near-kink of width 1/b in kappa at every
-// inflection, is under-resolved when b kappa >> 1. Measured position error of the app's time law
-// against GSL QAG-61 + Newton at 1e-14 (confirmed by rk8pd at 1e-13): 4e-11 at b kappa = 100,
-// 5.2e-7 at b kappa = 1000. Enable once PathTable/TimeLaw refine with b (docs/numerics.md).
-TEST(Gallery, DISABLED_AppTimeLawStaysExactAtHighCurvature) {
+// the app's time law at b kappa = 1000: sqrt(1 + b^2 kappa^2) has a near-kink of width 1/b in
+// kappa at every inflection, which the path table must resolve (it once did not: 5.2e-7)
+TEST(Gallery, AppTimeLawStaysExactAtHighCurvature) {
     MethodCase c = sharpSinusoid(1e-3);
     const std::vector<double> times = evenTimes(c.controlledEnd);
     const std::vector<Method> methods = methodRegistry(c);

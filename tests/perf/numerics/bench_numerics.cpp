@@ -5,6 +5,7 @@
 #include "numerics/gsl_ode.h"
 #include "numerics/method_registry.h"
 #include "numerics/sleigh_problems.h"
+#include "numerics/work_precision.h"
 #include "scene/presets.h"
 
 #include <benchmark/benchmark.h>
@@ -148,6 +149,27 @@ void BM_Solve(benchmark::State& state, std::string problem, std::string method) 
             static_cast<double>(evals) * 1e-9,
             benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
+
+// issue #4 item 5: the app's chosen configuration is on the Pareto front of the catenary's
+// work-precision chart (t_end = 10). One iteration is one whole sweep; the counters say whether
+// each chosen row is on the front, and the run fails if one is not.
+void BM_ChosenOnParetoFront(benchmark::State& state) {
+    Scene scene = presetScene("catenary");
+    scene.tEnd = 10;
+    double controlled = 0, free = 0;
+    for (auto _ : state) {
+        WorkPrecisionReport r = runWorkPrecision(scene);
+        for (std::size_t i = 0; i < r.rows.size(); ++i)
+            if (r.rows[i].chosen)
+                (r.rows[i].problem == MotionProblem::Controlled ? controlled : free) =
+                    onParetoFront(r.rows, i) ? 1 : 0;
+    }
+    state.counters["controlled_chosen_on_front"] = controlled;
+    state.counters["free_chosen_on_front"] = free;
+    if (controlled != 1 || free != 1)
+        state.SkipWithError("a chosen configuration is off the Pareto front");
+}
+BENCHMARK(BM_ChosenOnParetoFront)->Unit(benchmark::kMillisecond)->Iterations(3);
 
 void registerSolves() {
     const MethodCase& c = catenary();
