@@ -28,7 +28,8 @@ int writePlots(const Solution& solution, const HeadlessOptions& o, int argc, cha
         qputenv("QT_QPA_PLATFORM", "offscreen");
     if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
         // Qt wants a private runtime directory even offscreen
-        QString runtime = QDir::tempPath() + QStringLiteral("/chaplygin-lab-runtime-") + QString::number(::getuid());
+        QString runtime = QDir::tempPath() + QStringLiteral("/chaplygin-lab-runtime-") +
+                          QString::number(::getuid());
         QDir().mkpath(runtime);
         QFile::setPermissions(runtime, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
         qputenv("XDG_RUNTIME_DIR", runtime.toUtf8());
@@ -61,9 +62,10 @@ int runHeadless(int argc, char** argv) {
             if (o.times) {
                 for (double t : *o.times)
                     if (t < 0 || t > solution.duration())
-                        throw InputError("--times", formatNumber(t) + " is outside [0, " +
-                                                        formatNumber(solution.duration()) +
-                                                        "], the time the body takes along the path");
+                        throw InputError("--times",
+                                         formatNumber(t) + " is outside [0, " +
+                                             formatNumber(solution.duration()) +
+                                             "], the time the body takes along the path");
                 rows = solution.sampleAt(*o.times);
             } else {
                 rows = solution.sample(o.samples);

@@ -54,14 +54,15 @@ void exportPlots(const Solution& solution, const QString& dir, const QStringList
         throw IoError("cannot create the plot directory '" + dir.toStdString() + "'");
     PlotSeries series = collectSeries(solution, 800, 800);
     QString caption = sceneCaption(solution);
-    for (PlotKind kind : {PlotKind::Psi, PlotKind::Chi, PlotKind::Lambda, PlotKind::Energy, PlotKind::Trajectory,
-                          PlotKind::PaperFigure}) {
+    for (PlotKind kind : {PlotKind::Psi, PlotKind::Chi, PlotKind::Lambda, PlotKind::Energy,
+                          PlotKind::Trajectory, PlotKind::PaperFigure}) {
         QCustomPlot plot;
         drawPlot(plot, kind, series);
         addCaption(plot, caption);
         QCPLayoutGrid* grid = plot.plotLayout();
         grid->insertRow(0);
-        auto* title = new QCPTextElement(&plot, plotTitle(kind), QFont(plot.font().family(), 12, QFont::Bold));
+        auto* title = new QCPTextElement(&plot, plotTitle(kind),
+                                         QFont(plot.font().family(), 12, QFont::Bold));
         grid->addElement(0, 0, title);
         int height = kind == PlotKind::PaperFigure ? 800 : kHeight;
         for (const QString& format : formats) {

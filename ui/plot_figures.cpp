@@ -11,7 +11,8 @@ const QColor kPath(0x7f, 0x7f, 0x7f);
 
 QCPGraph* addGraph(QCPAxisRect* rect, const QVector<double>& x, const QVector<double>& y,
                    const QString& name, const QColor& color, Qt::PenStyle style = Qt::SolidLine) {
-    QCPGraph* g = rect->parentPlot()->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    QCPGraph* g =
+        rect->parentPlot()->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
     g->setData(x, y, true);
     g->setName(name);
     g->setPen(QPen(color, 1.5, style));
@@ -63,8 +64,9 @@ void rescale(QCPAxisRect* rect, bool equalAspect = false) {
     // a little margin; a flat series gets a visible band around it
     for (QCPAxis* a : {x, y}) {
         QCPRange r = a->range();
-        double pad = r.size() > 1e-12 * std::max(1.0, std::abs(r.center())) ? 0.05 * r.size()
-                                                                            : 0.5 * std::max(1e-3, std::abs(r.center()));
+        double pad = r.size() > 1e-12 * std::max(1.0, std::abs(r.center()))
+                         ? 0.05 * r.size()
+                         : 0.5 * std::max(1e-3, std::abs(r.center()));
         a->setRange(r.lower - pad, r.upper + pad);
     }
     if (equalAspect)
@@ -80,8 +82,10 @@ void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSer
         break;
     case PlotKind::Chi:
         addGraph(rect, s.t, s.chi, QStringLiteral("controlled \u03c7"), kControlled);
-        addGraph(rect, s.freeT, s.freeChi, QStringLiteral("free \u03c7 (constant)"), kFree, Qt::DashLine);
-        labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03c7 = \u03a8 \u2212 (a/b)\u03c6 [rad]"));
+        addGraph(rect, s.freeT, s.freeChi, QStringLiteral("free \u03c7 (constant)"), kFree,
+                 Qt::DashLine);
+        labels(rect, QStringLiteral("t [s]"),
+               QStringLiteral("\u03c7 = \u03a8 \u2212 (a/b)\u03c6 [rad]"));
         break;
     case PlotKind::Lambda:
         addGraph(rect, s.t, s.lambda, QStringLiteral("\u03bb = m b d\u03c7/dt"), kControlled);

@@ -57,7 +57,8 @@ QString sceneCaption(const Solution& solution) {
                           .arg(sys.b, 0, 'g', 6)
                           .arg(mode.arg(scene.speed, 0, 'g', 6));
     if (!scene.preset.empty())
-        caption = QStringLiteral("preset %1 \u2014 ").arg(QString::fromStdString(scene.preset)) + caption;
+        caption =
+            QStringLiteral("preset %1 \u2014 ").arg(QString::fromStdString(scene.preset)) + caption;
     return caption;
 }
 

@@ -4,15 +4,16 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
-#include <sys/stat.h>
 #include <string>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace chaplygin {
 namespace {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what, int err) {
-    throw IoError("cannot write '" + path + "': " + what + (err ? std::string(": ") + std::strerror(err) : ""));
+    throw IoError("cannot write '" + path + "': " + what +
+                  (err ? std::string(": ") + std::strerror(err) : ""));
 }
 
 bool writeAll(int fd, const std::string& content) {
@@ -34,7 +35,8 @@ bool writeAll(int fd, const std::string& content) {
 
 void writeFileAtomically(const std::string& path, const std::string& content) {
     if (path == "-") {
-        if (std::fwrite(content.data(), 1, content.size(), stdout) != content.size() || std::fflush(stdout) != 0)
+        if (std::fwrite(content.data(), 1, content.size(), stdout) != content.size() ||
+            std::fflush(stdout) != 0)
             fail("standard output", "short write", errno);
         return;
     }

@@ -6,7 +6,7 @@ namespace chaplygin {
 
 /// An output file could not be written. The message names the file and the reason.
 class IoError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

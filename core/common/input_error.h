@@ -8,12 +8,13 @@ namespace chaplygin {
 /// (an option, a parameter, a character position, an x or u on the path); what() is the full
 /// message "where: what".
 class InputError : public std::runtime_error {
-public:
+  public:
     InputError(std::string where, const std::string& what)
-        : std::runtime_error(where.empty() ? what : where + ": " + what), m_where(std::move(where)) {}
+        : std::runtime_error(where.empty() ? what : where + ": " + what),
+          m_where(std::move(where)) {}
     const std::string& where() const { return m_where; }
 
-private:
+  private:
     std::string m_where;
 };
 

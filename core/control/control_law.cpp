@@ -15,7 +15,9 @@ SpeedMode speedModeFromName(const std::string& name) {
     throw InputError("--mode", "unknown mode '" + name + "' (use energy or speed)");
 }
 
-std::string speedModeName(SpeedMode mode) { return mode == SpeedMode::Energy ? "energy" : "speed"; }
+std::string speedModeName(SpeedMode mode) {
+    return mode == SpeedMode::Energy ? "energy" : "speed";
+}
 
 namespace {
 
@@ -37,7 +39,8 @@ ControlState controlOnCurve(const ControlParams& p, double kappa, double dkappa,
     ControlState c;
     const double bk = b * kappa;
     const double root = std::sqrt(1 + bk * bk);
-    // tan(Psi) = rho/b, eq. (45); written as Psi = atan2(1, b kappa) in (0, pi), finite at inflections
+    // tan(Psi) = rho/b, eq. (45); written as Psi = atan2(1, b kappa) in (0, pi), finite at
+    // inflections
     c.psi = std::atan2(1.0, bk);
     if (p.mode == SpeedMode::Energy) {
         // sdot = v_T sin(Psi) (34), phidot = (v_T/b) cos(Psi) = kappa sdot (35)

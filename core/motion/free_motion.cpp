@@ -11,8 +11,12 @@ namespace {
 constexpr double kTailTau = 40.0; // sech(40) < 1e-17
 
 // the Gudermannian gd(tau) = 2 atan(tanh(tau/2)) = Psi for the free sleigh
-double gd(double tau) { return 2 * std::atan(std::tanh(0.5 * tau)); }
-double sech(double tau) { return 1.0 / std::cosh(tau); }
+double gd(double tau) {
+    return 2 * std::atan(std::tanh(0.5 * tau));
+}
+double sech(double tau) {
+    return 1.0 / std::cosh(tau);
+}
 
 } // namespace
 
@@ -107,7 +111,8 @@ FreeState FreeMotion::at(double t) const {
         z = z0 + m_init.sdot * t * dir0;
         break;
     case Case::Circle: {
-        // z = z0 + sdot/(i omega) (e^{i omega t} - 1) e^{i phi0}, with e^{i th} - 1 = -2 sin^2(th/2) + i sin th
+        // z = z0 + sdot/(i omega) (e^{i omega t} - 1) e^{i phi0}, with e^{i th} - 1 = -2
+        // sin^2(th/2) + i sin th
         double th = m_init.phidot * t, s = std::sin(0.5 * th);
         std::complex<double> em1(-2 * s * s, std::sin(th));
         z = z0 + m_init.sdot / m_init.phidot * std::complex<double>(0, -1) * em1 * dir0;
@@ -117,7 +122,8 @@ FreeState FreeMotion::at(double t) const {
         double span = m_panelT.back();
         if (t <= span) {
             auto it = std::upper_bound(m_panelT.begin(), m_panelT.end(), t);
-            int k = std::clamp(static_cast<int>(it - m_panelT.begin()) - 1, 0, static_cast<int>(m_panelT.size()) - 2);
+            int k = std::clamp(static_cast<int>(it - m_panelT.begin()) - 1, 0,
+                               static_cast<int>(m_panelT.size()) - 2);
             z = m_panelZ[k] + panelIntegral(m_panelT[k], t);
         } else if (span >= m_tail) {
             // beyond the tail the heading is constant and |sdot| = V (to 1e-17)
@@ -138,7 +144,8 @@ FreeState FreeMotion::at(double t) const {
             if (t > m_tail) {
                 double sdot, phidot, phi;
                 velocities(m_tail, &sdot, &phidot, &phi);
-                z += m_v * (m_k > 0 ? 1.0 : -1.0) * (t - m_tail) * std::complex<double>(std::cos(phi), std::sin(phi));
+                z += m_v * (m_k > 0 ? 1.0 : -1.0) * (t - m_tail) *
+                     std::complex<double>(std::cos(phi), std::sin(phi));
             }
         }
         break;
@@ -164,7 +171,8 @@ std::string FreeMotion::velocityModel() const {
 }
 
 std::string FreeMotion::positionModel() const {
-    return m_case == Case::General ? "quadrature (Gauss-Legendre panels, straight-line tail)" : "closed form";
+    return m_case == Case::General ? "quadrature (Gauss-Legendre panels, straight-line tail)"
+                                   : "closed form";
 }
 
 } // namespace chaplygin

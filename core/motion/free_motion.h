@@ -25,7 +25,7 @@ struct FreeState {
 /// both time scales (1/k and b/V), so it is exact to rounding; past |kt + c| > 40 the heading is
 /// constant to 1e-17 and the body moves on a straight line, also in closed form.
 class FreeMotion {
-public:
+  public:
     FreeMotion(const DerivedSystem& system, const FreeInitial& initial, double horizon);
     FreeState at(double t) const;
     double horizon() const { return m_horizon; }
@@ -33,7 +33,7 @@ public:
     std::string velocityModel() const;
     std::string positionModel() const;
 
-private:
+  private:
     enum class Case { Rest, Line, Circle, General };
     void velocities(double t, double* sdot, double* phidot, double* phi) const;
     std::complex<double> panelIntegral(double t0, double t1) const;

@@ -11,7 +11,8 @@ TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
     : m_path(std::move(path)), m_params(params) {
     const char* option = params.mode == SpeedMode::Energy ? "--vT" : "--vs";
     if (!std::isfinite(params.speed) || !(params.speed > 0))
-        throw InputError(option, "the speed must be a finite number > 0, got " + formatNumber(params.speed));
+        throw InputError(option, "the speed must be a finite number > 0, got " +
+                                     formatNumber(params.speed));
     const auto& pieces = m_path->pieces();
     m_pieceStart.assign(1, 0.0);
     m_nodeTimes.resize(pieces.size());
@@ -20,11 +21,13 @@ TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
         double t0 = m_pieceStart.back();
         if (piece.kind == PathPiece::Kind::Pivot) {
             if (params.mode == SpeedMode::Speed)
-                throw InputError("corner at (" + formatNumber(piece.x) + ", " + formatNumber(piece.y) + ")",
-                                 "constant-speed mode cannot turn a corner (the kinetic energy would be "
-                                 "infinite); use --mode energy or --corners smooth");
+                throw InputError(
+                    "corner at (" + formatNumber(piece.x) + ", " + formatNumber(piece.y) + ")",
+                    "constant-speed mode cannot turn a corner (the kinetic energy would be "
+                    "infinite); use --mode energy or --corners smooth");
             // pivot about P: |phidot| = v_T/b, so it takes b |dphi|/v_T (sec. 2.8)
-            m_pieceStart.push_back(t0 + params.system.b * std::fabs(piece.phiTo - piece.phiFrom) / params.speed);
+            m_pieceStart.push_back(t0 + params.system.b * std::fabs(piece.phiTo - piece.phiFrom) /
+                                            params.speed);
             continue;
         }
         const PathTable& table = *piece.table;
@@ -86,7 +89,8 @@ PathLocation TimeLaw::locate(double t) const {
     const PathTable& table = *pp.table;
     const std::vector<double>& times = m_nodeTimes[piece];
     auto nt = std::upper_bound(times.begin(), times.end(), t);
-    int k = std::clamp(static_cast<int>(nt - times.begin()) - 1, 0, static_cast<int>(table.panels().size()) - 1);
+    int k = std::clamp(static_cast<int>(nt - times.begin()) - 1, 0,
+                       static_cast<int>(table.panels().size()) - 1);
     const PathNode &lo = table.nodes()[k], &hi = table.nodes()[k + 1];
     if (t == times[k] || t == times[k + 1]) {
         loc.u = t == times[k] ? lo.u : hi.u;

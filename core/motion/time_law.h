@@ -20,7 +20,7 @@ struct PathLocation {
 /// table's Gauss nodes; pivots take b |dphi|/v_T. Speed mode: t = s/v_s (App. C).
 /// Building it never re-tabulates the path: it costs one pass over the stored nodes.
 class TimeLaw {
-public:
+  public:
     /// Throws InputError when the mode cannot follow the path (a corner in Speed mode) or the
     /// speed is not a finite positive number.
     TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params);
@@ -36,7 +36,7 @@ public:
     /// True when every piece's time law is closed form (lines, circles, pivots, Speed mode).
     bool closedForm() const { return m_closedForm; }
 
-private:
+  private:
     double rate(double speed, double kappa) const; // dt/du
     std::shared_ptr<const Path> m_path;
     ControlParams m_params;

@@ -14,7 +14,7 @@ struct CurvePoint {
 
 /// A parametrised plane curve on [u0, u1], traversed in the direction of increasing u.
 class Curve {
-public:
+  public:
     virtual ~Curve() = default;
     virtual CurvePoint eval(double u) const = 0;
     virtual double u0() const = 0;
@@ -27,9 +27,9 @@ public:
 
 /// Local geometry derived from a CurvePoint.
 struct CurveGeometry {
-    double speed = 0;  ///< ds/du = |r'(u)|
-    double kappa = 0;  ///< signed curvature (x'y'' - y'x'')/|r'|^3, left turn > 0
-    double dkappa = 0; ///< d kappa / ds
+    double speed = 0;   ///< ds/du = |r'(u)|
+    double kappa = 0;   ///< signed curvature (x'y'' - y'x'')/|r'|^3, left turn > 0
+    double dkappa = 0;  ///< d kappa / ds
     double heading = 0; ///< atan2(y', x') in (-pi, pi]
 };
 CurveGeometry geometryOf(const CurvePoint& p);

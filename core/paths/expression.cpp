@@ -9,7 +9,6 @@
 #include <cctype>
 #include <cmath>
 #include <mutex>
-#include <regex>
 #include <set>
 #include <sstream>
 
@@ -20,8 +19,8 @@ constexpr std::size_t kMaxLength = 4000;
 constexpr int kMaxDepth = 100;
 constexpr std::size_t kMaxDerivativeLength = 15000; // muparser compiles up to 20000
 
-const std::set<std::string> kFunctions = {"sin",  "cos",  "tan",  "asin", "acos", "atan", "sinh",
-                                          "cosh", "tanh", "exp",  "sqrt", "abs",  "ln",   "log"};
+const std::set<std::string> kFunctions = {"sin",  "cos",  "tan", "asin", "acos", "atan", "sinh",
+                                          "cosh", "tanh", "exp", "sqrt", "abs",  "ln",   "log"};
 
 std::string at(const std::string& label, std::size_t index) {
     return label + ", position " + std::to_string(index + 1);
@@ -39,7 +38,8 @@ void checkCharactersAndNames(const std::string& text, const std::string& variabl
     for (std::size_t i = 0; i < text.size();) {
         unsigned char c = static_cast<unsigned char>(text[i]);
         if (c >= 0x80)
-            throw InputError(at(label, i), "non-ASCII character; use the ASCII names (pi, sqrt, ...)");
+            throw InputError(at(label, i),
+                             "non-ASCII character; use the ASCII names (pi, sqrt, ...)");
         if (std::isspace(c)) {
             ++i;
             continue;
@@ -47,11 +47,13 @@ void checkCharactersAndNames(const std::string& text, const std::string& variabl
         any = true;
         if (std::isalpha(c) || c == '_') {
             std::size_t j = i;
-            while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_'))
+            while (j < text.size() &&
+                   (std::isalnum(static_cast<unsigned char>(text[j])) || text[j] == '_'))
                 ++j;
             std::string name = text.substr(i, j - i);
             if (name != variable && name != "pi" && name != "e" && !kFunctions.count(name)) {
-                std::string hint = name.size() == 1 ? " (the variable here is " + variable + ")" : "";
+                std::string hint =
+                    name.size() == 1 ? " (the variable here is " + variable + ")" : "";
                 throw InputError(at(label, i), "unknown name '" + name + "'" + hint);
             }
             i = j;
@@ -60,7 +62,8 @@ void checkCharactersAndNames(const std::string& text, const std::string& variabl
         if (std::isdigit(c) || c == '.') {
             // a number, with an optional exponent such as 1e-3
             std::size_t j = i;
-            while (j < text.size() && (std::isdigit(static_cast<unsigned char>(text[j])) || text[j] == '.'))
+            while (j < text.size() &&
+                   (std::isdigit(static_cast<unsigned char>(text[j])) || text[j] == '.'))
                 ++j;
             if (j < text.size() && (text[j] == 'e' || text[j] == 'E') && j + 1 < text.size() &&
                 (std::isdigit(static_cast<unsigned char>(text[j + 1])) ||
@@ -75,7 +78,8 @@ void checkCharactersAndNames(const std::string& text, const std::string& variabl
         }
         if (c == '(') {
             if (++depth > kMaxDepth)
-                throw InputError(at(label, i), "parentheses nested deeper than " + std::to_string(kMaxDepth));
+                throw InputError(at(label, i),
+                                 "parentheses nested deeper than " + std::to_string(kMaxDepth));
         } else if (c == ')') {
             if (--depth < 0)
                 throw InputError(at(label, i), "')' without a matching '('");
@@ -99,7 +103,8 @@ std::string toGinacSyntax(const std::string& text) {
         if (std::isdigit(static_cast<unsigned char>(text[i])) || text[i] == '.') {
             std::size_t j = i;
             bool fractional = false;
-            while (j < text.size() && (std::isdigit(static_cast<unsigned char>(text[j])) || text[j] == '.')) {
+            while (j < text.size() &&
+                   (std::isdigit(static_cast<unsigned char>(text[j])) || text[j] == '.')) {
                 fractional = fractional || text[j] == '.';
                 ++j;
             }
@@ -114,7 +119,8 @@ std::string toGinacSyntax(const std::string& text) {
             i = j;
             // an exponent (1e-3) is copied as it is: the mantissa is already floating point
             if (i < text.size() && (text[i] == 'e' || text[i] == 'E') && i + 1 < text.size() &&
-                (std::isdigit(static_cast<unsigned char>(text[i + 1])) || text[i + 1] == '-' || text[i + 1] == '+')) {
+                (std::isdigit(static_cast<unsigned char>(text[i + 1])) || text[i + 1] == '-' ||
+                 text[i + 1] == '+')) {
                 out += text[i++];
                 out += text[i++];
                 while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])))
@@ -132,6 +138,18 @@ std::string toGinacSyntax(const std::string& text) {
         }
     }
     return out;
+}
+
+// GiNaC prints floats beyond double range as 1.0E400: three or more exponent digits
+bool hasHugeExponent(const std::string& printed) {
+    for (std::size_t i = printed.find('E'); i != std::string::npos; i = printed.find('E', i + 1)) {
+        std::size_t j = i + 1;
+        while (j < printed.size() && std::isdigit(static_cast<unsigned char>(printed[j])))
+            ++j;
+        if (j - i - 1 >= 3)
+            return true;
+    }
+    return false;
 }
 
 void defineCommon(mu::Parser& p) {
@@ -192,9 +210,10 @@ Expression Expression::compile(const std::string& text, const std::string& varia
         std::ostringstream printed;
         printed << f;
         if (printed.str().size() > kMaxDerivativeLength)
-            throw InputError(label, "too complex to differentiate: derivative " + std::to_string(k) + " has " +
-                                        std::to_string(printed.str().size()) + " characters (the limit is " +
-                                        std::to_string(kMaxDerivativeLength) + ")");
+            throw InputError(
+                label, "too complex to differentiate: derivative " + std::to_string(k) + " has " +
+                           std::to_string(printed.str().size()) + " characters (the limit is " +
+                           std::to_string(kMaxDerivativeLength) + ")");
         mu::Parser& pk = impl->parsers[k];
         defineCommon(pk);
         pk.DefineVar(variable, &impl->var);
@@ -202,9 +221,10 @@ Expression Expression::compile(const std::string& text, const std::string& varia
             pk.SetExpr(printed.str());
             pk.Eval();
         } catch (const mu::Parser::exception_type&) {
-            if (std::regex_search(printed.str(), std::regex("E[0-9]{3,}")))
+            if (hasHugeExponent(printed.str()))
                 throw InputError(label, "a constant overflows double precision (beyond 1.8e308)");
-            throw InputError(label, "derivative " + std::to_string(k) + " is not a real expression (" +
+            throw InputError(label, "derivative " + std::to_string(k) +
+                                        " is not a real expression (" +
                                         printed.str().substr(0, 80) + ")");
         }
     }
@@ -230,6 +250,8 @@ Jet3 Expression::jet(double at) const {
     return j;
 }
 
-const std::string& Expression::text() const { return m_impl->text; }
+const std::string& Expression::text() const {
+    return m_impl->text;
+}
 
 } // namespace chaplygin

@@ -14,7 +14,7 @@ struct Jet3 {
 /// Values come from muparser bytecode; the derivatives are differentiated symbolically by GiNaC
 /// once, then compiled to muparser as well. Thread-safe evaluation; cheap to copy (shared).
 class Expression {
-public:
+  public:
     /// Throws InputError whose where() is "<label>, position N" (1-based character position).
     static Expression compile(const std::string& text, const std::string& variable,
                               const std::string& label);
@@ -23,7 +23,7 @@ public:
     Jet3 jet(double at) const;
     const std::string& text() const;
 
-private:
+  private:
     struct Impl;
     std::shared_ptr<const Impl> m_impl;
 };

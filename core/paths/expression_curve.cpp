@@ -4,7 +4,8 @@
 
 namespace chaplygin {
 
-GraphCurve::GraphCurve(Expression y, double x0, double x1) : m_y(std::move(y)), m_x0(x0), m_x1(x1) {}
+GraphCurve::GraphCurve(Expression y, double x0, double x1)
+    : m_y(std::move(y)), m_x0(x0), m_x1(x1) {}
 
 CurvePoint GraphCurve::eval(double u) const {
     Jet3 f = m_y.jet(u);

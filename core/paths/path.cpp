@@ -12,14 +12,17 @@ namespace {
 
 constexpr double kStraight = 1e-12; // rad: smaller turns at a vertex are no corner
 
-double wrapAngle(double d) { return d - 2 * std::numbers::pi * std::round(d / (2 * std::numbers::pi)); }
+double wrapAngle(double d) {
+    return d - 2 * std::numbers::pi * std::round(d / (2 * std::numbers::pi));
+}
 
 std::vector<std::pair<double, double>> distinctPoints(const PathSource& source) {
     std::vector<std::pair<double, double>> pts;
     for (std::size_t i = 0; i < source.points.size(); ++i) {
         auto [x, y] = source.points[i];
         if (!std::isfinite(x) || !std::isfinite(y))
-            throw InputError("point " + std::to_string(i + 1), "coordinates must be finite numbers");
+            throw InputError("point " + std::to_string(i + 1),
+                             "coordinates must be finite numbers");
         if (!pts.empty() && x == pts.back().first && y == pts.back().second)
             continue;
         pts.emplace_back(x, y);
@@ -106,7 +109,8 @@ std::shared_ptr<const Path> buildPath(const PathSource& source) {
     switch (source.kind) {
     case PathKind::Graph: {
         Expression y = Expression::compile(source.y, "x", "y(x)");
-        return std::make_shared<const Path>(singleCurve(std::make_shared<GraphCurve>(y, source.from, source.to)));
+        return std::make_shared<const Path>(
+            singleCurve(std::make_shared<GraphCurve>(y, source.from, source.to)));
     }
     case PathKind::Parametric: {
         Expression x = Expression::compile(source.xOfU, "u", "x(u)");
@@ -119,13 +123,15 @@ std::shared_ptr<const Path> buildPath(const PathSource& source) {
         if (source.corners == CornerMode::Pivot || pts.size() == 2)
             return std::make_shared<const Path>(pivotPolyline(pts));
         if (!(source.smoothing >= 0) || !std::isfinite(source.smoothing))
-            throw InputError("smoothing", "must be a finite number >= 0, got " + formatNumber(source.smoothing));
+            throw InputError("smoothing",
+                             "must be a finite number >= 0, got " + formatNumber(source.smoothing));
         std::vector<double> xs, ys;
         for (auto [x, y] : pts) {
             xs.push_back(x);
             ys.push_back(y);
         }
-        return std::make_shared<const Path>(singleCurve(std::make_shared<SplineCurve>(xs, ys, source.smoothing)));
+        return std::make_shared<const Path>(
+            singleCurve(std::make_shared<SplineCurve>(xs, ys, source.smoothing)));
     }
     }
     throw InputError("path", "unknown path kind");
@@ -139,6 +145,8 @@ CornerMode cornerModeFromName(const std::string& name) {
     throw InputError("--corners", "unknown corner mode '" + name + "' (use pivot or smooth)");
 }
 
-std::string cornerModeName(CornerMode mode) { return mode == CornerMode::Pivot ? "pivot" : "smooth"; }
+std::string cornerModeName(CornerMode mode) {
+    return mode == CornerMode::Pivot ? "pivot" : "smooth";
+}
 
 } // namespace chaplygin

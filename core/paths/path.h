@@ -12,15 +12,15 @@ namespace chaplygin {
 struct PathPiece {
     enum class Kind { Curve, Pivot };
     Kind kind = Kind::Curve;
-    std::shared_ptr<const PathTable> table; ///< Curve only
-    double phiOffset = 0;                   ///< Curve: 2 pi n added to the table's phi
+    std::shared_ptr<const PathTable> table;      ///< Curve only
+    double phiOffset = 0;                        ///< Curve: 2 pi n added to the table's phi
     double x = 0, y = 0, phiFrom = 0, phiTo = 0; ///< Pivot only
-    double s0 = 0;                          ///< arc length at the start of the piece
+    double s0 = 0;                               ///< arc length at the start of the piece
 };
 
 /// A path as the core sees it: pieces in order of traversal, built once per path change.
 class Path {
-public:
+  public:
     explicit Path(std::vector<PathPiece> pieces);
     const std::vector<PathPiece>& pieces() const { return m_pieces; }
     double length() const { return m_length; }
@@ -30,7 +30,7 @@ public:
     /// Number of pivot corners.
     int pivotCount() const;
 
-private:
+  private:
     std::vector<PathPiece> m_pieces;
     double m_length = 0;
 };

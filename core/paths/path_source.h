@@ -11,12 +11,13 @@ enum class CornerMode { Pivot, Smooth };
 /// What the user gave for the path, before any tabulation. Plain data with defaults.
 struct PathSource {
     PathKind kind = PathKind::Graph;
-    std::string y = "-sin(x)";  ///< graph y = f(x)
-    std::string xOfU, yOfU;     ///< parametric x(u), y(u)
-    double from = 0, to = 12.566370614359172; ///< x-range or u-range
+    std::string y = "-sin(x)";                     ///< graph y = f(x)
+    std::string xOfU, yOfU;                        ///< parametric x(u), y(u)
+    double from = 0, to = 12.566370614359172;      ///< x-range or u-range
     std::vector<std::pair<double, double>> points; ///< polyline vertices, in order
     CornerMode corners = CornerMode::Pivot;
-    double smoothing = 10.0; ///< smoothed polylines: spline bandwidth in point spacings (0 interpolates)
+    double smoothing =
+        10.0; ///< smoothed polylines: spline bandwidth in point spacings (0 interpolates)
 
     bool operator==(const PathSource&) const = default;
 };

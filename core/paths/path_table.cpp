@@ -18,24 +18,29 @@ constexpr double kMaxTurnPerPanel = 1.0;  // rad; keeps the unwrapping of phi un
 // it for gyration radii up to this many times the path's size
 constexpr double kStiffScale = 100.0;
 
-std::string place(const Curve& c, double u) { return "path at " + c.parameterName() + " = " + formatNumber(u); }
+std::string place(const Curve& c, double u) {
+    return "path at " + c.parameterName() + " = " + formatNumber(u);
+}
 
 bool finite(const CurvePoint& p) {
-    return std::isfinite(p.dx) && std::isfinite(p.dy) && std::isfinite(p.ddx) && std::isfinite(p.ddy) &&
-           std::isfinite(p.dddx) && std::isfinite(p.dddy);
+    return std::isfinite(p.dx) && std::isfinite(p.dy) && std::isfinite(p.ddx) &&
+           std::isfinite(p.ddy) && std::isfinite(p.dddx) && std::isfinite(p.dddy);
 }
 
 CurveGeometry checkedGeometry(const Curve& c, double u, CurvePoint* out = nullptr) {
     CurvePoint p = c.eval(u);
     if (!std::isfinite(p.x) || !std::isfinite(p.y))
-        throw InputError(place(c, u), "the path is not defined here (division by zero, log of 0 or of a "
-                                      "negative number, sqrt of a negative number, or overflow)");
+        throw InputError(place(c, u),
+                         "the path is not defined here (division by zero, log of 0 or of a "
+                         "negative number, sqrt of a negative number, or overflow)");
     if (!finite(p))
-        throw InputError(place(c, u), "the path has no finite tangent or curvature here (a vertical "
-                                      "tangent, a kink, or a singular point)");
+        throw InputError(place(c, u),
+                         "the path has no finite tangent or curvature here (a vertical "
+                         "tangent, a kink, or a singular point)");
     if (p.dx == 0 && p.dy == 0)
-        throw InputError(place(c, u), "the path stops here (x' = y' = 0): a cusp or a stationary point "
-                                      "has no direction to follow");
+        throw InputError(place(c, u),
+                         "the path stops here (x' = y' = 0): a cusp or a stationary point "
+                         "has no direction to follow");
     CurveGeometry g = geometryOf(p);
     if (!std::isfinite(g.kappa) || !std::isfinite(g.dkappa))
         throw InputError(place(c, u), "the curvature overflows here");
@@ -47,7 +52,7 @@ CurveGeometry checkedGeometry(const Curve& c, double u, CurvePoint* out = nullpt
 struct PanelData {
     double a = 0, b = 0;
     double length = 0, turn = 0, absTurn = 0; // \int ds, \int kappa ds, \int |kappa| ds
-    double weighted = 0, stiff = 0;           // time-law proxies for b ~ the path's size and b >> it
+    double weighted = 0, stiff = 0; // time-law proxies for b ~ the path's size and b >> it
     PathTable::GaussPanel gauss;
 };
 
@@ -88,15 +93,17 @@ struct Refiner {
         bool ok = close(parent.length, left.length + right.length, lengthRef, w) &&
                   close(parent.weighted, left.weighted + right.weighted, weightedRef, w) &&
                   close(parent.stiff, left.stiff + right.stiff, stiffRef, w) &&
-                  close(parent.turn, left.turn + right.turn, std::max(1.0, weightedRef / lengthScale), w) &&
+                  close(parent.turn, left.turn + right.turn,
+                        std::max(1.0, weightedRef / lengthScale), w) &&
                   left.absTurn <= kMaxTurnPerPanel && right.absTurn <= kMaxTurnPerPanel;
         if (ok) {
             leaves.push_back(left);
             leaves.push_back(right);
         } else {
             if (depth >= kMaxDepth || leaves.size() > kMaxPanels)
-                throw InputError(place(curve, mid), "the curvature varies too fast here to be tabulated "
-                                                    "(a singular point or a near-corner)");
+                throw InputError(place(curve, mid),
+                                 "the curvature varies too fast here to be tabulated "
+                                 "(a singular point or a near-corner)");
             refine(left, depth + 1);
             refine(right, depth + 1);
         }
@@ -109,9 +116,10 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve) : m_curve(std::move(cur
     const Curve& c = *m_curve;
     double u0 = c.u0(), u1 = c.u1();
     if (!std::isfinite(u0) || !std::isfinite(u1) || !(u0 < u1))
-        throw InputError(c.parameterName() + "-range", "needs two finite numbers " + c.parameterName() +
-                                                           "0 < " + c.parameterName() + "1, got " +
-                                                           formatNumber(u0) + ", " + formatNumber(u1));
+        throw InputError(c.parameterName() + "-range",
+                         "needs two finite numbers " + c.parameterName() + "0 < " +
+                             c.parameterName() + "1, got " + formatNumber(u0) + ", " +
+                             formatNumber(u1));
 
     // a coarse look at the whole curve sets the scales of the refinement
     double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
@@ -180,7 +188,8 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve) : m_curve(std::move(cur
     const PathNode& first = m_nodes.front();
     double kappaTol = 1e-12 * std::max(std::fabs(first.kappa), 1.0 / lengthScale);
     auto same = [&](double speed, double kappa) {
-        return std::fabs(speed - first.speed) <= 1e-12 * first.speed && std::fabs(kappa - first.kappa) <= kappaTol;
+        return std::fabs(speed - first.speed) <= 1e-12 * first.speed &&
+               std::fabs(kappa - first.kappa) <= kappaTol;
     };
     m_uniform = true;
     for (std::size_t k = 0; k < m_panels.size() && m_uniform; ++k) {
@@ -240,7 +249,8 @@ double PathTable::uAtArcLength(double s) const {
         return m_nodes.back().u;
     auto it = std::upper_bound(m_nodes.begin(), m_nodes.end(), s,
                                [](double v, const PathNode& n) { return v < n.s; });
-    int k = std::clamp(static_cast<int>(it - m_nodes.begin()) - 1, 0, static_cast<int>(m_panels.size()) - 1);
+    int k = std::clamp(static_cast<int>(it - m_nodes.begin()) - 1, 0,
+                       static_cast<int>(m_panels.size()) - 1);
     const PathNode &lo = m_nodes[k], &hi = m_nodes[k + 1];
     if (m_uniform)
         return lo.u + (s - lo.s) / lo.speed;

@@ -19,7 +19,7 @@ struct PathNode {
 /// panel ends are never interpolated: at(u) evaluates the curve exactly and integrates the
 /// arc length over the partial panel with the same Gauss rule.
 class PathTable {
-public:
+  public:
     /// Tabulates; throws InputError naming the x or u where the curve is undefined,
     /// has no finite tangent or curvature, or stops (r' = 0).
     explicit PathTable(std::shared_ptr<const Curve> curve);
@@ -49,7 +49,7 @@ public:
     /// The parameter u at arc length s (Newton on s(u) with ds/du exact).
     double uAtArcLength(double s) const;
 
-private:
+  private:
     std::shared_ptr<const Curve> m_curve;
     std::vector<PathNode> m_nodes;
     std::vector<GaussPanel> m_panels;

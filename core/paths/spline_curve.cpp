@@ -10,7 +10,8 @@
 
 namespace chaplygin {
 
-SplineCurve::SplineCurve(const std::vector<double>& x, const std::vector<double>& y, double bandwidth) {
+SplineCurve::SplineCurve(const std::vector<double>& x, const std::vector<double>& y,
+                         double bandwidth) {
     if (x.size() != y.size() || x.size() < 3)
         throw InputError("points", "a smoothed path needs at least 3 distinct points");
     m_knots.resize(x.size());
@@ -74,7 +75,8 @@ void SplineCurve::evalCoordinate(const Coordinate& c, int i, double u, double* v
 
 CurvePoint SplineCurve::eval(double u) const {
     auto it = std::upper_bound(m_knots.begin(), m_knots.end(), u);
-    int i = std::clamp(static_cast<int>(it - m_knots.begin()) - 1, 0, static_cast<int>(m_knots.size()) - 2);
+    int i = std::clamp(static_cast<int>(it - m_knots.begin()) - 1, 0,
+                       static_cast<int>(m_knots.size()) - 2);
     CurvePoint p;
     evalCoordinate(m_x, i, u, &p.x, &p.dx, &p.ddx, &p.dddx);
     evalCoordinate(m_y, i, u, &p.y, &p.dy, &p.ddy, &p.dddy);

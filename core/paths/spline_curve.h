@@ -11,7 +11,7 @@ namespace chaplygin {
 /// alpha = (w h)^4 / h for mean point spacing h and a bandwidth of w spacings, so a shaky line
 /// gets a smooth, C2 curve whose curvature is continuous. w = 0 interpolates.
 class SplineCurve final : public Curve {
-public:
+  public:
     SplineCurve(const std::vector<double>& x, const std::vector<double>& y, double bandwidth);
     CurvePoint eval(double u) const override;
     double u0() const override { return m_knots.front(); }
@@ -19,7 +19,7 @@ public:
     std::string parameterName() const override { return "u"; }
     std::vector<double> breakpoints() const override { return m_knots; }
 
-private:
+  private:
     struct Coordinate {
         std::vector<double> g;     // values at the knots
         std::vector<double> gamma; // second derivatives at the knots (natural: 0 at the ends)

@@ -8,10 +8,27 @@
 namespace chaplygin {
 
 const std::vector<std::string>& csvColumns() {
-    static const std::vector<std::string> columns = {
-        "t",      "s",      "x",         "y",      "phi",    "psi",    "chi",         "lambda",
-        "energy", "free_x", "free_y",    "free_phi", "free_sdot", "free_phidot", "free_energy",
-        "sdot",   "phidot", "psidot",    "kappa",  "force_axial", "force_lateral", "control_couple"};
+    static const std::vector<std::string> columns = {"t",
+                                                     "s",
+                                                     "x",
+                                                     "y",
+                                                     "phi",
+                                                     "psi",
+                                                     "chi",
+                                                     "lambda",
+                                                     "energy",
+                                                     "free_x",
+                                                     "free_y",
+                                                     "free_phi",
+                                                     "free_sdot",
+                                                     "free_phidot",
+                                                     "free_energy",
+                                                     "sdot",
+                                                     "phidot",
+                                                     "psidot",
+                                                     "force_axial",
+                                                     "force_lateral",
+                                                     "control_couple"};
     return columns;
 }
 
@@ -24,16 +41,14 @@ std::string formatCsv(const std::vector<MotionSample>& rows) {
     for (const MotionSample& m : rows) {
         const ControlState& c = m.control;
         const FreeState& f = m.free;
-        // pivots have infinite curvature; the column reports 0 there and psi tells the turn
-        double kappa = std::isfinite(m.kappa) ? m.kappa : 0.0;
-        const std::array<double, 22> values = {m.t,      m.s,       m.x,         m.y,       m.phi,        c.psi,
-                                               c.chi,    c.lambda,  c.energy,    f.x,       f.y,          f.phi,
-                                               f.sdot,   f.phidot,  f.energy,    c.sdot,    c.phidot,     c.psidot,
-                                               kappa,    c.forceAxial, c.forceLateral, c.controlCouple};
+        const std::array<double, 21> values = {
+            m.t,      m.s,      m.x,      m.y,      m.phi,        c.psi,          c.chi,
+            c.lambda, c.energy, f.x,      f.y,      f.phi,        f.sdot,         f.phidot,
+            f.energy, c.sdot,   c.phidot, c.psidot, c.forceAxial, c.forceLateral, c.controlCouple};
         for (std::size_t i = 0; i < values.size(); ++i) {
             if (!std::isfinite(values[i]))
-                throw std::runtime_error("internal error: column " + columns[i] + " is not finite at t = " +
-                                         std::to_string(m.t));
+                throw std::runtime_error("internal error: column " + columns[i] +
+                                         " is not finite at t = " + std::to_string(m.t));
             char buf[32];
             auto res = std::to_chars(buf, buf + sizeof buf, values[i]);
             if (i)

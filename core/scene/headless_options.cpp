@@ -93,10 +93,12 @@ std::map<std::string, double> defaultSystemParams(SystemKind kind) {
     switch (kind) {
     case SystemKind::Sleigh:
         return {{"m", 1.0}, {"a", 0.5}, {"b", 1.0}};
-    case SystemKind::Disk: // uniform disk: I1 = m R^2/2 about the axle, I2 = m R^2/4 about a diameter
+    case SystemKind::Disk: // uniform disk: I1 = m R^2/2 about the axle, I2 = m R^2/4 about a
+                           // diameter
         return {{"m", 1.0}, {"R", 0.5}, {"I1", 0.125}, {"I2", 0.0625}};
     case SystemKind::Carriage:
-        return {{"R", 0.3}, {"a", 0.2}, {"m", 0.5}, {"I1", 0.0225}, {"I2", 0.01125}, {"M", 2.0}, {"I", 0.2}};
+        return {{"R", 0.3},      {"a", 0.2}, {"m", 0.5}, {"I1", 0.0225},
+                {"I2", 0.01125}, {"M", 2.0}, {"I", 0.2}};
     }
     return {};
 }
@@ -116,7 +118,8 @@ HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args) {
             if (i + 1 >= args.size())
                 throw InputError(opt, "needs a value");
             if (args[i + 1].rfind("--", 0) == 0)
-                throw InputError(opt, "needs a value (the next word is the option " + args[i + 1] + ")");
+                throw InputError(opt,
+                                 "needs a value (the next word is the option " + args[i + 1] + ")");
             return args[++i];
         };
         auto once = [&]() {
@@ -230,11 +233,13 @@ HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args) {
             if (!xRange)
                 throw InputError("--x-range", "a graph path y=EXPR needs --x-range X0,X1");
             if (uRange)
-                throw InputError("--u-range", "belongs to a parametric path x=...;y=...; use --x-range");
+                throw InputError("--u-range",
+                                 "belongs to a parametric path x=...;y=...; use --x-range");
             std::tie(s.path.from, s.path.to) = *xRange;
         } else {
             if (!uRange)
-                throw InputError("--u-range", "a parametric path x=...;y=... needs --u-range U0,U1");
+                throw InputError("--u-range",
+                                 "a parametric path x=...;y=... needs --u-range U0,U1");
             if (xRange)
                 throw InputError("--x-range", "belongs to a graph path y=...; use --u-range");
             std::tie(s.path.from, s.path.to) = *uRange;
@@ -244,7 +249,8 @@ HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args) {
         s.path.kind = PathKind::Polyline;
         s.path.points = parsePoints(*points);
     } else {
-        throw InputError("path", "no path: give --preset, --scene, --path or --points (see --help)");
+        throw InputError("path",
+                         "no path: give --preset, --scene, --path or --points (see --help)");
     }
     if (corners) {
         if (s.path.kind != PathKind::Polyline)

@@ -11,12 +11,12 @@ namespace chaplygin {
 /// Everything that defines a scene: plain data with defaults, saved and loaded as JSON,
 /// shared by the GUI, the CLI and the tests.
 struct Scene {
-    std::string preset;  ///< the preset it came from, or empty
+    std::string preset; ///< the preset it came from, or empty
     PathSource path;
     SystemSpec system;
     SpeedMode mode = SpeedMode::Energy;
-    double speed = 1.0;          ///< v_T (Energy) or v_s (Speed) [m/s]
-    std::optional<double> tEnd;  ///< horizon [s]; default: the time to traverse the path
+    double speed = 1.0;         ///< v_T (Energy) or v_s (Speed) [m/s]
+    std::optional<double> tEnd; ///< horizon [s]; default: the time to traverse the path
 
     bool operator==(const Scene&) const = default;
 };

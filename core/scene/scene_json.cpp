@@ -75,7 +75,8 @@ void checkShape(const std::string& text) {
     for (std::size_t i = 0; i < text.size(); ++i) {
         char c = text[i];
         if (c == '\0')
-            bad("", "the file contains a NUL byte at offset " + std::to_string(i) + " (binary data?)");
+            bad("",
+                "the file contains a NUL byte at offset " + std::to_string(i) + " (binary data?)");
         if (inString) {
             if (c == '\\')
                 ++i;
@@ -85,7 +86,8 @@ void checkShape(const std::string& text) {
             inString = true;
         } else if (c == '{' || c == '[') {
             if (++depth > kMaxNesting)
-                bad("", "nested deeper than " + std::to_string(kMaxNesting) + " levels at offset " + std::to_string(i));
+                bad("", "nested deeper than " + std::to_string(kMaxNesting) + " levels at offset " +
+                            std::to_string(i));
         } else if (c == '}' || c == ']') {
             --depth;
         }
@@ -132,7 +134,8 @@ PathSource readPath(const json& p) {
         if (auto it = p.find("smoothing"); it != p.end())
             src.smoothing = number(*it, "/path/smoothing");
     } else {
-        bad("/path/kind", "must be \"graph\", \"parametric\" or \"polyline\", got \"" + kind + "\"");
+        bad("/path/kind",
+            "must be \"graph\", \"parametric\" or \"polyline\", got \"" + kind + "\"");
     }
     return src;
 }
@@ -183,17 +186,20 @@ Scene sceneFromJson(const std::string& text) {
         std::string msg = e.what();
         auto pos = msg.find("parse error");
         throw InputError("scene file, byte " + std::to_string(e.byte),
-                         "not valid JSON (" + (pos == std::string::npos ? msg : msg.substr(pos)) + ")");
+                         "not valid JSON (" + (pos == std::string::npos ? msg : msg.substr(pos)) +
+                             ")");
     }
     object(j, "");
     if (auto it = j.find("format"); it == j.end() || !it->is_string() || *it != kFormatName)
-        bad("/format", std::string("must be \"") + kFormatName + "\" (is this a Chaplygin Lab scene?)");
+        bad("/format",
+            std::string("must be \"") + kFormatName + "\" (is this a Chaplygin Lab scene?)");
     const json& version = member(j, "", "version");
     if (!version.is_number_integer())
         bad("/version", "must be an integer");
     if (version.get<long long>() > kSceneFormatVersion)
         bad("/version", "the file is version " + std::to_string(version.get<long long>()) +
-                            "; this Chaplygin Lab reads up to version " + std::to_string(kSceneFormatVersion) +
+                            "; this Chaplygin Lab reads up to version " +
+                            std::to_string(kSceneFormatVersion) +
                             " (it was written by a newer release)");
     if (version.get<long long>() < 1)
         bad("/version", "must be >= 1");

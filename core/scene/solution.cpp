@@ -37,8 +37,10 @@ double horizonOf(const Scene& scene, double duration) {
     if (!std::isfinite(t) || !(t > 0))
         throw InputError("--t-end", "must be a finite number > 0, got " + formatNumber(t));
     if (t > duration * (1 + 1e-12))
-        throw InputError("--t-end", formatNumber(t) + " s is beyond the end of the path, which the body "
-                                    "reaches at t = " + formatNumber(duration) + " s");
+        throw InputError("--t-end", formatNumber(t) +
+                                        " s is beyond the end of the path, which the body "
+                                        "reaches at t = " +
+                                        formatNumber(duration) + " s");
     return std::min(t, duration);
 }
 
@@ -53,7 +55,8 @@ Solution Solution::compute(const Scene& scene, std::shared_ptr<const Path> path)
     return Solution(scene, std::move(path), paramsOf(scene));
 }
 
-Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path, const ControlParams& params)
+Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,
+                   const ControlParams& params)
     : m_scene(scene), m_path(std::move(path)), m_params(params), m_timeLaw(m_path, params),
       m_free(params.system, initialState(m_path, params), horizonOf(scene, m_timeLaw.duration())),
       m_tEnd(horizonOf(scene, m_timeLaw.duration())) {
@@ -90,7 +93,8 @@ void Solution::controlledAt(double t, MotionSample& out) const {
         out.s = piece.s0;
         out.x = piece.x;
         out.y = piece.y;
-        out.phi = piece.phiFrom + std::copysign(std::min(rate * loc.sincePivotStart, std::fabs(turn)), turn);
+        out.phi = piece.phiFrom +
+                  std::copysign(std::min(rate * loc.sincePivotStart, std::fabs(turn)), turn);
         out.kappa = std::copysign(INFINITY, turn);
         out.control = controlAtPivot(m_params, out.phi, turn);
         return;

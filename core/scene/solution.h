@@ -33,7 +33,7 @@ struct ModelReport {
 /// exactly on request (no interpolation of stored samples). Recomputing with new system
 /// parameters or speed reuses the tabulated path.
 class Solution {
-public:
+  public:
     /// Builds the path and solves. Throws InputError for bad input.
     static Solution compute(const Scene& scene);
     /// Solves on an already tabulated path (scene.path is taken to describe it).
@@ -55,7 +55,7 @@ public:
     /// cheapest dense series, for plots. The free motion is not filled in.
     std::vector<MotionSample> controlledAtNodes() const;
 
-private:
+  private:
     Solution(const Scene& scene, std::shared_ptr<const Path> path, const ControlParams& params);
     void controlledAt(double t, MotionSample& out) const;
 

@@ -12,7 +12,9 @@ const char* const kSleighNames[] = {"m", "a", "I", "b"};
 const char* const kDiskNames[] = {"m", "R", "I1", "I2"};
 const char* const kCarriageNames[] = {"R", "a", "m", "I1", "I2", "M", "I"};
 
-std::string where(const std::string& name) { return "parameter " + name; }
+std::string where(const std::string& name) {
+    return "parameter " + name;
+}
 
 double get(const SystemSpec& spec, const std::string& name) {
     auto it = spec.params.find(name);
@@ -46,8 +48,8 @@ void rejectUnknown(const SystemSpec& spec) {
             std::string list;
             for (int i = 0; i < n; ++i)
                 list += (i ? ", " : "") + std::string(names[i]);
-            throw InputError(where(name),
-                             "unknown for the " + systemKindName(spec.kind) + " (allowed: " + list + ")");
+            throw InputError(where(name), "unknown for the " + systemKindName(spec.kind) +
+                                              " (allowed: " + list + ")");
         }
     }
 }
@@ -66,7 +68,8 @@ DerivedSystem sleigh(const SystemSpec& spec) {
         d.b = positive(spec, "b");
         if (d.b < std::fabs(d.a))
             throw InputError(where("b"), "must be >= |a| = " + formatNumber(std::fabs(d.a)) +
-                                             " (b^2 = a^2 + I/m with I >= 0), got " + formatNumber(d.b));
+                                             " (b^2 = a^2 + I/m with I >= 0), got " +
+                                             formatNumber(d.b));
     }
     if (!(d.b > 0))
         throw InputError(where("b"), "the radius of gyration must be > 0 (a = 0 needs I > 0)");
@@ -99,10 +102,12 @@ DerivedSystem carriage(const SystemSpec& spec) {
     double j = inertia + 2 * i2 + 2 * a * a * wheel;
     d.b = std::sqrt(j / d.mass);
     if (!(d.b > 0))
-        throw InputError("parameter I", "the moment of inertia J = I + 2 I2 + 2 a^2 (m + I1/R^2) must be > 0");
+        throw InputError("parameter I",
+                         "the moment of inertia J = I + 2 I2 + 2 a^2 (m + I1/R^2) must be > 0");
     if (d.b < std::fabs(d.a))
-        throw InputError("parameter I", "b = sqrt(J/M_eff) = " + formatNumber(d.b) + " is below |a|; "
-                                         "the carriage's own inertia cannot be that small");
+        throw InputError("parameter I", "b = sqrt(J/M_eff) = " + formatNumber(d.b) +
+                                            " is below |a|; "
+                                            "the carriage's own inertia cannot be that small");
     return d;
 }
 

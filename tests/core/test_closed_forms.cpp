@@ -38,16 +38,19 @@ TEST(ClosedForms, CircleFollowsEqs89To96) {
     EXPECT_NEAR(sol.duration(), 2 * std::numbers::pi * std::sqrt(b * b + R * R) / vT, 1e-12);
     for (double t : {0.0, 0.77, 3.3, 7.9, sol.duration()}) {
         MotionSample s = sol.at(t);
-        EXPECT_NEAR(s.x, R * std::cos(omega * t), 1e-12) << t; // (93)
-        EXPECT_NEAR(s.y, R * std::sin(omega * t), 1e-12) << t; // (94)
+        EXPECT_NEAR(s.x, R * std::cos(omega * t), 1e-12) << t;          // (93)
+        EXPECT_NEAR(s.y, R * std::sin(omega * t), 1e-12) << t;          // (94)
         EXPECT_NEAR(s.s, vT * R / std::sqrt(b * b + R * R) * t, 1e-12); // (90)
         EXPECT_NEAR(s.phi, std::numbers::pi / 2 + omega * t, 1e-12);    // (87)
-        EXPECT_NEAR(s.control.psi, std::atan(R / b), 1e-14);             // (84)
-        EXPECT_NEAR(s.control.chi, std::atan(R / b) - (a / b) * (std::numbers::pi / 2 + omega * t), 1e-12); // (96)
+        EXPECT_NEAR(s.control.psi, std::atan(R / b), 1e-14);            // (84)
+        EXPECT_NEAR(s.control.chi, std::atan(R / b) - (a / b) * (std::numbers::pi / 2 + omega * t),
+                    1e-12);                                   // (96)
         EXPECT_NEAR(s.control.lambda, -m * a * omega, 1e-14); // lambda = -m a phidot on a circle
         EXPECT_NEAR(s.control.energy, 0.5 * m * vT * vT, 1e-13);
         // workless control: f_s sdot + tau phidot = 0 (physics.md sec. 1)
-        EXPECT_NEAR(s.control.forceAxial * s.control.sdot + s.control.controlCouple * s.control.phidot, 0, 1e-13);
+        EXPECT_NEAR(s.control.forceAxial * s.control.sdot +
+                        s.control.controlCouple * s.control.phidot,
+                    0, 1e-13);
     }
 }
 

@@ -29,7 +29,9 @@ TEST(Expression, ExactDerivativesUpToThird) {
         double ex = std::exp(-x), q = 1 + x * x;
         EXPECT_NEAR(j.v, std::sin(2 * x) + x * x * x * ex + std::log(q), 1e-14);
         EXPECT_NEAR(j.d1, 2 * std::cos(2 * x) + (3 * x * x - x * x * x) * ex + 2 * x / q, 1e-13);
-        EXPECT_NEAR(j.d2, -4 * std::sin(2 * x) + (6 * x - 6 * x * x + x * x * x) * ex + (2 - 2 * x * x) / (q * q),
+        EXPECT_NEAR(j.d2,
+                    -4 * std::sin(2 * x) + (6 * x - 6 * x * x + x * x * x) * ex +
+                        (2 - 2 * x * x) / (q * q),
                     1e-13);
         EXPECT_NEAR(j.d3,
                     -8 * std::cos(2 * x) + (6 - 18 * x + 9 * x * x - x * x * x) * ex +
@@ -40,12 +42,13 @@ TEST(Expression, ExactDerivativesUpToThird) {
 
 TEST(Expression, AllDocumentedNamesWork) {
     Expression e = Expression::compile(
-        "sin(x)+cos(x)+tan(x)+asin(x/2)+acos(x/2)+atan(x)+sinh(x)+cosh(x)+tanh(x)+exp(x)+sqrt(x)+abs(x)+ln(x)+log(x)+pi+e",
+        "sin(x)+cos(x)+tan(x)+asin(x/2)+acos(x/"
+        "2)+atan(x)+sinh(x)+cosh(x)+tanh(x)+exp(x)+sqrt(x)+abs(x)+ln(x)+log(x)+pi+e",
         "x", "y(x)");
     double x = 0.7;
-    double expected = std::sin(x) + std::cos(x) + std::tan(x) + std::asin(x / 2) + std::acos(x / 2) + std::atan(x) +
-                      std::sinh(x) + std::cosh(x) + std::tanh(x) + std::exp(x) + std::sqrt(x) + std::abs(x) +
-                      2 * std::log(x) + M_PI + M_E;
+    double expected = std::sin(x) + std::cos(x) + std::tan(x) + std::asin(x / 2) +
+                      std::acos(x / 2) + std::atan(x) + std::sinh(x) + std::cosh(x) + std::tanh(x) +
+                      std::exp(x) + std::sqrt(x) + std::abs(x) + 2 * std::log(x) + M_PI + M_E;
     EXPECT_NEAR(e.value(x), expected, 1e-13);
     // d/dx: derivative of abs is sign for real x
     EXPECT_NEAR(Expression::compile("abs(x)^3", "x", "f").jet(-2).d1, -12, 1e-13);
@@ -55,13 +58,18 @@ TEST(Expression, AllDocumentedNamesWork) {
 
 TEST(Expression, ErrorsNamePositionAndProblem) {
     EXPECT_NE(errorOf("sin(x").find("missing ')'"), std::string::npos) << errorOf("sin(x");
-    EXPECT_NE(errorOf("sin(foo)").find("position 5: unknown name 'foo'"), std::string::npos) << errorOf("sin(foo)");
-    EXPECT_NE(errorOf("2*u").find("position 3: unknown name 'u'"), std::string::npos) << errorOf("2*u");
-    EXPECT_NE(errorOf("y=x=5").find("position 1: unknown name 'y'"), std::string::npos) << errorOf("y=x=5");
+    EXPECT_NE(errorOf("sin(foo)").find("position 5: unknown name 'foo'"), std::string::npos)
+        << errorOf("sin(foo)");
+    EXPECT_NE(errorOf("2*u").find("position 3: unknown name 'u'"), std::string::npos)
+        << errorOf("2*u");
+    EXPECT_NE(errorOf("y=x=5").find("position 1: unknown name 'y'"), std::string::npos)
+        << errorOf("y=x=5");
     EXPECT_NE(errorOf("x=5").find("'=' is not allowed"), std::string::npos) << errorOf("x=5");
-    EXPECT_NE(errorOf("1/0&&2").find("position 4: character '&'"), std::string::npos) << errorOf("1/0&&2");
+    EXPECT_NE(errorOf("1/0&&2").find("position 4: character '&'"), std::string::npos)
+        << errorOf("1/0&&2");
     EXPECT_NE(errorOf("x > 1 ? 1 : 0").find("character '>'"), std::string::npos);
-    EXPECT_NE(errorOf("2\xCF\x80x").find("position 2: non-ASCII"), std::string::npos) << errorOf("2\xCF\x80x");
+    EXPECT_NE(errorOf("2\xCF\x80x").find("position 2: non-ASCII"), std::string::npos)
+        << errorOf("2\xCF\x80x");
     EXPECT_NE(errorOf("").find("empty"), std::string::npos);
     EXPECT_NE(errorOf("   ").find("empty"), std::string::npos);
     EXPECT_NE(errorOf("x)").find("position 2: ')' without"), std::string::npos) << errorOf("x)");

@@ -34,7 +34,8 @@ void checkAgainstOde(const DerivedSystem& sys, const FreeInitial& init, double h
     FreeMotion free(sys, init, horizon);
     Lda params{sys.a, sys.b};
     gsl_odeiv2_system ode{rhs, nullptr, 5, &params};
-    gsl_odeiv2_driver* d = gsl_odeiv2_driver_alloc_y_new(&ode, gsl_odeiv2_step_rk8pd, 1e-3, 1e-14, 1e-14);
+    gsl_odeiv2_driver* d =
+        gsl_odeiv2_driver_alloc_y_new(&ode, gsl_odeiv2_step_rk8pd, 1e-3, 1e-14, 1e-14);
     double y[5] = {init.x, init.y, init.phi, init.sdot, init.phidot};
     double t = 0;
     for (double target = 1; target <= horizon; target += 1) {
@@ -75,12 +76,15 @@ TEST(FreeMotion, HypergeometricClosedFormForBetaTwo) {
     double V = std::hypot(init.sdot, b * init.phidot);
     double psi0 = std::asin(init.sdot / V);
     auto G = [](double th) {
-        return std::complex<double>(-std::cos(2 * th) / 2 + std::log(std::cos(th)), th - std::sin(2 * th) / 2);
+        return std::complex<double>(-std::cos(2 * th) / 2 + std::log(std::cos(th)),
+                                    th - std::sin(2 * th) / 2);
     };
     for (double t : {0.5, 2.0, 7.0, 15.0, 30.0}) {
         FreeState s = free.at(t);
-        double psi = 2 * std::atan(std::tanh(0.5 * (a * V / (b * b) * t + std::atanh(init.sdot / V))));
-        std::complex<double> z = (b * b / a) * std::polar(1.0, init.phi - beta * psi0) * (G(psi) - G(psi0));
+        double psi =
+            2 * std::atan(std::tanh(0.5 * (a * V / (b * b) * t + std::atanh(init.sdot / V))));
+        std::complex<double> z =
+            (b * b / a) * std::polar(1.0, init.phi - beta * psi0) * (G(psi) - G(psi0));
         EXPECT_NEAR(s.x, z.real(), 1e-11 * (1 + t)) << t;
         EXPECT_NEAR(s.y, z.imag(), 1e-11 * (1 + t)) << t;
         EXPECT_NEAR(s.phi, init.phi + beta * (psi - psi0), 1e-12);

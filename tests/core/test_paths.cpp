@@ -58,18 +58,23 @@ TEST(Paths, HeadingIsUnwrappedAroundSeveralTurns) {
     p.to = 6 * std::numbers::pi;
     auto path = buildPath(p);
     EXPECT_NEAR(path->end().phi - path->start().phi, 6 * std::numbers::pi, 1e-12);
-    EXPECT_NEAR(path->pieces().front().table->at(5 * std::numbers::pi).phi, 5.5 * std::numbers::pi, 1e-12);
+    EXPECT_NEAR(path->pieces().front().table->at(5 * std::numbers::pi).phi, 5.5 * std::numbers::pi,
+                1e-12);
     EXPECT_TRUE(path->pieces().front().table->uniform());
 }
 
 TEST(Paths, DomainProblemsNameTheirPlace) {
-    EXPECT_NE(errorOf(graph("1/x", -1, 1)).find("path at x = "), std::string::npos) << errorOf(graph("1/x", -1, 1));
-    EXPECT_NE(errorOf(graph("1/x", 0, 1)).find("path at x = 0:"), std::string::npos) << errorOf(graph("1/x", 0, 1));
+    EXPECT_NE(errorOf(graph("1/x", -1, 1)).find("path at x = "), std::string::npos)
+        << errorOf(graph("1/x", -1, 1));
+    EXPECT_NE(errorOf(graph("1/x", 0, 1)).find("path at x = 0:"), std::string::npos)
+        << errorOf(graph("1/x", 0, 1));
     EXPECT_NE(errorOf(graph("sqrt(x)", -1, 1)).find("path at x = -1:"), std::string::npos);
     EXPECT_NE(errorOf(graph("ln(x)", 0, 2)).find("path at x = 0:"), std::string::npos);
-    EXPECT_NE(errorOf(graph("exp(x)", 0, 800)).find("path at x = "), std::string::npos) << errorOf(graph("exp(x)", 0, 800));
+    EXPECT_NE(errorOf(graph("exp(x)", 0, 800)).find("path at x = "), std::string::npos)
+        << errorOf(graph("exp(x)", 0, 800));
     // a vertical tangent at the end of a y(x) graph
-    EXPECT_NE(errorOf(graph("sqrt(1 - x^2)", -1, 1)).find("path at x = -1: the path has no finite tangent"),
+    EXPECT_NE(errorOf(graph("sqrt(1 - x^2)", -1, 1))
+                  .find("path at x = -1: the path has no finite tangent"),
               std::string::npos)
         << errorOf(graph("sqrt(1 - x^2)", -1, 1));
     EXPECT_NE(errorOf(graph("x", 2, 1)).find("x-range"), std::string::npos);
@@ -79,7 +84,8 @@ TEST(Paths, DomainProblemsNameTheirPlace) {
     cusp.yOfU = "u^3";
     cusp.from = -1;
     cusp.to = 1;
-    EXPECT_NE(errorOf(cusp).find("path at u = 0: the path stops here"), std::string::npos) << errorOf(cusp);
+    EXPECT_NE(errorOf(cusp).find("path at u = 0: the path stops here"), std::string::npos)
+        << errorOf(cusp);
 }
 
 TEST(Paths, PolylineWithPivotsHasSegmentsAndCorners) {
@@ -125,7 +131,9 @@ TEST(Paths, SmoothingSplineGivesSmoothCurvatureForAShakyCircle) {
     auto exact = buildPath(p);
     double rough = 0;
     for (int i = 1; i < 400; ++i) {
-        auto k = [&](int j) { return exact->pieces().front().table->at(u0 + (u1 - u0) * j / 400.0).kappa; };
+        auto k = [&](int j) {
+            return exact->pieces().front().table->at(u0 + (u1 - u0) * j / 400.0).kappa;
+        };
         rough = std::max(rough, std::fabs(k(i + 1) - 2 * k(i) + k(i - 1)));
     }
     EXPECT_GT(rough, 100 * 0.005 / R);

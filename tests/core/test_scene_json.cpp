@@ -49,11 +49,14 @@ TEST(SceneJson, BrokenFilesAreRejectedWithTheirPlace) {
     EXPECT_NE(errorOf(good.substr(0, good.size() / 2)).find("not valid JSON"), std::string::npos);
     EXPECT_NE(errorOf("\xEF\xBB\xBF" + good).find("byte-order mark"), std::string::npos);
     EXPECT_NE(errorOf(std::string("{\"a\":\0}", 7)).find("NUL"), std::string::npos);
-    EXPECT_NE(errorOf(std::string(100, '[') + std::string(100, ']')).find("nested deeper"), std::string::npos);
-    EXPECT_NE(errorOf("[1,2]").find("scene file /: must be an object"), std::string::npos) << errorOf("[1,2]");
+    EXPECT_NE(errorOf(std::string(100, '[') + std::string(100, ']')).find("nested deeper"),
+              std::string::npos);
+    EXPECT_NE(errorOf("[1,2]").find("scene file /: must be an object"), std::string::npos)
+        << errorOf("[1,2]");
     std::string s = good;
     s.replace(s.find("\"speed\": 1.0"), 12, "\"speed\": \"fast\"");
-    EXPECT_NE(errorOf(s).find("scene file /speed: must be a number"), std::string::npos) << errorOf(s);
+    EXPECT_NE(errorOf(s).find("scene file /speed: must be a number"), std::string::npos)
+        << errorOf(s);
     s = good;
     s.replace(s.find("\"version\": 1"), 12, "\"version\": 7");
     EXPECT_NE(errorOf(s).find("newer release"), std::string::npos) << errorOf(s);
@@ -66,7 +69,8 @@ TEST(SceneJson, BrokenFilesAreRejectedWithTheirPlace) {
     s = good;
     s.replace(s.find("\"parametric\""), 12, "\"spiral\"");
     EXPECT_NE(errorOf(s).find("/path/kind"), std::string::npos) << errorOf(s);
-    EXPECT_NE(errorOf("{\"format\": \"chaplygin-lab-scene\", \"version\": 1, \"path\": \"\xff\"}").find("not valid JSON"),
+    EXPECT_NE(errorOf("{\"format\": \"chaplygin-lab-scene\", \"version\": 1, \"path\": \"\xff\"}")
+                  .find("not valid JSON"),
               std::string::npos);
 }
 
@@ -93,6 +97,7 @@ TEST(SceneJson, AtomicWriteKeepsTheOldFileOnFailure) {
         fs::remove(full);
     }
     for (const auto& entry : fs::directory_iterator(dir))
-        EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos) << entry.path();
+        EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
+            << entry.path();
     fs::remove_all(dir);
 }

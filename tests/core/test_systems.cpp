@@ -8,7 +8,9 @@
 using namespace chaplygin;
 
 namespace {
-SystemSpec spec(SystemKind k, std::map<std::string, double> p) { return {k, std::move(p)}; }
+SystemSpec spec(SystemKind k, std::map<std::string, double> p) {
+    return {k, std::move(p)};
+}
 
 void expectRejected(const SystemSpec& s, const std::string& name) {
     try {
@@ -35,8 +37,8 @@ TEST(Systems, SleighFromGyrationRadius) {
 TEST(Systems, DiskGyrationRadiusA14) {
     // uniform disk: I1 = m R^2/2, I2 = m R^2/4 -> b = R sqrt((1/4)/(3/2)) = R/sqrt(6)
     double m = 2, r = 0.4;
-    DerivedSystem d =
-        deriveSystem(spec(SystemKind::Disk, {{"m", m}, {"R", r}, {"I1", m * r * r / 2}, {"I2", m * r * r / 4}}));
+    DerivedSystem d = deriveSystem(
+        spec(SystemKind::Disk, {{"m", m}, {"R", r}, {"I1", m * r * r / 2}, {"I2", m * r * r / 4}}));
     EXPECT_NEAR(d.b, r / std::sqrt(6.0), 1e-15);
     EXPECT_NEAR(d.mass, m * 1.5, 1e-15);
     EXPECT_EQ(d.a, 0.0);
@@ -44,8 +46,9 @@ TEST(Systems, DiskGyrationRadiusA14) {
 
 TEST(Systems, CarriageB18) {
     double r = 0.3, a = 0.2, m = 0.5, i1 = 0.0225, i2 = 0.01125, bigM = 2, inertia = 0.2;
-    DerivedSystem d = deriveSystem(spec(SystemKind::Carriage, {{"R", r}, {"a", a}, {"m", m}, {"I1", i1}, {"I2", i2},
-                                                               {"M", bigM}, {"I", inertia}}));
+    DerivedSystem d = deriveSystem(
+        spec(SystemKind::Carriage,
+             {{"R", r}, {"a", a}, {"m", m}, {"I1", i1}, {"I2", i2}, {"M", bigM}, {"I", inertia}}));
     double wheel = m + i1 / (r * r); // 0.75
     double meff = bigM + 2 * wheel;  // 3.5
     double j = inertia + 2 * i2 + 2 * a * a * wheel;
@@ -60,10 +63,17 @@ TEST(Systems, RejectsImpossibleParameters) {
     expectRejected(spec(SystemKind::Sleigh, {{"m", 1.0}, {"a", 2.0}, {"b", 1.0}}), "parameter b");
     expectRejected(spec(SystemKind::Sleigh, {{"m", NAN}, {"a", 0.5}, {"b", 1.0}}), "parameter m");
     expectRejected(spec(SystemKind::Sleigh, {{"m", 1.0}, {"a", 0.5}}), "I or b");
-    expectRejected(spec(SystemKind::Sleigh, {{"m", 1.0}, {"a", 0.5}, {"b", 1.0}, {"q", 1.0}}), "parameter q");
-    expectRejected(spec(SystemKind::Disk, {{"m", 1.0}, {"R", -1.0}, {"I1", 0.1}, {"I2", 0.1}}), "parameter R");
+    expectRejected(spec(SystemKind::Sleigh, {{"m", 1.0}, {"a", 0.5}, {"b", 1.0}, {"q", 1.0}}),
+                   "parameter q");
+    expectRejected(spec(SystemKind::Disk, {{"m", 1.0}, {"R", -1.0}, {"I1", 0.1}, {"I2", 0.1}}),
+                   "parameter R");
     expectRejected(spec(SystemKind::Disk, {{"m", 1.0}, {"R", 1.0}, {"I1", 0.1}}), "parameter I2");
-    expectRejected(spec(SystemKind::Carriage, {{"R", 0.3}, {"a", 0.2}, {"m", 0.5}, {"I1", 0.0}, {"I2", 0.0},
-                                               {"M", 2.0}, {"I", INFINITY}}),
+    expectRejected(spec(SystemKind::Carriage, {{"R", 0.3},
+                                               {"a", 0.2},
+                                               {"m", 0.5},
+                                               {"I1", 0.0},
+                                               {"I2", 0.0},
+                                               {"M", 2.0},
+                                               {"I", INFINITY}}),
                    "parameter I");
 }

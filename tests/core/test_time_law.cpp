@@ -19,7 +19,9 @@ namespace {
 double integrate(const std::function<double(double)>& f, double a, double b) {
     gsl_integration_workspace* w = gsl_integration_workspace_alloc(1000);
     gsl_function F;
-    F.function = [](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); };
+    F.function = [](double x, void* p) {
+        return (*static_cast<const std::function<double(double)>*>(p))(x);
+    };
     F.params = const_cast<std::function<double(double)>*>(&f);
     double result = 0, err = 0;
     gsl_integration_qags(&F, a, b, 1e-14, 1e-13, 1000, w, &result, &err);
@@ -37,7 +39,9 @@ TEST(TimeLaw, CatenaryAgainstQuadratureOfEq103) {
     const double x0 = 1, b = 1.4, vT = 0.8;
     // (103), corrected: t(s) = (1/v_T) \int_0^s sqrt(1 + (b x0)^2/(s^2 + x0^2)^2) ds
     auto tOfS = [&](double s) {
-        return integrate([&](double u) { return std::sqrt(1 + std::pow(b * x0 / (u * u + x0 * x0), 2)) / vT; }, 0, s);
+        return integrate(
+            [&](double u) { return std::sqrt(1 + std::pow(b * x0 / (u * u + x0 * x0), 2)) / vT; },
+            0, s);
     };
     EXPECT_NEAR(sol.duration(), tOfS(5.0), 1e-12);
     for (double t : {0.1, 0.5, 1.0, 2.5, 4.0, 6.0}) {
@@ -66,7 +70,8 @@ TEST(TimeLaw, SinusoidInflectionIsSmoothAndMatchesEq112) {
         double c2 = 1 + std::cos(x) * std::cos(x);
         return vT * c2 / std::sqrt(b * b * std::sin(x) * std::sin(x) + c2 * c2 * c2);
     };
-    EXPECT_NEAR(sol.duration(), integrate([&](double x) { return 1 / xdot(x); }, 0, 4 * std::numbers::pi), 1e-11);
+    EXPECT_NEAR(sol.duration(),
+                integrate([&](double x) { return 1 / xdot(x); }, 0, 4 * std::numbers::pi), 1e-11);
     double previousPsi = std::numbers::pi / 2;
     for (double t = 0; t <= sol.duration(); t += 0.05) {
         MotionSample m = sol.at(t);
@@ -101,7 +106,7 @@ TEST(TimeLaw, PivotCornerTakesBTimesTurnOverVT) {
     MotionSample mid = sol.at(0.5 * (t1 + t2));
     EXPECT_NEAR(mid.x, 1, 1e-14);
     EXPECT_NEAR(mid.y, 0, 1e-14);
-    EXPECT_NEAR(mid.phi, turn / 2, 1e-13); // turning at v_T/b about P
+    EXPECT_NEAR(mid.phi, turn / 2, 1e-13);  // turning at v_T/b about P
     EXPECT_NEAR(mid.control.psi, 0, 1e-15); // left turn: Psi -> 0
     EXPECT_NEAR(mid.control.sdot, 0, 1e-15);
     EXPECT_NEAR(mid.control.phidot, vT / b, 1e-14);
