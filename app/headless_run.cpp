@@ -8,22 +8,24 @@
 #include "scene/headless_options.h"
 #include "scene/solution.h"
 #include "scene/summary_json.h"
+#include "work_precision_plot.h"
 
 #include <QApplication>
 #include <QDir>
 #include <QFile>
-
-#include <unistd.h>
 
 #include <cstdio>
 #include <exception>
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace chaplygin::app {
 namespace {
 
-int writePlots(const Solution& solution, const HeadlessOptions& o, int argc, char** argv) {
+// plots need a QApplication; headless it runs on the offscreen platform
+void prepareOffscreen() {
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
@@ -34,11 +36,58 @@ int writePlots(const Solution& solution, const HeadlessOptions& o, int argc, cha
         QFile::setPermissions(runtime, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
         qputenv("XDG_RUNTIME_DIR", runtime.toUtf8());
     }
-    QApplication app(argc, argv);
+}
+
+QStringList formatList(const HeadlessOptions& o) {
     QStringList formats;
     for (const std::string& f : o.formats)
         formats << QString::fromStdString(f);
-    ui::exportPlots(solution, QString::fromStdString(o.plotsDir), formats);
+    return formats;
+}
+
+std::vector<MotionSample> rowsFor(const Solution& solution, const HeadlessOptions& o) {
+    if (!o.times)
+        return solution.sample(o.samples);
+    for (double t : *o.times)
+        if (t < 0 || t > solution.duration())
+            throw InputError("--times", formatNumber(t) + " is outside [0, " +
+                                            formatNumber(solution.duration()) +
+                                            "], the time the body takes along the path");
+    return solution.sampleAt(*o.times);
+}
+
+int solveScene(const HeadlessOptions& o, int argc, char** argv) {
+    Solution solution = Solution::compute(o.scene);
+    if (!o.csvPath.empty())
+        writeFileAtomically(o.csvPath, formatCsv(rowsFor(solution, o)));
+    if (!o.summaryPath.empty())
+        writeFileAtomically(o.summaryPath, formatSummary(solution));
+    if (!o.plotsDir.empty()) {
+        prepareOffscreen();
+        QApplication app(argc, argv);
+        ui::exportPlots(solution, QString::fromStdString(o.plotsDir), formatList(o));
+    }
+    return 0;
+}
+
+// issue #4: the speed-against-accuracy sweep as CSV, its references as JSON, and the diagram
+int runWorkPrecisionLab(const HeadlessOptions& o, int argc, char** argv) {
+    // bad input is reported as for a plain run; the sweep's horizon may pass the path's end
+    Scene check = o.scene;
+    check.tEnd.reset();
+    Solution::compute(check);
+    WorkPrecisionReport report = runWorkPrecision(o.scene);
+    writeFileAtomically(o.csvPath.empty() ? "-" : o.csvPath, formatWorkPrecisionCsv(report));
+    if (!o.summaryPath.empty())
+        writeFileAtomically(o.summaryPath, formatWorkPrecisionSummary(report));
+    if (!o.plotsDir.empty()) {
+        prepareOffscreen();
+        QApplication app(argc, argv);
+        QString caption = o.scene.preset.empty()
+                              ? QStringLiteral("typed scene")
+                              : QStringLiteral("preset ") + QString::fromStdString(o.scene.preset);
+        ui::exportWorkPrecision(report, caption, QString::fromStdString(o.plotsDir), formatList(o));
+    }
     return 0;
 }
 
@@ -52,31 +101,7 @@ int runHeadless(int argc, char** argv) {
             std::fputs(headlessUsage().c_str(), stdout);
             return 0;
         }
-        if (o.workPrecision) {
-            writeFileAtomically(o.csvPath.empty() ? "-" : o.csvPath, workPrecisionCsv(o.scene));
-            return 0;
-        }
-        Solution solution = Solution::compute(o.scene);
-        if (!o.csvPath.empty()) {
-            std::vector<MotionSample> rows;
-            if (o.times) {
-                for (double t : *o.times)
-                    if (t < 0 || t > solution.duration())
-                        throw InputError("--times",
-                                         formatNumber(t) + " is outside [0, " +
-                                             formatNumber(solution.duration()) +
-                                             "], the time the body takes along the path");
-                rows = solution.sampleAt(*o.times);
-            } else {
-                rows = solution.sample(o.samples);
-            }
-            writeFileAtomically(o.csvPath, formatCsv(rows));
-        }
-        if (!o.summaryPath.empty())
-            writeFileAtomically(o.summaryPath, formatSummary(solution));
-        if (!o.plotsDir.empty())
-            return writePlots(solution, o, argc, argv);
-        return 0;
+        return o.workPrecision ? runWorkPrecisionLab(o, argc, argv) : solveScene(o, argc, argv);
     } catch (const InputError& e) {
         std::fprintf(stderr, "chaplygin-lab: %s\n", e.what());
         return 2;

@@ -177,6 +177,7 @@ QString plotTitle(PlotKind kind) {
 }
 
 void drawPlot(QCustomPlot& plot, PlotKind kind, const PlotSeries& series) {
+    plot.setAutoAddPlottableToLegend(false);
     plot.clearPlottables();
     plot.clearItems();
     if (kind == PlotKind::PaperFigure) {

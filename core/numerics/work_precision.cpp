@@ -2,6 +2,8 @@
 
 #include "numerics/quadrature_time_law.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -216,6 +218,27 @@ bool onParetoFront(const std::vector<WorkPrecisionRow>& rows, std::size_t index)
             return false;
     }
     return true;
+}
+
+std::string formatWorkPrecisionSummary(const WorkPrecisionReport& report) {
+    nlohmann::json j;
+    j["controlled_reference"] = report.controlledReference;
+    j["free_reference"] = report.freeReference;
+    j["controlled_end"] = report.controlledEnd;
+    j["free_end"] = report.freeEnd;
+    j["rows"] = report.rows.size();
+    j["chosen"] = nlohmann::json::array();
+    for (std::size_t i = 0; i < report.rows.size(); ++i) {
+        const WorkPrecisionRow& r = report.rows[i];
+        if (!r.chosen)
+            continue;
+        j["chosen"].push_back({{"problem", motionProblemName(r.problem)},
+                               {"method", r.method},
+                               {"error", r.error},
+                               {"seconds", r.seconds},
+                               {"on_pareto_front", onParetoFront(report.rows, i)}});
+    }
+    return j.dump(2) + "\n";
 }
 
 } // namespace chaplygin

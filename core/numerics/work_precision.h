@@ -35,11 +35,11 @@ struct WorkPrecisionOptions {
 
 struct WorkPrecisionReport {
     std::vector<WorkPrecisionRow> rows;
-    std::string controlledReference,
-        freeReference; ///< which solution the errors are measured against
-    double controlledEnd = 0, freeEnd = 0;
-    bool cancelled =
-        false; ///< stopped by options.cancel: rows holds what was done ///< horizons [s]
+    /// which solution the errors are measured against
+    std::string controlledReference, freeReference;
+    double controlledEnd = 0, freeEnd = 0; ///< horizons [s]
+    /// stopped by options.cancel: rows holds what was done
+    bool cancelled = false;
 };
 
 /// The speed-against-accuracy sweep of issue #4 for one scene.
@@ -48,6 +48,9 @@ WorkPrecisionReport runWorkPrecision(const Scene& scene, const WorkPrecisionOpti
 /// CSV with the header problem,method,tolerance,error,seconds,rhs_evals,chosen (the tolerance
 /// column holds the step size h [s] for fixed-step methods and 0 for closed forms).
 std::string formatWorkPrecisionCsv(const WorkPrecisionReport& report);
+
+/// JSON for --work-precision --summary: the references, horizons and the chosen rows.
+std::string formatWorkPrecisionSummary(const WorkPrecisionReport& report);
 
 /// runWorkPrecision + formatWorkPrecisionCsv, for --headless --work-precision.
 std::string workPrecisionCsv(const Scene& scene);

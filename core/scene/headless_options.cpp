@@ -312,6 +312,9 @@ Output:
   --csv FILE|-                                time series (CSV with a header row)
   --summary FILE|-                            JSON: b, m_eff, path length, duration, models used
   --plots DIR --format png,pdf,svg            the plots, as the app draws them
+  --work-precision                            the speed-against-accuracy sweep of every method:
+                                              CSV problem,method,tolerance,error,seconds,rhs_evals,chosen;
+                                              --summary names the references, --plots draws the diagram
 Expressions: + - * / ^ ( ), sin cos tan asin acos atan sinh cosh tanh exp sqrt abs ln log, pi, e.
 Exit status: 0 success, 2 bad input (the message names the option or the place), 1 internal failure.
 )";

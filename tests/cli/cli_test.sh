@@ -166,6 +166,22 @@ plots_all_formats)
     grep -q '<svg' "$work/plots/$stem.svg" || fail "$stem.svg is not an SVG"
   done
   ;;
+work_precision)
+  # issue #4: >= 6 methods per problem, an error <= 1e-10 on both, one chosen row each, the diagram
+  run 0 --preset catenary --t-end 10 --work-precision --csv "$work/wp.csv" --summary "$work/wp.json" \
+    --plots "$work/plots" --format png,svg
+  head -1 "$work/wp.csv" | grep -qx 'problem,method,tolerance,error,seconds,rhs_evals,chosen' || fail "header"
+  for p in controlled free; do
+    n=$(awk -F, -v p=$p 'NR>1 && $1==p {print $2}' "$work/wp.csv" | sort -u | wc -l)
+    [ "$n" -ge 6 ] || fail "$p: only $n methods"
+    awk -F, -v p=$p 'NR>1 && $1==p && $7==0 && $4<=1e-10 {found=1} END {exit !found}' "$work/wp.csv" \
+      || fail "$p: no method reaches 1e-10"
+    [ "$(awk -F, -v p=$p 'NR>1 && $1==p && $7==1' "$work/wp.csv" | wc -l)" -eq 1 ] || fail "$p: chosen rows"
+  done
+  grep -q '"controlled_reference"' "$work/wp.json" || fail "summary names no reference"
+  head -c 8 "$work/plots/work_precision.png" | od -An -c | grep -q 'P   N   G' || fail "diagram PNG"
+  grep -q '<svg' "$work/plots/work_precision.svg" || fail "diagram SVG"
+  ;;
 help)
   run 0 --help
   grep -q -- "--preset line|circle|catenary|sinusoid" "$work/out" || fail "usage"
