@@ -1,0 +1,24 @@
+#pragma once
+#include "scene/scene.h"
+
+#include <string>
+#include <vector>
+
+namespace chaplygin {
+
+/// A scene where a method or a model fails, with what a lecturer should say about it
+/// (issue #4, "where methods fail"). Each has a test that the failure is detected or handled.
+struct GalleryEntry {
+    std::string name;        ///< short id, e.g. "cusp"
+    std::string title;       ///< one line for menus
+    std::string explanation; ///< one paragraph
+    Scene scene;
+    bool rejected = false; ///< the app refuses this scene with a message (the failure detected)
+    std::string message;   ///< words the refusal contains
+};
+
+const std::vector<GalleryEntry>& galleryEntries();
+/// Throws InputError for unknown names.
+const GalleryEntry& galleryEntry(const std::string& name);
+
+} // namespace chaplygin
