@@ -48,9 +48,12 @@ void paintSleigh(QPainter& p, const DerivedSystem& d, const QColor& fill, const 
     if (std::abs(d.a) > big) // the knife lies outside the board: a strut reaches it
         p.drawLine(QPointF(0, 0), QPointF(d.a - std::copysign(big, d.a), 0));
     // knife edge along s-hat at P
-    double knife = 0.35 * big;
+    double knife = 0.22 * big;
     p.setPen(cosmeticPen(ink, 4));
     p.drawLine(QPointF(-knife, 0), QPointF(knife, 0));
+    p.setPen(Qt::NoPen);
+    p.setBrush(Qt::black);
+    p.drawEllipse(QPointF(0, 0), 0.03 * big, 0.03 * big); // the contact point P
     paintCentreOfMass(p, QPointF(d.a, 0), 0.08 * big, ink);
 }
 

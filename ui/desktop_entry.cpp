@@ -37,16 +37,27 @@ void describeApplication() {
 void ensureRuntimeDir() {
     if (!qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR"))
         return;
-    QString runtime = QDir::tempPath() + QStringLiteral("/chaplygin-lab-runtime-") + QString::number(::getuid());
+    QString runtime =
+        QDir::tempPath() + QStringLiteral("/chaplygin-lab-runtime-") + QString::number(::getuid());
     QDir().mkpath(runtime);
     QFile::setPermissions(runtime, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
     qputenv("XDG_RUNTIME_DIR", runtime.toUtf8());
+}
+
+// the offscreen platform warns about window hints it cannot honour; that is not news to the user
+void quietOffscreenNoise(QtMsgType type, const QMessageLogContext& context,
+                         const QString& message) {
+    if (message.contains(QLatin1String("propagateSizeHints")))
+        return;
+    std::fprintf(stderr, "%s\n", qPrintable(qFormatLogMessage(type, context, message)));
 }
 
 struct ScreenshotOptions {
     std::string file;
     double at = 0;
     int width = 1280, height = 800;
+    bool showParameters =
+        false; ///< --panel parameters: raise the parameters dock over the path dock
     Scene scene;
 };
 
@@ -66,6 +77,11 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
             o.at = parseNumber(value(i, arg), "--at");
             if (o.at < 0)
                 throw InputError("--at", "the time must be >= 0");
+        } else if (arg == "--panel") {
+            std::string panel = value(i, arg);
+            if (panel != "path" && panel != "parameters")
+                throw InputError("--panel", "expected path or parameters, got '" + panel + "'");
+            o.showParameters = panel == "parameters";
         } else if (arg == "--size") {
             std::string size = value(i, arg);
             auto x = size.find('x');
@@ -74,7 +90,8 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
             double w = parseNumber(size.substr(0, x), "--size");
             double h = parseNumber(size.substr(x + 1), "--size");
             if (w < 320 || h < 240 || w > 8000 || h > 8000 || w != int(w) || h != int(h))
-                throw InputError("--size", "width and height must be whole numbers in 320x240 ... 8000x8000");
+                throw InputError("--size",
+                                 "width and height must be whole numbers in 320x240 ... 8000x8000");
             o.width = int(w);
             o.height = int(h);
         } else {
@@ -93,8 +110,16 @@ int renderScreenshot(const ScreenshotOptions& o) {
     window.loadScene(o.scene);
     if (!window.document()->error().isEmpty())
         throw InputError("scene", window.document()->error().toStdString());
+    double tEnd = window.document()->solution()->tEnd();
+    if (o.at > tEnd)
+        throw InputError("--at", formatNumber(o.at) + " is after the end of the motion, t_end = " +
+                                     formatNumber(tEnd));
     window.resize(o.width, o.height);
     window.show();
+    QCoreApplication::processEvents();
+    window.balanceDocks();
+    if (o.showParameters)
+        window.showParametersDock();
     QCoreApplication::processEvents();
     window.canvas()->fitScene();
     window.playback()->seek(o.at);
@@ -112,9 +137,27 @@ int renderScreenshot(const ScreenshotOptions& o) {
 
 int runDesktop(int argc, char** argv) {
     ensureRuntimeDir();
+    QGuiApplication::setHighDpiScaleFactorRoundingPolicy(
+        Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
     QApplication app(argc, argv);
     describeApplication();
+    // QApplication has taken its own options out; what is left is a scene file or scene options
+    QStringList args = QCoreApplication::arguments().mid(1);
     MainWindow window;
+    try {
+        if (args.size() == 1 && !args[0].startsWith(QLatin1String("--"))) {
+            if (!window.openFile(args[0]))
+                throw InputError("", window.lastFileError().toStdString());
+        } else if (!args.isEmpty()) {
+            std::vector<std::string> options;
+            for (const QString& a : args)
+                options.push_back(a.toStdString());
+            window.loadScene(parseHeadlessOptions(options).scene);
+        }
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "chaplygin-lab: %s\n", e.what());
+        return 2;
+    }
     window.show();
     return app.exec();
 }
@@ -132,8 +175,10 @@ int runScreenshot(int argc, char** argv) {
     ensureRuntimeDir();
     // tests call this inside their own QApplication
     std::unique_ptr<QApplication> app;
-    if (!QCoreApplication::instance())
+    if (!QCoreApplication::instance()) {
+        qInstallMessageHandler(quietOffscreenNoise);
         app = std::make_unique<QApplication>(argc, argv);
+    }
     try {
         return renderScreenshot(*options);
     } catch (const InputError& e) {

@@ -30,18 +30,21 @@
 #include <QUndoStack>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <exception>
 
 namespace chaplygin::ui {
 
 namespace {
 
-QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content, QMainWindow* parent) {
+QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content,
+                      QMainWindow* parent) {
     auto* dock = new QDockWidget(title, parent);
     dock->setObjectName(name);
     auto* scroll = new QScrollArea;
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     scroll->setWidget(content);
     dock->setWidget(scroll);
     return dock;
@@ -59,7 +62,8 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     m_parameters = new ParametersPanel;
     m_plots = new PlotsPanel(m_document);
     m_pathDock = makeDock(tr("Path"), QStringLiteral("pathDock"), m_path, this);
-    m_parametersDock = makeDock(tr("System and parameters"), QStringLiteral("parametersDock"), m_parameters, this);
+    m_parametersDock =
+        makeDock(tr("System and parameters"), QStringLiteral("parametersDock"), m_parameters, this);
     m_plotsDock = new QDockWidget(tr("Plots"), this);
     m_plotsDock->setObjectName(QStringLiteral("plotsDock"));
     m_plotsDock->setWidget(m_plots);
@@ -70,7 +74,6 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     addDockWidget(Qt::BottomDockWidgetArea, m_plotsDock);
     m_pathDock->setMinimumWidth(360);
     m_parametersDock->setMinimumWidth(360);
-    resizeDocks({m_plotsDock}, {300}, Qt::Vertical);
 
     m_timeline = new TimelineBar(m_playback, this);
     addToolBar(Qt::BottomToolBarArea, m_timeline);
@@ -86,20 +89,31 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     connect(m_playback, &Playback::timeChanged, this, &MainWindow::onTime);
     connect(m_plots, &PlotsPanel::seekRequested, m_playback, &Playback::seek);
     connect(m_path, &PathPanel::presetChosen, this, &MainWindow::choosePreset);
-    connect(m_path, &PathPanel::pathTyped, this, [this](const PathSource& s) { setPath(s, tr("Type a path")); });
+    connect(m_path, &PathPanel::pathTyped, this,
+            [this](const PathSource& s) { setPath(s, tr("Type a path")); });
     connect(m_path, &PathPanel::drawModeToggled, m_canvas, &SceneCanvas::setDrawMode);
-    connect(m_path, &PathPanel::cornersChanged, this, [this](CornerMode mode) {
-        PathSource s = m_current.path;
-        s.corners = mode;
-        setPath(s, tr("Change the corners"));
-    });
-    connect(m_canvas, &SceneCanvas::pathDrawn, this, [this](const std::vector<std::pair<double, double>>& points) {
-        PathSource s;
-        s.kind = PathKind::Polyline;
-        s.points = points;
-        s.corners = m_path->drawCorners();
-        setPath(s, tr("Draw a path"));
-    });
+    connect(m_path, &PathPanel::drawOptionsChanged, this,
+            [this](CornerMode mode, double smoothing) {
+                PathSource s = m_current.path;
+                s.corners = mode;
+                s.smoothing = smoothing;
+                setPath(s, tr("Change the corners"), false);
+            });
+    connect(m_canvas, &SceneCanvas::pathDrawn, this,
+            [this](const std::vector<std::pair<double, double>>& points) {
+                PathSource s;
+                s.kind = PathKind::Polyline;
+                s.points = points;
+                s.corners = m_path->drawCorners();
+                s.smoothing = m_path->drawSmoothing();
+                setPath(s, tr("Draw a path"));
+            });
+    connect(m_canvas, &SceneCanvas::pointsEdited, this,
+            [this](const std::vector<std::pair<double, double>>& points) {
+                PathSource s = m_current.path;
+                s.points = points;
+                setPath(s, tr("Edit the drawn path"), false);
+            });
     connect(m_parameters, &ParametersPanel::sceneEdited, this, &MainWindow::onParametersEdited);
 
     bool restored = false;
@@ -108,12 +122,28 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
         restored = restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray());
         restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
     }
-    if (!restored)
+    if (!restored) {
         resize(1280, 800);
+        balanceDocks();
+    }
     loadScene(presetScene("sinusoid"));
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+    // the undo stack signals cleanChanged while it is destroyed, after this window has gone
+    m_undo->disconnect(this);
+}
+
+void MainWindow::balanceDocks() {
+    // the canvas gets most of the height; the plots a third
+    resizeDocks({m_plotsDock}, {std::max(220, height() / 3)}, Qt::Vertical);
+    resizeDocks({m_pathDock}, {std::max(360, width() / 4)}, Qt::Horizontal);
+}
+
+void MainWindow::showParametersDock() {
+    m_parametersDock->show();
+    m_parametersDock->raise();
+}
 
 void MainWindow::buildMenus() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
@@ -124,8 +154,10 @@ void MainWindow::buildMenus() {
     file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { saveDialog(false); });
     file->addAction(tr("Save &As\u2026"), QKeySequence::SaveAs, this, [this] { saveDialog(true); });
     file->addSeparator();
-    file->addAction(tr("Export &plots\u2026"), QKeySequence(tr("Ctrl+E")), this, &MainWindow::exportPlotsDialog);
-    file->addAction(tr("Export &CSV\u2026"), QKeySequence(tr("Ctrl+Shift+E")), this, &MainWindow::exportCsvDialog);
+    file->addAction(tr("Export &plots\u2026"), QKeySequence(tr("Ctrl+E")), this,
+                    &MainWindow::exportPlotsDialog);
+    file->addAction(tr("Export &CSV\u2026"), QKeySequence(tr("Ctrl+Shift+E")), this,
+                    &MainWindow::exportCsvDialog);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -150,7 +182,8 @@ void MainWindow::buildMenus() {
     connect(m_followAction, &QAction::toggled, m_canvas, &SceneCanvas::setFollowBody);
     connect(m_canvas, &SceneCanvas::followBodyChanged, m_followAction, &QAction::setChecked);
     view->addAction(tr("Zoom &in"), QKeySequence::ZoomIn, this, [this] { m_canvas->zoomBy(1.25); });
-    view->addAction(tr("Zoom &out"), QKeySequence::ZoomOut, this, [this] { m_canvas->zoomBy(0.8); });
+    view->addAction(tr("Zoom &out"), QKeySequence::ZoomOut, this,
+                    [this] { m_canvas->zoomBy(0.8); });
 
     QMenu* play = menuBar()->addMenu(tr("&Animation"));
     play->addAction(m_timeline->playAction());
@@ -160,24 +193,29 @@ void MainWindow::buildMenus() {
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&Physics notes"), QKeySequence::HelpContents, this, [this] {
-        QMessageBox::information(
-            this, tr("Physics notes"),
-            tr("<p>The knife point P follows the prescribed path. The control angle \u03a8 satisfies "
-               "tan \u03a8 = \u03c1/b (eq. 45); \u03c7 = \u03a8 \u2212 (a/b)\u03c6 is the driving angle and "
-               "\u03bb = m b d\u03c7/dt the control multiplier. The control is workless, so the kinetic "
-               "energy stays constant in the energy mode.</p>"
-               "<p>The ghost is the free (Lagrange\u2013d'Alembert, Neimark\u2013Fufaev) sleigh from the same "
-               "initial state: it turns away and ends on a straight line.</p>"
-               "<p>Disk and carriage reduce to a sleigh with effective mass m_eff, offset a and radius of "
-               "gyration b (Apps. A, B).</p><p>Models in use: %1</p>")
-                .arg(m_status->text().toHtmlEscaped()));
+        QMessageBox::information(this, tr("Physics notes"),
+                                 tr("<p>The knife point P follows the prescribed path. The control "
+                                    "angle \u03a8 satisfies "
+                                    "tan \u03a8 = \u03c1/b (eq. 45); \u03c7 = \u03a8 \u2212 "
+                                    "(a/b)\u03c6 is the driving angle and "
+                                    "\u03bb = m b d\u03c7/dt the control multiplier. The control "
+                                    "is workless, so the kinetic "
+                                    "energy stays constant in the energy mode.</p>"
+                                    "<p>The ghost is the free (Lagrange\u2013d'Alembert, "
+                                    "Neimark\u2013Fufaev) sleigh from the same "
+                                    "initial state: it turns away and ends on a straight line.</p>"
+                                    "<p>Disk and carriage reduce to a sleigh with effective mass "
+                                    "m_eff, offset a and radius of "
+                                    "gyration b (Apps. A, B).</p><p>Models in use: %1</p>")
+                                     .arg(m_status->text().toHtmlEscaped()));
     });
     help->addAction(tr("&About Chaplygin Lab"), this, [this] {
-        QMessageBox::about(this, tr("About Chaplygin Lab"),
-                           tr("<b>Chaplygin Lab %1</b><p>Control of nonholonomic Chaplygin systems "
-                              "(Antunes, Sigaud, de Moraes, Braz. J. Phys. 2009): sleigh, rolling disk and "
-                              "two-wheeled carriage.</p>")
-                               .arg(QCoreApplication::applicationVersion()));
+        QMessageBox::about(
+            this, tr("About Chaplygin Lab"),
+            tr("<b>Chaplygin Lab %1</b><p>Control of nonholonomic Chaplygin systems "
+               "(Antunes, Sigaud, de Moraes, Braz. J. Phys. 2009): sleigh, rolling disk and "
+               "two-wheeled carriage.</p>")
+                .arg(QCoreApplication::applicationVersion()));
     });
 }
 
@@ -185,15 +223,27 @@ void MainWindow::rebuildRecentMenu() {
     m_recentMenu->clear();
     const QStringList files = m_useSettings ? recentFiles() : QStringList();
     for (const QString& f : files)
-        m_recentMenu->addAction(QFileInfo(f).fileName(), this, [this, f] { openFile(f); })->setToolTip(f);
+        m_recentMenu
+            ->addAction(QFileInfo(f).fileName(), this,
+                        [this, f] {
+                            if (maybeSave())
+                                openFile(f);
+                        })
+            ->setToolTip(f);
     m_recentMenu->setEnabled(!files.isEmpty());
 }
 
 void MainWindow::applyScene(const Scene& scene) {
+    // a parameter change leaves the path fields alone (with any unfinished typing in them)
+    bool pathChanged =
+        scene.path != m_current.path || scene.preset != m_current.preset || !m_applied;
     m_current = scene;
-    m_path->setScene(scene);
+    m_applied = true;
+    if (pathChanged) {
+        m_path->setScene(scene);
+        m_path->showError({});
+    }
     m_parameters->setScene(scene);
-    m_path->showError({});
     m_parameters->showError({});
     m_document->setScene(scene);
 }
@@ -208,11 +258,12 @@ void MainWindow::loadScene(const Scene& scene) {
     m_canvas->fitScene();
 }
 
-void MainWindow::editScene(const Scene& scene, const QString& description, const QString& mergeKey) {
+void MainWindow::editScene(const Scene& scene, const QString& description,
+                           const QString& mergeKey) {
     if (scene == m_current)
         return;
-    m_undo->push(new SceneCommand(description, m_current, scene, [this](const Scene& s) { applyScene(s); },
-                                  mergeKey));
+    m_undo->push(new SceneCommand(
+        description, m_current, scene, [this](const Scene& s) { applyScene(s); }, mergeKey));
 }
 
 void MainWindow::choosePreset(const QString& name) {
@@ -220,13 +271,14 @@ void MainWindow::choosePreset(const QString& name) {
         Scene next = presetScene(name.toStdString());
         m_document->pathFor(next.path);
         editScene(next, tr("Preset %1").arg(name));
+        m_document->flush();
         m_canvas->fitScene();
     } catch (const InputError& e) {
         m_path->showError(QString::fromStdString(e.what()));
     }
 }
 
-void MainWindow::setPath(const PathSource& source, const QString& description) {
+void MainWindow::setPath(const PathSource& source, const QString& description, bool refit) {
     try {
         m_document->pathFor(source); // tabulates now: errors stay in the panel, the last path stays
     } catch (const InputError& e) {
@@ -239,10 +291,12 @@ void MainWindow::setPath(const PathSource& source, const QString& description) {
     next.preset.clear();
     editScene(next, description);
     m_document->flush();
-    m_canvas->fitScene();
+    if (refit)
+        m_canvas->fitScene();
 }
 
-void MainWindow::onParametersEdited(const Scene& scene, const QString& description, const QString& mergeKey) {
+void MainWindow::onParametersEdited(const Scene& scene, const QString& description,
+                                    const QString& mergeKey) {
     try {
         deriveSystem(scene.system);
     } catch (const InputError& e) {
@@ -261,7 +315,8 @@ void MainWindow::onSolutionChanged() {
     m_plots->setTime(m_playback->time());
     const ModelReport& m = solution->models();
     m_status->setText(QString::fromStdString("path: " + m.path + "; time law: " + m.timeLaw +
-                                             "; free motion: " + m.freeVelocity + ", " + m.freePosition));
+                                             "; free motion: " + m.freeVelocity + ", " +
+                                             m.freePosition));
     updateTitle();
 }
 
@@ -277,7 +332,20 @@ void MainWindow::onTime(double t) {
     m_plots->setTime(t);
 }
 
+bool MainWindow::maybeSave() {
+    if (!m_useSettings || m_undo->isClean())
+        return true;
+    auto answer = QMessageBox::question(
+        this, tr("Chaplygin Lab"), tr("The scene has unsaved changes. Save them?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save)
+        return saveDialog(false);
+    return answer == QMessageBox::Discard;
+}
+
 void MainWindow::newScene() {
+    if (!maybeSave())
+        return;
     loadScene(presetScene("sinusoid"));
     m_document->setFileName({});
 }
@@ -341,7 +409,10 @@ bool MainWindow::exportCsvTo(const QString& path) {
 }
 
 void MainWindow::openDialog() {
-    QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), {}, tr("Scenes (*.json);;All files (*)"));
+    if (!maybeSave())
+        return;
+    QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), {},
+                                                tr("Scenes (*.json);;All files (*)"));
     if (!path.isEmpty())
         openFile(path);
 }
@@ -354,7 +425,8 @@ bool MainWindow::saveDialog(bool askName) {
 }
 
 void MainWindow::exportPlotsDialog() {
-    QString dir = QFileDialog::getExistingDirectory(this, tr("Export plots (PNG, PDF and SVG) into"));
+    QString dir =
+        QFileDialog::getExistingDirectory(this, tr("Export plots (PNG, PDF and SVG) into"));
     if (!dir.isEmpty())
         exportPlotsTo(dir, {QStringLiteral("png"), QStringLiteral("pdf"), QStringLiteral("svg")});
 }
@@ -373,11 +445,17 @@ void MainWindow::showFileError(const QString& message) {
 }
 
 void MainWindow::updateTitle() {
-    QString name = m_document->fileName().isEmpty() ? tr("untitled") : QFileInfo(m_document->fileName()).fileName();
-    setWindowTitle(tr("%1%2 \u2014 Chaplygin Lab").arg(name, m_undo->isClean() ? QString() : QStringLiteral("*")));
+    QString name = m_document->fileName().isEmpty() ? tr("untitled")
+                                                    : QFileInfo(m_document->fileName()).fileName();
+    setWindowTitle(tr("%1%2 \u2014 Chaplygin Lab")
+                       .arg(name, m_undo->isClean() ? QString() : QStringLiteral("*")));
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
+    if (!maybeSave()) {
+        e->ignore();
+        return;
+    }
     if (m_useSettings) {
         QSettings settings;
         settings.setValue(QStringLiteral("geometry"), saveGeometry());

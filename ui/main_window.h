@@ -24,7 +24,7 @@ class TimelineBar;
 /// change goes through the undo stack.
 class MainWindow : public QMainWindow {
     Q_OBJECT
-public:
+  public:
     /// useSettings: restore and save geometry, dock layout and recent files (off for tests and
     /// screenshots).
     explicit MainWindow(bool useSettings = true, QWidget* parent = nullptr);
@@ -42,6 +42,11 @@ public:
     bool exportPlotsTo(const QString& dir, const QStringList& formats);
     bool exportCsvTo(const QString& path);
 
+    /// Gives the canvas most of the window, the plots dock a third of the height.
+    void balanceDocks();
+    /// Shows and raises the parameters dock (over the path dock when they share tabs).
+    void showParametersDock();
+
     /// The last message shown for a failed file operation.
     const QString& lastFileError() const { return m_lastFileError; }
 
@@ -54,11 +59,12 @@ public:
     TimelineBar* timeline() const { return m_timeline; }
     QUndoStack* undoStack() const { return m_undo; }
     QAction* followAction() const { return m_followAction; }
+    QMenu* recentMenu() const { return m_recentMenu; }
 
-protected:
+  protected:
     void closeEvent(QCloseEvent* e) override;
 
-private:
+  private:
     void buildMenus();
     void rebuildRecentMenu();
     void applyScene(const Scene& scene);
@@ -66,8 +72,11 @@ private:
     void onDocumentError(const QString& error);
     void onTime(double t);
     void choosePreset(const QString& name);
-    void setPath(const PathSource& source, const QString& description);
-    void onParametersEdited(const Scene& scene, const QString& description, const QString& mergeKey);
+    void setPath(const PathSource& source, const QString& description, bool refit = true);
+    void onParametersEdited(const Scene& scene, const QString& description,
+                            const QString& mergeKey);
+    /// Asks to save unsaved changes; false when the user cancels.
+    bool maybeSave();
     void newScene();
     void openDialog();
     bool saveDialog(bool askName);
@@ -92,6 +101,7 @@ private:
     QAction* m_followAction = nullptr;
     QLabel* m_status;
     Scene m_current;
+    bool m_applied = false; // whether m_current has been shown yet
     QString m_lastFileError;
 };
 

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace chaplygin::ui {
 
@@ -64,7 +65,8 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     m_gyration = new QComboBox;
     m_gyration->addItem(tr("enter b, derive I"));
     m_gyration->addItem(tr("enter I, derive b"));
-    m_gyration->setToolTip(tr("b\u00b2 = a\u00b2 + I/m: give the radius of gyration b [m] or the inertia I [kg m\u00b2]"));
+    m_gyration->setToolTip(tr("b\u00b2 = a\u00b2 + I/m: give the radius of gyration b [m] or the "
+                              "inertia I [kg m\u00b2]"));
     m_gyrationLabel = new QLabel(tr("&Gyration"));
     m_gyrationLabel->setBuddy(m_gyration);
     top->addRow(m_gyrationLabel, m_gyration);
@@ -77,15 +79,17 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
 
     m_derived = new QLabel;
     m_derived->setWordWrap(true);
-    m_derived->setToolTip(tr("What the control law uses: effective mass [kg], CM offset a [m], "
-                             "radius of gyration b about P [m], inertia I about the CM [kg m\u00b2]"));
+    m_derived->setToolTip(
+        tr("What the control law uses: effective mass [kg], CM offset a [m], "
+           "radius of gyration b about P [m], inertia I about the CM [kg m\u00b2]"));
     layout->addWidget(m_derived);
 
     auto* speedForm = new QFormLayout;
     m_mode = new QComboBox;
     m_mode->addItem(tr("constant kinetic energy (v_T)"));
     m_mode->addItem(tr("constant speed along the path (v_s)"));
-    m_mode->setToolTip(tr("Energy: T = m v_T\u00b2/2 fixed (sec. 4); speed: ds/dt = v_s fixed (App. C)"));
+    m_mode->setToolTip(
+        tr("Energy: T = m v_T\u00b2/2 fixed (sec. 4); speed: ds/dt = v_s fixed (App. C)"));
     speedForm->addRow(tr("&Mode"), m_mode);
     layout->addLayout(speedForm);
     m_speedLabel = new QLabel;
@@ -98,14 +102,19 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     m_error->hide();
     layout->addWidget(m_error);
     layout->addStretch(1);
+    for (QComboBox* combo : findChildren<QComboBox*>()) {
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        combo->setMinimumContentsLength(10);
+    }
 
     connect(m_system, &QComboBox::activated, this, &ParametersPanel::onSystemChosen);
     connect(m_gyration, &QComboBox::activated, this, &ParametersPanel::onGyrationChosen);
     connect(m_mode, &QComboBox::activated, this, &ParametersPanel::onModeChosen);
 }
 
-ParametersPanel::Row ParametersPanel::addRow(const QString& name, const QString& label, const QString& unit,
-                                             double lo, double hi, double value) {
+ParametersPanel::Row ParametersPanel::addRow(const QString& name, const QString& caption,
+                                             const QString& label, const QString& unit, double lo,
+                                             double hi, double value) {
     Row row;
     row.spin = new QDoubleSpinBox;
     row.spin->setObjectName(QStringLiteral("spin_") + name);
@@ -119,7 +128,10 @@ ParametersPanel::Row ParametersPanel::addRow(const QString& name, const QString&
     row.slider->setObjectName(QStringLiteral("slider_") + name);
     row.slider->setRange(0, kSliderSteps);
     row.slider->setValue(toSlider(value, lo, hi));
-    QString tip = QStringLiteral("%1 %2 [%3]; slider %4 \u2026 %5 %3").arg(label, name, unit).arg(lo).arg(hi);
+    QString tip = QStringLiteral("%1 %2 [%3]; slider %4 \u2026 %5 %3")
+                      .arg(label, caption, unit)
+                      .arg(lo)
+                      .arg(hi);
     row.spin->setToolTip(tip);
     row.slider->setToolTip(tip);
     auto* line = new QWidget;
@@ -127,10 +139,10 @@ ParametersPanel::Row ParametersPanel::addRow(const QString& name, const QString&
     h->setContentsMargins(0, 0, 0, 0);
     h->addWidget(row.spin);
     h->addWidget(row.slider, 1);
-    auto* caption = new QLabel(name + QStringLiteral(":"));
-    caption->setToolTip(tip);
-    caption->setBuddy(row.spin);
-    m_form->addRow(caption, line);
+    auto* captionLabel = new QLabel(caption + QStringLiteral(":"));
+    captionLabel->setToolTip(tip);
+    captionLabel->setBuddy(row.spin);
+    m_form->addRow(captionLabel, line);
 
     QDoubleSpinBox* spin = row.spin;
     QSlider* slider = row.slider;
@@ -167,24 +179,27 @@ void ParametersPanel::rebuildRows() {
             continue; // the sleigh has b or I, not both
         ParamInfo info = paramInfo(name);
         QString qname = QString::fromStdString(name);
-        m_rows[qname] = addRow(qname, QString::fromUtf8(info.label), QString::fromUtf8(info.unit), info.lo,
-                               info.hi, it->second);
+        m_rows[qname] = addRow(qname, qname, QString::fromUtf8(info.label),
+                               QString::fromUtf8(info.unit), info.lo, info.hi, it->second);
     }
     bool energy = m_scene.mode == SpeedMode::Energy;
     QString speedName = energy ? QStringLiteral("v_T") : QStringLiteral("v_s");
-    m_speedLabel->setText(energy ? tr("v_T = \u221a(2T/m_eff), the speed the kinetic energy is worth")
-                                 : tr("v_s, the constant speed of P along the path"));
-    m_rows[QStringLiteral("speed")] = addRow(QStringLiteral("speed"), speedName, QStringLiteral("m/s"), 0.05, 5,
-                                             m_scene.speed);
-    m_form->labelForField(m_rows[QStringLiteral("speed")].spin->parentWidget())
-        ->setProperty("text", speedName + QStringLiteral(":"));
+    m_speedLabel->setText(energy
+                              ? tr("v_T = \u221a(2T/m_eff), the speed the kinetic energy is worth")
+                              : tr("v_s, the constant speed of P along the path"));
+    m_rows[QStringLiteral("speed")] = addRow(QStringLiteral("speed"), speedName, tr("speed"),
+                                             QStringLiteral("m/s"), 0.05, 5, m_scene.speed);
 }
 
 void ParametersPanel::setScene(const Scene& scene) {
     m_updating = true;
-    bool rebuild = scene.system.kind != m_scene.system.kind || scene.mode != m_scene.mode ||
-                   m_rows.empty() || scene.system.params.size() != m_scene.system.params.size() ||
-                   scene.system.params.count("b") != m_scene.system.params.count("b");
+    // new rows when the parameter names (or the speed's name) change
+    std::set<QString> shown, wanted{QStringLiteral("speed")};
+    for (const auto& row : m_rows)
+        shown.insert(row.first);
+    for (const auto& param : scene.system.params)
+        wanted.insert(QString::fromStdString(param.first));
+    bool rebuild = shown != wanted || scene.mode != m_scene.mode;
     m_scene = scene;
     m_system->setCurrentIndex(m_system->findData(int(scene.system.kind)));
     bool sleigh = scene.system.kind == SystemKind::Sleigh;
@@ -196,7 +211,8 @@ void ParametersPanel::setScene(const Scene& scene) {
         rebuildRows();
     } else {
         for (auto& [name, row] : m_rows) {
-            double v = name == QStringLiteral("speed") ? scene.speed : scene.system.params.at(name.toStdString());
+            double v = name == QStringLiteral("speed") ? scene.speed
+                                                       : scene.system.params.at(name.toStdString());
             if (row.spin->value() != v) {
                 row.spin->setValue(v);
                 ParamInfo info = paramInfo(name.toStdString());
@@ -228,7 +244,9 @@ void ParametersPanel::showError(const QString& message) {
     m_error->setVisible(!message.isEmpty());
 }
 
-QString ParametersPanel::errorText() const { return m_error->isVisible() ? m_error->text() : QString(); }
+QString ParametersPanel::errorText() const {
+    return m_error->isVisible() ? m_error->text() : QString();
+}
 
 QDoubleSpinBox* ParametersPanel::spinBox(const QString& name) const {
     auto it = m_rows.find(name);
@@ -246,7 +264,9 @@ void ParametersPanel::onValueChanged(const QString& name, double value) {
     else
         m_scene.system.params[name.toStdString()] = value;
     updateDerived();
-    emitEdit(tr("Change %1 to %2").arg(name == QStringLiteral("speed") ? tr("speed") : name).arg(value, 0, 'g', 4),
+    emitEdit(tr("Change %1 to %2")
+                 .arg(name == QStringLiteral("speed") ? tr("speed") : name)
+                 .arg(value, 0, 'g', 4),
              QStringLiteral("param:") + name);
 }
 
@@ -257,7 +277,6 @@ void ParametersPanel::onSystemChosen(int index) {
     Scene next = m_scene;
     next.system.kind = kind;
     next.system.params = defaultSystemParams(kind);
-    m_scene = Scene{};
     setScene(next);
     emitEdit(tr("Choose the %1").arg(m_system->currentText()), {});
 }

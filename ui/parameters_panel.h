@@ -20,7 +20,7 @@ namespace chaplygin::ui {
 /// sceneEdited with the whole new scene; the owner validates it and pushes an undo step.
 class ParametersPanel : public QWidget {
     Q_OBJECT
-public:
+  public:
     explicit ParametersPanel(QWidget* parent = nullptr);
 
     /// Shows a scene without emitting sceneEdited.
@@ -33,18 +33,19 @@ public:
     QDoubleSpinBox* spinBox(const QString& name) const;
     QSlider* slider(const QString& name) const;
 
-signals:
+  signals:
     /// description names the change for the undo stack; edits with the same mergeKey merge.
     void sceneEdited(const Scene& scene, const QString& description, const QString& mergeKey);
 
-private:
+  private:
     struct Row {
         QDoubleSpinBox* spin = nullptr;
         QSlider* slider = nullptr;
     };
     void rebuildRows();
-    Row addRow(const QString& name, const QString& label, const QString& unit, double lo, double hi,
-               double value);
+    /// name: the key ("m", ..., "speed"); caption: the row's label; label: words for the tooltip.
+    Row addRow(const QString& name, const QString& caption, const QString& label,
+               const QString& unit, double lo, double hi, double value);
     void onValueChanged(const QString& name, double value);
     void onSystemChosen(int index);
     void onGyrationChosen(int index);

@@ -16,6 +16,11 @@
 
 namespace chaplygin::ui {
 
+namespace {
+// strokes are sampled every 10 px: 3 spacings irons out a shaky hand and keeps the shape
+constexpr double kDrawnSmoothing = 3.0;
+} // namespace
+
 PathPanel::PathPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
 
@@ -45,7 +50,8 @@ PathPanel::PathPanel(QWidget* parent) : QWidget(parent) {
     form->addRow(kinds);
     m_y = new QLineEdit;
     m_y->setObjectName(QStringLiteral("graphEdit"));
-    m_y->setToolTip(tr("y as a function of x [m], e.g. -sin(x) or 0.5*x + 1; press Enter to apply"));
+    m_y->setToolTip(
+        tr("y as a function of x [m], e.g. -sin(x) or 0.5*x + 1; press Enter to apply"));
     form->addRow(tr("y(x) ="), m_y);
     m_xu = new QLineEdit;
     m_xu->setToolTip(tr("x as a function of u [m], e.g. 2*cos(u)"));
@@ -60,7 +66,8 @@ PathPanel::PathPanel(QWidget* parent) : QWidget(parent) {
         s->setRange(-1e4, 1e4);
         s->setDecimals(4);
         s->setKeyboardTracking(false);
-        s->setToolTip(tr("The range of x [m] (graph) or of u (parametric), traversed from the first to the second"));
+        s->setToolTip(tr("The range of x [m] (graph) or of u (parametric), traversed from the "
+                         "first to the second"));
         range->addWidget(s);
     }
     m_rangeLabel = new QLabel(tr("x from, to"));
@@ -81,17 +88,31 @@ PathPanel::PathPanel(QWidget* parent) : QWidget(parent) {
     auto* dv = new QFormLayout(drawn);
     m_draw = new QPushButton(tr("&Draw on the canvas"));
     m_draw->setCheckable(true);
-    m_draw->setToolTip(tr("Press and drag on the canvas to draw a new path; it is sampled and smoothed"));
+    m_draw->setToolTip(
+        tr("Press and drag on the canvas to draw a new path; it is sampled and smoothed"));
     dv->addRow(m_draw);
     m_corners = new QComboBox;
     m_corners->addItem(tr("smooth (spline through the points)"), int(CornerMode::Smooth));
     m_corners->addItem(tr("pivot (straight segments, turn in place)"), int(CornerMode::Pivot));
     m_corners->setToolTip(tr("How a drawn path's corners are followed"));
     dv->addRow(tr("Corners"), m_corners);
+    m_smoothing = new QDoubleSpinBox;
+    m_smoothing->setRange(0, 20);
+    m_smoothing->setDecimals(1);
+    m_smoothing->setSingleStep(0.5);
+    m_smoothing->setValue(kDrawnSmoothing);
+    m_smoothing->setKeyboardTracking(false);
+    m_smoothing->setToolTip(
+        tr("Smooth corners: spline bandwidth in point spacings (0 passes through every point)"));
+    dv->addRow(tr("Smoothing"), m_smoothing);
     m_polylineInfo = new QLabel;
     dv->addRow(m_polylineInfo);
     layout->addWidget(drawn);
     layout->addStretch(1);
+    for (QComboBox* combo : findChildren<QComboBox*>()) {
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        combo->setMinimumContentsLength(10);
+    }
 
     connect(m_preset, &QComboBox::activated, this, [this](int index) {
         if (index > 0)
@@ -102,15 +123,25 @@ PathPanel::PathPanel(QWidget* parent) : QWidget(parent) {
         connect(e, &QLineEdit::returnPressed, this, &PathPanel::applyTyped);
     connect(m_apply, &QPushButton::clicked, this, &PathPanel::applyTyped);
     connect(m_draw, &QPushButton::toggled, this, &PathPanel::drawModeToggled);
-    connect(m_corners, &QComboBox::activated, this, [this] {
-        if (m_scene.path.kind == PathKind::Polyline && drawCorners() != m_scene.path.corners)
-            emit cornersChanged(drawCorners());
-    });
+    auto optionsChanged = [this] {
+        const PathSource& p = m_scene.path;
+        if (p.kind == PathKind::Polyline &&
+            (drawCorners() != p.corners || drawSmoothing() != p.smoothing))
+            emit drawOptionsChanged(drawCorners(), drawSmoothing());
+    };
+    connect(m_corners, &QComboBox::activated, this, optionsChanged);
+    connect(m_smoothing, &QDoubleSpinBox::valueChanged, this, optionsChanged);
     m_graph->setChecked(true);
     updateKind();
 }
 
-CornerMode PathPanel::drawCorners() const { return static_cast<CornerMode>(m_corners->currentData().toInt()); }
+CornerMode PathPanel::drawCorners() const {
+    return static_cast<CornerMode>(m_corners->currentData().toInt());
+}
+
+double PathPanel::drawSmoothing() const {
+    return m_smoothing->value();
+}
 
 void PathPanel::updateKind() {
     bool graph = m_graph->isChecked();
@@ -136,9 +167,13 @@ void PathPanel::setScene(const Scene& scene) {
         m_polylineInfo->clear();
     } else {
         m_corners->setCurrentIndex(m_corners->findData(int(p.corners)));
-        m_polylineInfo->setText(tr("Current path: %1 drawn points, %2 corners")
-                                    .arg(p.points.size())
-                                    .arg(p.corners == CornerMode::Pivot ? tr("pivot") : tr("smooth")));
+        m_smoothing->blockSignals(true);
+        m_smoothing->setValue(p.smoothing);
+        m_smoothing->blockSignals(false);
+        m_polylineInfo->setText(
+            tr("Current path: %1 drawn points, %2 corners")
+                .arg(p.points.size())
+                .arg(p.corners == CornerMode::Pivot ? tr("pivot") : tr("smooth")));
     }
     updateKind();
 }
@@ -148,7 +183,9 @@ void PathPanel::showError(const QString& message) {
     m_error->setVisible(!message.isEmpty());
 }
 
-QString PathPanel::errorText() const { return m_error->isVisible() ? m_error->text() : QString(); }
+QString PathPanel::errorText() const {
+    return m_error->isVisible() ? m_error->text() : QString();
+}
 
 void PathPanel::applyTyped() {
     PathSource source;

@@ -17,7 +17,7 @@ namespace chaplygin::ui {
 /// pivot or smooth corners.
 class PathPanel : public QWidget {
     Q_OBJECT
-public:
+  public:
     explicit PathPanel(QWidget* parent = nullptr);
 
     /// Shows the scene's path without emitting anything.
@@ -26,6 +26,8 @@ public:
     void showError(const QString& message);
     QString errorText() const;
     CornerMode drawCorners() const;
+    /// Spline bandwidth for smooth drawn paths, in point spacings (0 interpolates).
+    double drawSmoothing() const;
 
     QLineEdit* graphEdit() const { return m_y; }
     QLineEdit* xOfUEdit() const { return m_xu; }
@@ -38,15 +40,15 @@ public:
     QComboBox* presetBox() const { return m_preset; }
     QComboBox* cornersBox() const { return m_corners; }
 
-signals:
+  signals:
     void presetChosen(const QString& name);
     /// The user applied a typed path (Enter or Apply).
     void pathTyped(const PathSource& source);
     void drawModeToggled(bool on);
-    /// The corner mode changed while the current path is a polyline.
-    void cornersChanged(CornerMode mode);
+    /// The corner mode or the smoothing changed while the current path is a polyline.
+    void drawOptionsChanged(CornerMode mode, double smoothing);
 
-private:
+  private:
     void applyTyped();
     void updateKind();
 
@@ -65,6 +67,7 @@ private:
     QLabel* m_error;
     QPushButton* m_draw;
     QComboBox* m_corners;
+    QDoubleSpinBox* m_smoothing;
     QLabel* m_polylineInfo;
 };
 

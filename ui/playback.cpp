@@ -14,7 +14,9 @@ Playback::Playback(QObject* parent) : QObject(parent) {
     connect(&m_timer, &QTimer::timeout, this, &Playback::tick);
 }
 
-double Playback::stepSize() const { return std::max(m_tEnd / 400.0, 0.01); }
+double Playback::stepSize() const {
+    return std::max(m_tEnd / 400.0, 0.01);
+}
 
 void Playback::setTEnd(double tEnd) {
     m_tEnd = std::max(tEnd, 0.0);
@@ -47,7 +49,9 @@ void Playback::pause() {
     emit playingChanged(false);
 }
 
-void Playback::togglePlay() { isPlaying() ? pause() : play(); }
+void Playback::togglePlay() {
+    isPlaying() ? pause() : play();
+}
 
 void Playback::stepForward() {
     pause();
@@ -59,9 +63,13 @@ void Playback::stepBackward() {
     seek(m_time - stepSize());
 }
 
-void Playback::setLoop(bool loop) { m_loop = loop; }
+void Playback::setLoop(bool loop) {
+    m_loop = loop;
+}
 
-void Playback::setSpeedFactor(double factor) { m_factor = std::clamp(factor, 0.01, 100.0); }
+void Playback::setSpeedFactor(double factor) {
+    m_factor = std::clamp(factor, 0.01, 100.0);
+}
 
 void Playback::advance(double dtReal) {
     double t = m_time + dtReal * m_factor;

@@ -9,7 +9,7 @@ namespace chaplygin::ui {
 /// factor while playing, at most once per display frame.
 class Playback : public QObject {
     Q_OBJECT
-public:
+  public:
     explicit Playback(QObject* parent = nullptr);
 
     double time() const { return m_time; }
@@ -20,7 +20,7 @@ public:
     /// Simulated seconds per single step.
     double stepSize() const;
 
-public slots:
+  public slots:
     void setTEnd(double tEnd);
     void seek(double t);
     void play();
@@ -33,11 +33,11 @@ public slots:
     /// Advances by dt real seconds (what one tick does); public for benchmarks and tests.
     void advance(double dtReal);
 
-signals:
+  signals:
     void timeChanged(double t);
     void playingChanged(bool playing);
 
-private:
+  private:
     void tick();
 
     QTimer m_timer;

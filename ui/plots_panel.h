@@ -6,7 +6,7 @@
 #include <array>
 
 class QCustomPlot;
-class QCPItemStraightLine;
+class QGridLayout;
 
 namespace chaplygin::ui {
 
@@ -14,10 +14,10 @@ class SceneDocument;
 
 /// The plots dock: Psi, chi, lambda and the kinetic energy against t, each drawn by drawPlot
 /// (so they look like the exported plots) with the free motion alongside, and a time cursor
-/// on its own buffered layer so that moving it repaints only that layer. Clicking seeks.
+/// that is a thin child widget, so that moving it repaints two narrow strips. Clicking seeks.
 class PlotsPanel : public QWidget {
     Q_OBJECT
-public:
+  public:
     static constexpr std::array<PlotKind, 4> kKinds{PlotKind::Psi, PlotKind::Chi, PlotKind::Lambda,
                                                     PlotKind::Energy};
 
@@ -25,24 +25,31 @@ public:
 
     QCustomPlot* plot(int index) const { return m_plots[index]; }
     double cursorTime() const { return m_time; }
+    /// The time cursor drawn over a plot.
+    QWidget* cursor(int index) const { return m_cursors[index]; }
 
-public slots:
+  public slots:
     /// Hands the document's series to the plots (after each recompute).
     void refresh();
     void setTime(double t);
     /// Repaints every plot now (for screenshots and the benchmark).
     void replotNow();
 
-signals:
+  signals:
     void seekRequested(double t);
 
-private:
+  protected:
+    void resizeEvent(QResizeEvent* e) override;
+
+  private:
     void placeCursor(int index);
 
     SceneDocument* m_document;
     std::array<QCustomPlot*, 4> m_plots{};
-    std::array<QCPItemStraightLine*, 4> m_cursors{};
+    std::array<QWidget*, 4> m_cursors{};
     double m_time = 0;
+    QGridLayout* m_grid;
+    int m_columns = 2;
 };
 
 } // namespace chaplygin::ui

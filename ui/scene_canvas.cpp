@@ -18,7 +18,9 @@ namespace {
 
 const QColor kControlled(0x1f, 0x77, 0xb4);
 const QColor kFree(0xd6, 0x27, 0x28);
-constexpr double kStrokeSpacingPx = 10; // drawn points closer than this are dropped
+constexpr double kStrokeSpacingPx = 10;    // drawn points closer than this are dropped
+constexpr double kVertexPickPx = 8;        // how near a click must be to grab a vertex
+constexpr int kTopPx = 26, kLegendPx = 62; // the time line and the legend
 
 QPen cosmetic(const QColor& c, double w, Qt::PenStyle style = Qt::SolidLine) {
     QPen pen(c, w, style);
@@ -38,6 +40,11 @@ QColor curvatureColor(double kappa) {
                             flat.blueF() + w * (turn.blueF() - flat.blueF()));
 }
 
+// halfway to white, opaque (overlapping segments do not darken)
+QColor pale(const QColor& c) {
+    return QColor::fromRgbF(0.5 + 0.5 * c.redF(), 0.5 + 0.5 * c.greenF(), 0.5 + 0.5 * c.blueF());
+}
+
 } // namespace
 
 SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
@@ -46,7 +53,7 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
     setMouseTracking(false);
     setAutoFillBackground(false);
     setAttribute(Qt::WA_OpaquePaintEvent);
-    setToolTip(tr("Wheel: zoom; drag: pan; F: fit scene; B: follow body"));
+    setToolTip(tr("Wheel or +/-: zoom; drag or arrows: pan; F: fit scene; B: follow body"));
     connect(document, &SceneDocument::solutionChanged, this, &SceneCanvas::onSolutionChanged);
 }
 
@@ -58,12 +65,17 @@ QTransform SceneCanvas::worldTransform() const {
     return t;
 }
 
-QPointF SceneCanvas::toPixel(QPointF world) const { return worldTransform().map(world); }
+QPointF SceneCanvas::toPixel(QPointF world) const {
+    return worldTransform().map(world);
+}
 
-QPointF SceneCanvas::toWorld(QPointF pixel) const { return worldTransform().inverted().map(pixel); }
+QPointF SceneCanvas::toWorld(QPointF pixel) const {
+    return worldTransform().inverted().map(pixel);
+}
 
 void SceneCanvas::onSolutionChanged() {
-    if (m_autoFit)
+    // a new path is fitted; a parameter change keeps the view steady while a slider moves
+    if (m_autoFit && m_document->solution()->path() != m_fittedPath)
         fitScene();
     if (m_follow)
         centreOnBody();
@@ -115,9 +127,11 @@ void SceneCanvas::fitScene() {
     QRectF box(QPointF(x0, y0), QPointF(x1, y1));
     double pad = bodyExtent(solution->scene().system, solution->system());
     box.adjust(-pad, -pad, pad, pad);
-    m_centre = box.center();
-    double w = std::max(width(), 100), h = std::max(height(), 100);
+    // the scene goes between the time line at the top and the legend at the bottom
+    double w = std::max(width(), 100), h = std::max(height() - kTopPx - kLegendPx, 100);
     m_scale = std::clamp(std::min(w / box.width(), h / box.height()) * 0.95, 1e-3, 1e5);
+    m_centre = box.center() - QPointF(0, 0.5 * (kTopPx - kLegendPx) / m_scale);
+    m_fittedPath = solution->path();
     m_autoFit = true;
     setFollowBody(false);
     update();
@@ -154,8 +168,14 @@ void SceneCanvas::resizeEvent(QResizeEvent*) {
 }
 
 void SceneCanvas::paintGrid(QPainter& p) const {
-    // grid lines every 10^k metres, at least 40 px apart
-    double step = std::pow(10.0, std::ceil(std::log10(40.0 / m_scale)));
+    // grid lines every 1, 2 or 5 x 10^k metres, at least 40 px apart
+    double decade = std::pow(10.0, std::floor(std::log10(40.0 / m_scale)));
+    double step = decade;
+    for (double f : {1.0, 2.0, 5.0, 10.0})
+        if (f * decade * m_scale >= 40) {
+            step = f * decade;
+            break;
+        }
     QPointF a = toWorld(QPointF(0, height())), b = toWorld(QPointF(width(), 0));
     p.setPen(cosmetic(QColor(232, 232, 232), 1));
     for (double x = std::floor(a.x() / step) * step; x <= b.x(); x += step)
@@ -165,6 +185,19 @@ void SceneCanvas::paintGrid(QPainter& p) const {
     p.setPen(cosmetic(QColor(200, 200, 200), 1));
     p.drawLine(toPixel({a.x(), 0}), toPixel({b.x(), 0}));
     p.drawLine(toPixel({0, a.y()}), toPixel({0, b.y()}));
+    // scale bar, top right: one grid step
+    double len = step * m_scale;
+    QPointF right(width() - 14, 24), left = right - QPointF(len, 0);
+    p.setPen(cosmetic(QColor(60, 60, 60), 1.5));
+    p.drawLine(left, right);
+    p.drawLine(left, left - QPointF(0, 5));
+    p.drawLine(right, right - QPointF(0, 5));
+    QFont f = font();
+    f.setPointSizeF(8);
+    p.setFont(f);
+    QString label =
+        step >= 1 ? QStringLiteral("%1 m").arg(step) : QStringLiteral("%1 cm").arg(step * 100);
+    p.drawText(QRectF(left.x() - 40, left.y() - 20, len + 80, 14), Qt::AlignCenter, label);
 }
 
 void SceneCanvas::paintPath(QPainter& p) const {
@@ -178,10 +211,22 @@ void SceneCanvas::paintPath(QPainter& p) const {
         }
         const auto& nodes = piece.table->nodes();
         for (std::size_t i = 1; i < nodes.size(); ++i) {
-            p.setPen(cosmetic(curvatureColor(0.5 * (nodes[i - 1].kappa + nodes[i].kappa)), 3));
-            p.drawLine(toPixel({nodes[i - 1].x, nodes[i - 1].y}), toPixel({nodes[i].x, nodes[i].y}));
+            // a wide pale band, so that the trail on top of it stays visible
+            QPen pen =
+                cosmetic(pale(curvatureColor(0.5 * (nodes[i - 1].kappa + nodes[i].kappa))), 6);
+            pen.setCapStyle(Qt::FlatCap);
+            p.setPen(pen);
+            p.drawLine(toPixel({nodes[i - 1].x, nodes[i - 1].y}),
+                       toPixel({nodes[i].x, nodes[i].y}));
         }
     }
+    // start (filled) and end (open) of the path
+    const Path& path = *solution->path();
+    p.setPen(cosmetic(QColor(40, 40, 40), 1.5));
+    p.setBrush(QColor(40, 40, 40));
+    p.drawEllipse(toPixel({path.start().x, path.start().y}), 4, 4);
+    p.setBrush(Qt::white);
+    p.drawRect(QRectF(toPixel({path.end().x, path.end().y}) - QPointF(4, 4), QSizeF(8, 8)));
 }
 
 void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now) const {
@@ -198,7 +243,7 @@ void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now) const {
     QColor free = kFree;
     free.setAlpha(150);
     trail(s.freeT, s.freeX, s.freeY, {now.free.x, now.free.y}, cosmetic(free, 1.5, Qt::DashLine));
-    trail(s.t, s.x, s.y, {now.x, now.y}, cosmetic(kControlled, 1.5));
+    trail(s.t, s.x, s.y, {now.x, now.y}, cosmetic(kControlled.darker(150), 2));
 }
 
 void SceneCanvas::paintLegend(QPainter& p) const {
@@ -206,21 +251,26 @@ void SceneCanvas::paintLegend(QPainter& p) const {
     f.setPointSizeF(9);
     p.setFont(f);
     int y = height() - 54;
-    p.setPen(cosmetic(kControlled, 2));
+    p.setPen(cosmetic(kControlled.darker(150), 2));
     p.drawLine(10, y, 34, y);
     p.setPen(cosmetic(kFree, 2, Qt::DashLine));
     p.drawLine(10, y + 16, 34, y + 16);
     for (int i = 0; i < 24; ++i) {
-        p.setPen(cosmetic(curvatureColor((i - 11.5) / 4.0), 3));
+        QPen pen = cosmetic(pale(curvatureColor((i - 11.5) / 4.0)), 6);
+        pen.setCapStyle(Qt::FlatCap);
+        p.setPen(pen);
         p.drawLine(10 + i, y + 32, 11 + i, y + 32);
     }
     p.setPen(Qt::black);
-    p.drawText(40, y + 4, tr("controlled body (tracks the path)"));
-    p.drawText(40, y + 20, tr("free motion from the same start (ghost)"));
-    p.drawText(40, y + 36, tr("path curvature \u03ba: red right turn, grey straight, blue left turn"));
+    p.drawText(40, y + 4, tr("controlled body and its trail (tracks the path)"));
+    p.drawText(40, y + 20, tr("free motion from the same start (translucent ghost)"));
+    p.drawText(40, y + 36,
+               tr("path (\u25cf start, \u25a1 end), coloured by its curvature \u03ba: red right "
+                  "turn, grey straight, blue left turn"));
     if (m_drawMode)
         p.drawText(QRectF(8, 24, width() - 16, 20), Qt::AlignLeft,
-                   tr("Draw mode: press and drag to draw a new path; right button pans"));
+                   tr("Draw mode: drag to draw a new path; drag a square to move a point, "
+                      "right-click it to delete it"));
 }
 
 void SceneCanvas::paintBackground() {
@@ -254,8 +304,9 @@ void SceneCanvas::paintEvent(QPaintEvent*) {
         const SystemSpec& spec = solution->scene().system;
         p.save();
         p.setTransform(worldTransform());
-        paintBody(p, spec, solution->system(), {now.free.x, now.free.y, now.free.phi}, kFree, true);
+        // the translucent ghost on top, so that both stay visible where they overlap
         paintBody(p, spec, solution->system(), {now.x, now.y, now.phi}, kControlled, false);
+        paintBody(p, spec, solution->system(), {now.free.x, now.free.y, now.free.phi}, kFree, true);
         p.restore();
         QFont f = font();
         f.setPointSizeF(9);
@@ -267,12 +318,52 @@ void SceneCanvas::paintEvent(QPaintEvent*) {
                        .arg(solution->tEnd(), 0, 'f', 2)
                        .arg(m_scale, 0, 'g', 3));
     }
+    if (m_drawMode)
+        paintVertices(p);
     if (m_stroke.size() > 1) {
         QPolygonF line;
         for (QPointF w : m_stroke)
             line << toPixel(w);
         p.setPen(cosmetic(QColor(40, 40, 40), 2));
         p.drawPolyline(line);
+    }
+}
+
+std::vector<std::pair<double, double>> SceneCanvas::drawnPoints() const {
+    const auto& solution = m_document->solution();
+    if (!solution || solution->scene().path.kind != PathKind::Polyline)
+        return {};
+    return solution->scene().path.points;
+}
+
+int SceneCanvas::vertexAt(QPointF pos) const {
+    const auto points = drawnPoints();
+    int best = -1;
+    double bestDistance = kVertexPickPx;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        double d = QLineF(toPixel({points[i].first, points[i].second}), pos).length();
+        if (d <= bestDistance) {
+            bestDistance = d;
+            best = int(i);
+        }
+    }
+    return best;
+}
+
+void SceneCanvas::paintVertices(QPainter& p) const {
+    const auto points = m_dragVertex >= 0 ? m_editPoints : drawnPoints();
+    if (m_dragVertex >= 0) {
+        QPolygonF line;
+        for (const auto& [x, y] : points)
+            line << toPixel({x, y});
+        p.setPen(cosmetic(QColor(60, 60, 60), 1, Qt::DashLine));
+        p.drawPolyline(line);
+    }
+    p.setPen(cosmetic(QColor(60, 60, 60), 1));
+    p.setBrush(QColor(255, 255, 255, 220));
+    for (const auto& [x, y] : points) {
+        QPointF c = toPixel({x, y});
+        p.drawRect(QRectF(c.x() - 3, c.y() - 3, 6, 6));
     }
 }
 
@@ -290,7 +381,17 @@ void SceneCanvas::wheelEvent(QWheelEvent* e) {
 
 void SceneCanvas::mousePressEvent(QMouseEvent* e) {
     m_lastMouse = e->position();
-    if (m_drawMode && e->button() == Qt::LeftButton) {
+    int vertex = m_drawMode ? vertexAt(e->position()) : -1;
+    if (vertex >= 0 && e->button() == Qt::LeftButton) {
+        m_dragVertex = vertex;
+        m_editPoints = drawnPoints();
+    } else if (vertex >= 0 && e->button() == Qt::RightButton) {
+        auto points = drawnPoints();
+        if (points.size() > 2) {
+            points.erase(points.begin() + vertex);
+            emit pointsEdited(points);
+        }
+    } else if (m_drawMode && e->button() == Qt::LeftButton) {
         m_stroke = {toWorld(e->position())};
     } else {
         m_panning = true;
@@ -300,7 +401,11 @@ void SceneCanvas::mousePressEvent(QMouseEvent* e) {
 }
 
 void SceneCanvas::mouseMoveEvent(QMouseEvent* e) {
-    if (m_drawMode && !m_stroke.empty() && (e->buttons() & Qt::LeftButton)) {
+    if (m_dragVertex >= 0) {
+        QPointF w = toWorld(e->position());
+        m_editPoints[std::size_t(m_dragVertex)] = {w.x(), w.y()};
+        update();
+    } else if (m_drawMode && !m_stroke.empty() && (e->buttons() & Qt::LeftButton)) {
         if (QLineF(toPixel(m_stroke.back()), e->position()).length() >= kStrokeSpacingPx) {
             m_stroke.push_back(toWorld(e->position()));
             update();
@@ -316,6 +421,14 @@ void SceneCanvas::mouseMoveEvent(QMouseEvent* e) {
 }
 
 void SceneCanvas::mouseReleaseEvent(QMouseEvent* e) {
+    if (m_dragVertex >= 0 && e->button() == Qt::LeftButton) {
+        QPointF w = toWorld(e->position());
+        m_editPoints[std::size_t(m_dragVertex)] = {w.x(), w.y()};
+        m_dragVertex = -1;
+        update();
+        emit pointsEdited(m_editPoints);
+        return;
+    }
     if (m_drawMode && e->button() == Qt::LeftButton && !m_stroke.empty()) {
         if (QLineF(toPixel(m_stroke.back()), e->position()).length() >= kStrokeSpacingPx / 2)
             m_stroke.push_back(toWorld(e->position()));
@@ -348,6 +461,19 @@ void SceneCanvas::keyPressEvent(QKeyEvent* e) {
     case Qt::Key_B:
         setFollowBody(!m_follow);
         break;
+    case Qt::Key_Left:
+    case Qt::Key_Right:
+    case Qt::Key_Up:
+    case Qt::Key_Down: {
+        // arrows pan by a tenth of the view
+        double dx = e->key() == Qt::Key_Left ? -1 : e->key() == Qt::Key_Right ? 1 : 0;
+        double dy = e->key() == Qt::Key_Down ? -1 : e->key() == Qt::Key_Up ? 1 : 0;
+        m_centre += QPointF(dx * width(), dy * height()) * (0.1 / m_scale);
+        m_autoFit = false;
+        setFollowBody(false);
+        update();
+        break;
+    }
     default:
         QWidget::keyPressEvent(e);
     }

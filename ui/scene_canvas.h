@@ -7,6 +7,7 @@
 #include <QPointF>
 #include <QWidget>
 
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -19,7 +20,7 @@ class SceneDocument;
 /// Wheel zooms about the cursor, dragging pans; in draw mode the left button draws a path.
 class SceneCanvas : public QWidget {
     Q_OBJECT
-public:
+  public:
     explicit SceneCanvas(SceneDocument* document, QWidget* parent = nullptr);
 
     double time() const { return m_time; }
@@ -33,19 +34,21 @@ public:
 
     QSize sizeHint() const override { return {800, 500}; }
 
-public slots:
+  public slots:
     void setTime(double t);
     void fitScene();
     void setFollowBody(bool follow);
     void setDrawMode(bool on);
     void zoomBy(double factor);
 
-signals:
+  signals:
     /// The user finished drawing a stroke: sampled points in metres, in order.
     void pathDrawn(const std::vector<std::pair<double, double>>& points);
+    /// The user moved (drag) or deleted (right click) a vertex of the drawn path in draw mode.
+    void pointsEdited(const std::vector<std::pair<double, double>>& points);
     void followBodyChanged(bool follow);
 
-protected:
+  protected:
     void paintEvent(QPaintEvent*) override;
     void wheelEvent(QWheelEvent* e) override;
     void mousePressEvent(QMouseEvent* e) override;
@@ -54,7 +57,7 @@ protected:
     void keyPressEvent(QKeyEvent* e) override;
     void resizeEvent(QResizeEvent* e) override;
 
-private:
+  private:
     void onSolutionChanged();
     QTransform worldTransform() const;
     void paintGrid(QPainter& p) const;
@@ -63,17 +66,25 @@ private:
     void paintLegend(QPainter& p) const;
     void paintBackground();
     void centreOnBody();
+    /// The vertices of the current drawn path (empty unless it is a polyline).
+    std::vector<std::pair<double, double>> drawnPoints() const;
+    /// The vertex within a few pixels of pos, or -1.
+    int vertexAt(QPointF pos) const;
+    void paintVertices(QPainter& p) const;
 
     SceneDocument* m_document;
     double m_time = 0;
     double m_scale = 50; // px per metre
     QPointF m_centre;    // world point at the widget centre
     bool m_follow = false;
+    std::shared_ptr<const Path> m_fittedPath; // the path the view was last fitted to
     bool m_autoFit = true; // refit on resize and new solutions until the user zooms or pans
     bool m_drawMode = false;
     bool m_panning = false;
     QPointF m_lastMouse;
     std::vector<QPointF> m_stroke; // world points of the stroke being drawn
+    int m_dragVertex = -1;         // the vertex being dragged, or -1
+    std::vector<std::pair<double, double>> m_editPoints;
     struct BackgroundKey {
         const Solution* solution = nullptr;
         QSize size;

@@ -12,16 +12,17 @@ namespace chaplygin::ui {
 /// applies either through a callback. Consecutive edits with the same non-empty merge key (one
 /// slider drag) merge into one step.
 class SceneCommand : public QUndoCommand {
-public:
+  public:
     using Apply = std::function<void(const Scene&)>;
-    SceneCommand(const QString& text, Scene before, Scene after, Apply apply, QString mergeKey = {});
+    SceneCommand(const QString& text, Scene before, Scene after, Apply apply,
+                 QString mergeKey = {});
 
     void undo() override;
     void redo() override;
     int id() const override { return m_mergeKey.isEmpty() ? -1 : 1; }
     bool mergeWith(const QUndoCommand* other) override;
 
-private:
+  private:
     Scene m_before, m_after;
     Apply m_apply;
     QString m_mergeKey;

@@ -2,25 +2,29 @@
 
 #include "common/input_error.h"
 
+#include <algorithm>
 #include <exception>
 
 namespace chaplygin::ui {
 
 namespace {
 constexpr std::size_t kPathCacheSize = 8;
-}
+constexpr qint64 kFrameMs = 16;
+} // namespace
 
 SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {
     m_timer.setSingleShot(true);
-    m_timer.setInterval(0);
     connect(&m_timer, &QTimer::timeout, this, &SceneDocument::recompute);
 }
 
 void SceneDocument::setScene(const Scene& scene) {
     m_scene = scene;
     m_dirty = true;
-    if (!m_timer.isActive())
-        m_timer.start();
+    if (m_timer.isActive())
+        return;
+    // at most one recompute per display frame, however fast the slider events arrive
+    qint64 since = m_lastRecompute.isValid() ? m_lastRecompute.elapsed() : kFrameMs;
+    m_timer.start(int(std::max<qint64>(0, kFrameMs - since)));
 }
 
 void SceneDocument::setSceneNow(const Scene& scene) {
@@ -60,11 +64,13 @@ void SceneDocument::setFileName(const QString& name) {
 
 void SceneDocument::recompute() {
     m_dirty = false;
+    m_lastRecompute.start();
     QString error;
     try {
         // only the cheap stages rerun when the path is cached
-        auto solution = std::make_shared<const Solution>(Solution::compute(m_scene, pathFor(m_scene.path)));
-        m_series = collectSeries(*solution);
+        auto solution =
+            std::make_shared<const Solution>(Solution::compute(m_scene, pathFor(m_scene.path)));
+        m_series = collectSeries(*solution, kFreeSamples);
         m_solution = std::move(solution);
     } catch (const InputError& e) {
         error = QString::fromStdString(e.what());

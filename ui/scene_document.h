@@ -3,6 +3,7 @@
 #include "scene/scene.h"
 #include "scene/solution.h"
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 #include <QTimer>
@@ -15,13 +16,16 @@
 namespace chaplygin::ui {
 
 /// The open scene and its latest valid Solution, shared by every view. Scene changes are
-/// coalesced: setScene() only marks the document dirty, and one recompute runs on the next turn of
-/// the event loop with the latest scene (at most one per frame while a slider moves). A scene
-/// that fails leaves the last valid Solution in place and reports the InputError.
+/// coalesced: setScene() only marks the document dirty, and one recompute runs with the latest
+/// scene on the next turn of the event loop, at most one per 16 ms frame while a slider moves. A
+/// scene that fails leaves the last valid Solution in place and reports the InputError.
 class SceneDocument : public QObject {
     Q_OBJECT
-public:
+  public:
     explicit SceneDocument(QObject* parent = nullptr);
+
+    /// Free-motion samples for the live plots and the ghost's trail (each costs a Solution::at).
+    static constexpr int kFreeSamples = 120;
 
     /// The scene as the user last set it (may be the one that failed).
     const Scene& scene() const { return m_scene; }
@@ -46,19 +50,20 @@ public:
     const QString& fileName() const { return m_fileName; }
     void setFileName(const QString& name);
 
-signals:
+  signals:
     /// A new valid solution (and series) is in place.
     void solutionChanged();
     /// error is empty when the latest scene solved.
     void errorChanged(const QString& error);
     void fileNameChanged(const QString& name);
 
-private:
+  private:
     void recompute();
 
     Scene m_scene;
     bool m_dirty = false;
     QTimer m_timer;
+    QElapsedTimer m_lastRecompute;
     std::shared_ptr<const Solution> m_solution;
     PlotSeries m_series;
     QString m_error;

@@ -25,7 +25,9 @@ void exportCsvFile(const QString& path, const Solution& solution, int rows) {
     writeFileAtomically(path.toStdString(), text);
 }
 
-QStringList recentFiles() { return QSettings().value(kRecentKey).toStringList(); }
+QStringList recentFiles() {
+    return QSettings().value(kRecentKey).toStringList();
+}
 
 void addRecentFile(const QString& path) {
     QString full = QFileInfo(path).absoluteFilePath();

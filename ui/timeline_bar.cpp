@@ -25,7 +25,8 @@ TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
     m_play = addAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("&Play"));
     m_play->setShortcut(Qt::Key_Space);
     m_play->setToolTip(tr("Play or pause (Space)"));
-    m_stepForward = addAction(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("Step &forward"));
+    m_stepForward =
+        addAction(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("Step &forward"));
     m_stepForward->setShortcut(Qt::Key_Period);
     m_stepForward->setToolTip(tr("One step forward (.)"));
     m_loop = addAction(tr("Loop"));
@@ -58,7 +59,8 @@ TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
     });
     connect(playback, &Playback::timeChanged, this, &TimelineBar::sync);
     connect(playback, &Playback::playingChanged, this, [this](bool playing) {
-        m_play->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+        m_play->setIcon(
+            style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
         m_play->setText(playing ? tr("&Pause") : tr("&Play"));
     });
     sync();
@@ -67,8 +69,10 @@ TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
 void TimelineBar::sync() {
     m_syncing = true;
     double end = m_playback->tEnd();
-    m_slider->setValue(end > 0 ? static_cast<int>(std::lround(m_playback->time() / end * kSliderSteps)) : 0);
-    m_timeLabel->setText(tr(" t = %1 s / %2 s").arg(m_playback->time(), 0, 'f', 2).arg(end, 0, 'f', 2));
+    m_slider->setValue(
+        end > 0 ? static_cast<int>(std::lround(m_playback->time() / end * kSliderSteps)) : 0);
+    m_timeLabel->setText(
+        tr(" t = %1 s / %2 s").arg(m_playback->time(), 0, 'f', 2).arg(end, 0, 'f', 2));
     m_syncing = false;
 }
 

@@ -14,7 +14,7 @@ class Playback;
 /// slider with the time shown.
 class TimelineBar : public QToolBar {
     Q_OBJECT
-public:
+  public:
     explicit TimelineBar(Playback* playback, QWidget* parent = nullptr);
 
     QAction* playAction() const { return m_play; }
@@ -25,11 +25,11 @@ public:
     QComboBox* speedBox() const { return m_speed; }
     QLabel* timeLabel() const { return m_timeLabel; }
 
-public slots:
+  public slots:
     /// Follows the clock (and a new horizon).
     void sync();
 
-private:
+  private:
     Playback* m_playback;
     QAction* m_play;
     QAction* m_stepBack;

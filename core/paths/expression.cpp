@@ -7,7 +7,9 @@
 
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <mutex>
 #include <set>
 #include <sstream>
@@ -73,6 +75,20 @@ void checkCharactersAndNames(const std::string& text, const std::string& variabl
                 while (j < text.size() && std::isdigit(static_cast<unsigned char>(text[j])))
                     ++j;
             }
+            // a literal must be a normal double; this also keeps GiNaC from building 10^(10^11)
+            std::string literal = text.substr(i, j - i);
+            errno = 0;
+            double value = std::strtod(literal.c_str(), nullptr);
+            std::size_t exponent = literal.find_first_of("eE");
+            std::size_t exponentDigits =
+                exponent == std::string::npos
+                    ? 0
+                    : literal.size() - exponent - 1 -
+                          (literal[exponent + 1] == '-' || literal[exponent + 1] == '+');
+            if (errno == ERANGE || !std::isfinite(value) || exponentDigits > 3)
+                throw InputError(at(label, i),
+                                 "the number '" + literal.substr(0, 40) +
+                                     "' is out of range (|x| from 2.2e-308 to 1.8e308, at most 3 exponent digits)");
             i = j;
             continue;
         }

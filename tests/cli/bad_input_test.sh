@@ -11,6 +11,8 @@ args=$(echo "$line" | awk -F' [|] ' '{print $3}')
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 args=${args//OUTDIR/$work/plots}
+printf '{"format": "chaplygin-lab-scene", "version": 1e400}' > "$work/overflow.json"
+args=${args//SCENE_OVERFLOW/$work/overflow.json}
 eval "set -- $args"
 "$exe" --headless "$@" --csv "$work/out.csv" --summary "$work/out.json" >"$work/stdout" 2>"$work/stderr"
 status=$?

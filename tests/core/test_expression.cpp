@@ -78,6 +78,13 @@ TEST(Expression, ErrorsNamePositionAndProblem) {
     EXPECT_NE(errorOf("sin()").find("position"), std::string::npos) << errorOf("sin()");
     EXPECT_NE(errorOf("_pi*x").find("unknown name '_pi'"), std::string::npos) << errorOf("_pi*x");
     EXPECT_NE(errorOf(std::string(20000, '1')).find("20000 characters"), std::string::npos);
+    // found by fuzz_expression: GiNaC would build 10^112222222222 digit by digit
+    EXPECT_NE(
+        errorOf("0e112222222222").find("position 1: the number '0e112222222222' is out of range"),
+        std::string::npos)
+        << errorOf("0e112222222222");
+    EXPECT_NE(errorOf("x*1e-400").find("position 3"), std::string::npos) << errorOf("x*1e-400");
+    EXPECT_NE(errorOf("1e309").find("out of range"), std::string::npos);
     std::string deep = std::string(150, '(') + "x" + std::string(150, ')');
     EXPECT_NE(errorOf(deep).find("nested deeper"), std::string::npos);
 }

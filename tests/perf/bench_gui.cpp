@@ -2,11 +2,11 @@
 // under the offscreen platform.
 #include "main_window.h"
 #include "playback.h"
+#include "plot_series.h"
 #include "plots_panel.h"
 #include "scene/presets.h"
 #include "scene_canvas.h"
 #include "scene_document.h"
-#include "plot_series.h"
 
 #include <QApplication>
 #include <qcustomplot.h>
@@ -27,6 +27,16 @@ void BM_RecomputeOnParameterChange(benchmark::State& state) {
     SceneDocument document;
     PlotsPanel plots(&document);
     Scene scene = presetScene("sinusoid");
+    if (state.range(0) == 1) {
+        // a freehand path: 200 points on a wobbly spiral, smooth corners
+        scene.path = PathSource{};
+        scene.path.kind = PathKind::Polyline;
+        scene.path.corners = CornerMode::Smooth;
+        for (int i = 0; i < 200; ++i) {
+            double u = 0.05 * i, r = 1 + 0.3 * u + 0.05 * std::sin(7.0 * u);
+            scene.path.points.emplace_back(r * std::cos(u), r * std::sin(u));
+        }
+    }
     document.setSceneNow(scene);
     double b = 1.0;
     for (auto _ : state) {
@@ -38,7 +48,12 @@ void BM_RecomputeOnParameterChange(benchmark::State& state) {
     if (!document.error().isEmpty())
         state.SkipWithError(document.error().toStdString().c_str());
 }
-BENCHMARK(BM_RecomputeOnParameterChange)->Unit(benchmark::kMillisecond);
+// 0: the sinusoid preset (the target); 1: a 200-point drawn path
+BENCHMARK(BM_RecomputeOnParameterChange)
+    ->ArgName("drawn")
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMillisecond);
 
 // a typed path edited: every iteration a new expression, so the path is tabulated again
 void BM_RecomputeOnPathChange(benchmark::State& state) {
@@ -72,7 +87,7 @@ BENCHMARK(BM_StageSolve)->Unit(benchmark::kMillisecond);
 void BM_StageCollectSeries(benchmark::State& state) {
     Solution s = Solution::compute(presetScene("sinusoid"));
     for (auto _ : state)
-        benchmark::DoNotOptimize(collectSeries(s).psi.data());
+        benchmark::DoNotOptimize(collectSeries(s, SceneDocument::kFreeSamples).psi.data());
 }
 BENCHMARK(BM_StageCollectSeries)->Unit(benchmark::kMillisecond);
 
@@ -85,6 +100,16 @@ void BM_StageDrawPlots(benchmark::State& state) {
 }
 BENCHMARK(BM_StageDrawPlots)->Unit(benchmark::kMillisecond);
 
+// counts the paint events a widget receives
+class PaintCounter : public QObject {
+  public:
+    int count = 0;
+    bool eventFilter(QObject*, QEvent* e) override {
+        count += e->type() == QEvent::Paint ? 1 : 0;
+        return false;
+    }
+};
+
 // one animation frame at 1280x800: advance the clock, repaint the canvas and the four plots
 void BM_AnimationFrame(benchmark::State& state) {
     MainWindow window(false);
@@ -94,15 +119,34 @@ void BM_AnimationFrame(benchmark::State& state) {
     window.plotsPanel()->replotNow();
     Playback* playback = window.playback();
     playback->setLoop(true);
+    playback->setSpeedFactor(double(state.range(0)));    // x1, or x4: every cursor moves by pixels
+    window.canvas()->setFollowBody(state.range(1) != 0); // following redraws the cached background
+    PaintCounter canvasPaints, plotPaints;
+    window.canvas()->installEventFilter(&canvasPaints);
+    for (int i = 0; i < 4; ++i)
+        window.plotsPanel()->plot(i)->installEventFilter(&plotPaints);
     for (auto _ : state) {
+        // the clock moves the canvas and the plots' cursors; Qt then paints the dirty widgets
+        // in one pass and flushes the window once, as in a real frame
         playback->advance(1.0 / 60);
-        window.canvas()->repaint();
-        for (int i = 0; i < 4; ++i)
-            window.plotsPanel()->plot(i)->repaint();
+        if (state.range(2) != 0) // worst case: every plot repaints as a whole, not a strip
+            for (int i = 0; i < 4; ++i)
+                window.plotsPanel()->plot(i)->update();
+        QCoreApplication::processEvents();
     }
-    state.counters["t_end"] = playback->tEnd();
+    // the canvas repaints every frame; a plot repaints when its cursor moves by a pixel or more
+    state.counters["canvas_paints"] =
+        benchmark::Counter(canvasPaints.count, benchmark::Counter::kAvgIterations);
+    state.counters["plot_paints"] =
+        benchmark::Counter(plotPaints.count, benchmark::Counter::kAvgIterations);
 }
-BENCHMARK(BM_AnimationFrame)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AnimationFrame)
+    ->ArgNames({"speed", "follow", "whole"})
+    ->Args({1, 0, 0})
+    ->Args({4, 0, 0})
+    ->Args({1, 1, 0})
+    ->Args({1, 0, 1})
+    ->Unit(benchmark::kMillisecond);
 
 // the breakdown of a frame: the canvas alone, the plots' cursor alone
 void BM_StageFrameCanvas(benchmark::State& state) {

@@ -12,15 +12,20 @@
 #include "timeline_bar.h"
 
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFileInfo>
 #include <QImage>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QStandardPaths>
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -60,29 +65,43 @@ void typeInto(QLineEdit* edit, const QString& text) {
 class TestMainWindow : public QObject {
     Q_OBJECT
 
-private slots:
+  private slots:
+    void initTestCase();
     void init();
     void cleanup();
 
     void typedValidPath();
     void typedInvalidPathKeepsLastValid();
     void drawPathWithMouse();
+    void editDrawnPathPoints();
     void parameterChangeUpdatesPlots();
+    void canvasDrawsBodiesAtTheirPoses();
+    void typedParametricPath();
     void sliderDragCoalesces();
     void invalidParameterKeepsSolution();
     void systemSwitch();
+    void gyrationAndModeSwitch();
     void playPauseSeek();
     void clickingPlotSeeks();
+    void spaceTypesInTextFields();
     void undoRedo();
     void saveLoadRoundTrip();
     void openBadFileKeepsScene();
     void exportFilesValid();
     void screenshotMode();
+    void settingsKeepRecentFilesAndLayout();
 
-private:
+  private:
     std::unique_ptr<MainWindow> m_window;
     QTemporaryDir m_dir;
 };
+
+void TestMainWindow::initTestCase() {
+    // QSettings go to a test location, never the user's
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName(QStringLiteral("ChaplyginLabTests"));
+    QCoreApplication::setApplicationName(QStringLiteral("ui_tests"));
+}
 
 void TestMainWindow::init() {
     m_window = std::make_unique<MainWindow>(false);
@@ -93,7 +112,9 @@ void TestMainWindow::init() {
     QVERIFY(m_window->document()->solution());
 }
 
-void TestMainWindow::cleanup() { m_window.reset(); }
+void TestMainWindow::cleanup() {
+    m_window.reset();
+}
 
 void TestMainWindow::typedValidPath() {
     PathPanel* panel = m_window->pathPanel();
@@ -120,7 +141,8 @@ void TestMainWindow::typedInvalidPathKeepsLastValid() {
     QTest::keyClick(panel->graphEdit(), Qt::Key_Return);
     m_window->document()->flush();
     QVERIFY2(!panel->errorText().isEmpty(), "an inline error is shown");
-    QVERIFY2(panel->errorText().contains(QStringLiteral("position")), qPrintable(panel->errorText()));
+    QVERIFY2(panel->errorText().contains(QStringLiteral("position")),
+             qPrintable(panel->errorText()));
     QVERIFY(panel->findChild<QLabel*>(QStringLiteral("pathError"))->isVisible());
     QCOMPARE(m_window->document()->solution(), before);
     QVERIFY(m_window->document()->scene() == sceneBefore);
@@ -129,7 +151,8 @@ void TestMainWindow::typedInvalidPathKeepsLastValid() {
     typeInto(panel->graphEdit(), QStringLiteral("sin(x)"));
     QTest::keyClick(panel->graphEdit(), Qt::Key_Return);
     QVERIFY(panel->errorText().isEmpty());
-    QCOMPARE(QString::fromStdString(m_window->document()->scene().path.y), QStringLiteral("sin(x)"));
+    QCOMPARE(QString::fromStdString(m_window->document()->scene().path.y),
+             QStringLiteral("sin(x)"));
 }
 
 void TestMainWindow::drawPathWithMouse() {
@@ -138,10 +161,12 @@ void TestMainWindow::drawPathWithMouse() {
     SceneCanvas* canvas = m_window->canvas();
     QVERIFY(canvas->drawMode());
     QPoint start(100, 200);
+    QPointF startWorld = canvas->toWorld(QPointF(start)); // before the view refits to the new path
     QTest::mousePress(canvas, Qt::LeftButton, {}, start);
     for (int i = 1; i <= 30; ++i) {
         QPoint p(100 + 15 * i, 200 - int(60 * std::sin(i / 5.0)));
-        QMouseEvent move(QEvent::MouseMove, p, canvas->mapToGlobal(p), Qt::NoButton, Qt::LeftButton, {});
+        QMouseEvent move(QEvent::MouseMove, p, canvas->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
+                         {});
         QApplication::sendEvent(canvas, &move);
     }
     QPoint end(100 + 15 * 30, 200 - int(60 * std::sin(6.0)));
@@ -152,11 +177,53 @@ void TestMainWindow::drawPathWithMouse() {
     QVERIFY2(path.points.size() >= 20, "the stroke is sampled");
     QCOMPARE(path.corners, CornerMode::Smooth);
     // the first point is where the mouse went down, in metres
-    QPointF first = canvas->toPixel(QPointF(path.points.front().first, path.points.front().second));
-    QVERIFY(QLineF(first, QPointF(start)).length() < 30); // the view may refit after the stroke
+    QVERIFY(std::abs(path.points.front().first - startWorld.x()) < 1e-9);
+    QVERIFY(std::abs(path.points.front().second - startWorld.y()) < 1e-9);
     QVERIFY(m_window->document()->error().isEmpty());
     QCOMPARE(m_window->document()->solution()->scene().path.kind, PathKind::Polyline);
     QVERIFY(m_window->document()->solution()->path()->length() > 1.0);
+}
+
+void TestMainWindow::editDrawnPathPoints() {
+    m_window->pathPanel()->cornersBox()->setCurrentIndex(1); // pivot
+    m_window->pathPanel()->drawButton()->click();
+    SceneCanvas* canvas = m_window->canvas();
+    QTest::mousePress(canvas, Qt::LeftButton, {}, QPoint(100, 300));
+    for (QPoint p : {QPoint(200, 300), QPoint(300, 200), QPoint(400, 200)}) {
+        QMouseEvent move(QEvent::MouseMove, p, canvas->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
+                         {});
+        QApplication::sendEvent(canvas, &move);
+    }
+    QTest::mouseRelease(canvas, Qt::LeftButton, {}, QPoint(500, 300));
+    m_window->document()->flush();
+    auto points = m_window->document()->scene().path.points;
+    QCOMPARE(points.size(), std::size_t(5));
+    QCOMPARE(m_window->document()->scene().path.corners, CornerMode::Pivot);
+    QCOMPARE(m_window->document()->solution()->path()->pivotCount(), 3);
+    // drag vertex 2 by (0, +40) px
+    QPoint from = canvas->toPixel(QPointF(points[2].first, points[2].second)).toPoint();
+    QPoint to = from + QPoint(0, 40);
+    QPointF target = canvas->toWorld(QPointF(to));
+    QTest::mousePress(canvas, Qt::LeftButton, {}, from);
+    QMouseEvent move(QEvent::MouseMove, to, canvas->mapToGlobal(to), Qt::NoButton, Qt::LeftButton,
+                     {});
+    QApplication::sendEvent(canvas, &move);
+    QTest::mouseRelease(canvas, Qt::LeftButton, {}, to);
+    m_window->document()->flush();
+    auto moved = m_window->document()->solution()->scene().path.points;
+    QCOMPARE(moved.size(), std::size_t(5));
+    QVERIFY(std::abs(moved[2].first - target.x()) < 1e-9);
+    QVERIFY(std::abs(moved[2].second - target.y()) < 1e-9);
+    QCOMPARE(moved[1], points[1]);
+    // right click deletes a vertex
+    QPoint third = canvas->toPixel(QPointF(moved[3].first, moved[3].second)).toPoint();
+    QTest::mousePress(canvas, Qt::RightButton, {}, third);
+    QTest::mouseRelease(canvas, Qt::RightButton, {}, third);
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->solution()->scene().path.points.size(), std::size_t(4));
+    m_window->undoStack()->undo();
+    m_window->document()->flush();
+    QVERIFY(m_window->document()->solution()->scene().path.points == moved);
 }
 
 void TestMainWindow::parameterChangeUpdatesPlots() {
@@ -170,14 +237,78 @@ void TestMainWindow::parameterChangeUpdatesPlots() {
     QCOMPARE(m_window->document()->solution()->system().b, 2.0);
     QVector<double> after = graphValues(psi);
     QVERIFY2(maxAbsDifference(before, after) > 0.05, "Psi = atan2(1, b kappa) changed with b");
-    // tan Psi = 1/(b kappa) and max |kappa| = 1 on y = -sin x: |Psi - pi/2| peaks at pi/2 - atan(1/b) on the crests
+    // tan Psi = 1/(b kappa) and max |kappa| = 1 on y = -sin x: |Psi - pi/2| peaks at pi/2 -
+    // atan(1/b) on the crests
     double devBefore = 0, devAfter = 0;
     for (double v : before)
         devBefore = std::max(devBefore, std::abs(v - M_PI / 2));
     for (double v : after)
         devAfter = std::max(devAfter, std::abs(v - M_PI / 2));
-    QVERIFY2(std::abs(devBefore - (M_PI / 2 - std::atan(1.0))) < 1e-2, qPrintable(QString::number(devBefore)));
-    QVERIFY2(std::abs(devAfter - (M_PI / 2 - std::atan(0.5))) < 1e-2, qPrintable(QString::number(devAfter)));
+    QVERIFY2(std::abs(devBefore - (M_PI / 2 - std::atan(1.0))) < 1e-2,
+             qPrintable(QString::number(devBefore)));
+    QVERIFY2(std::abs(devAfter - (M_PI / 2 - std::atan(0.5))) < 1e-2,
+             qPrintable(QString::number(devAfter)));
+}
+
+void TestMainWindow::canvasDrawsBodiesAtTheirPoses() {
+    SceneCanvas* canvas = m_window->canvas();
+    m_window->playback()->seek(6.0);
+    MotionSample m = m_window->document()->solution()->at(6.0);
+    QImage image = canvas->grab().toImage();
+    double dpr = image.devicePixelRatio();
+    auto colourAt = [&](double x, double y) {
+        QPointF p = canvas->toPixel(QPointF(x, y)) * dpr;
+        return image.pixelColor(p.toPoint());
+    };
+    // inside the controlled board, between the knife and the centre of mass (a = 0.5 ahead of P):
+    // blue; inside the free ghost: pale red; far from both: white
+    double ahead = 0.25;
+    QColor body = colourAt(m.x + ahead * std::cos(m.phi) + 0.3 * -std::sin(m.phi),
+                           m.y + ahead * std::sin(m.phi) + 0.3 * std::cos(m.phi));
+    QVERIFY2(body.blue() > body.red() + 60, qPrintable(body.name()));
+    QColor ghost = colourAt(m.free.x + ahead * std::cos(m.free.phi) + 0.3 * -std::sin(m.free.phi),
+                            m.free.y + ahead * std::sin(m.free.phi) + 0.3 * std::cos(m.free.phi));
+    QVERIFY2(ghost.red() > ghost.blue() + 20, qPrintable(ghost.name()));
+    QCOMPARE(canvas->toWorld(canvas->toPixel(QPointF(1.25, -0.5))), QPointF(1.25, -0.5));
+    // the arrow keys pan by a tenth of the view
+    QPointF before = canvas->toPixel(QPointF(1.0, 1.0));
+    QTest::keyClick(canvas, Qt::Key_Right);
+    QPointF after = canvas->toPixel(QPointF(1.0, 1.0));
+    QVERIFY(std::abs(before.x() - after.x() - 0.1 * canvas->width()) < 1e-6);
+    QVERIFY(std::abs(before.y() - after.y()) < 1e-9);
+    // following the body puts it in the middle of the canvas
+    m_window->followAction()->trigger();
+    QVERIFY(canvas->followsBody());
+    QPointF centre = canvas->toPixel(QPointF(m.x, m.y));
+    QVERIFY(std::abs(centre.x() - canvas->width() / 2.0) < 1);
+    QVERIFY(std::abs(centre.y() - canvas->height() / 2.0) < 1);
+}
+
+void TestMainWindow::typedParametricPath() {
+    PathPanel* panel = m_window->pathPanel();
+    panel->parametricButton()->click();
+    QVERIFY(!panel->graphEdit()->isEnabled());
+    typeInto(panel->xOfUEdit(), QStringLiteral("3*cos(u)"));
+    typeInto(panel->yOfUEdit(), QStringLiteral("3*sin(u)"));
+    panel->fromSpin()->setValue(0);
+    panel->toSpin()->setValue(M_PI);
+    panel->applyButton()->click();
+    m_window->document()->flush();
+    QVERIFY2(panel->errorText().isEmpty(), qPrintable(panel->errorText()));
+    const auto& solution = m_window->document()->solution();
+    QCOMPARE(solution->scene().path.kind, PathKind::Parametric);
+    // half a circle of radius 3 (the range box keeps 4 decimals of pi)
+    QVERIFY(std::abs(solution->path()->length() - 3 * panel->toSpin()->value()) < 1e-9);
+    QVERIFY(std::abs(panel->toSpin()->value() - M_PI) < 1e-4);
+    // a typed error stays while a parameter changes; the path fields keep the user's text
+    typeInto(panel->yOfUEdit(), QStringLiteral("3*sin(u"));
+    panel->applyButton()->click();
+    QVERIFY(!panel->errorText().isEmpty());
+    m_window->parametersPanel()->spinBox(QStringLiteral("m"))->setValue(2.0);
+    m_window->document()->flush();
+    QCOMPARE(panel->yOfUEdit()->text(), QStringLiteral("3*sin(u"));
+    QCOMPARE(m_window->document()->solution()->system().mass, 2.0);
+    QVERIFY(std::abs(m_window->document()->solution()->path()->length() - 3 * 3.1416) < 1e-9);
 }
 
 void TestMainWindow::sliderDragCoalesces() {
@@ -218,6 +349,51 @@ void TestMainWindow::systemSwitch() {
     QVERIFY(!m_window->parametersPanel()->spinBox(QStringLiteral("b")));
     QCOMPARE(m_window->document()->solution()->system().a, 0.0);
     m_window->canvas()->grab(); // the disk paints
+    // back to the sleigh (same number of parameters as the disk), then the carriage, then undo
+    combo->setCurrentIndex(0);
+    emit combo->activated(0);
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->solution()->system().b, 1.0);
+    QVERIFY(m_window->parametersPanel()->spinBox(QStringLiteral("b")));
+    QVERIFY(!m_window->parametersPanel()->spinBox(QStringLiteral("R")));
+    combo->setCurrentIndex(2);
+    emit combo->activated(2);
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->scene().system.kind, SystemKind::Carriage);
+    QCOMPARE(m_window->parametersPanel()->spinBox(QStringLiteral("M"))->value(), 2.0);
+    m_window->canvas()->grab();
+    m_window->undoStack()->undo();
+    m_window->undoStack()->undo();
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->solution()->scene().system.kind, SystemKind::Disk);
+    QVERIFY(m_window->parametersPanel()->spinBox(QStringLiteral("I1")));
+    QCOMPARE(combo->currentIndex(), 1);
+}
+
+void TestMainWindow::gyrationAndModeSwitch() {
+    ParametersPanel* panel = m_window->parametersPanel();
+    auto combos = panel->findChildren<QComboBox*>();
+    QCOMPARE(combos.size(), 3); // system, gyration, mode
+    QComboBox* gyration = combos[1];
+    gyration->setCurrentIndex(1);
+    emit gyration->activated(1);
+    m_window->document()->flush();
+    // I = m (b^2 - a^2) = 1 * (1 - 0.25)
+    QVERIFY(panel->spinBox(QStringLiteral("I")));
+    QVERIFY(!panel->spinBox(QStringLiteral("b")));
+    QCOMPARE(panel->spinBox(QStringLiteral("I"))->value(), 0.75);
+    panel->spinBox(QStringLiteral("I"))->setValue(3.0);
+    m_window->document()->flush();
+    QVERIFY(std::abs(m_window->document()->solution()->system().b - std::sqrt(0.25 + 3.0)) < 1e-12);
+    QComboBox* mode = combos[2];
+    mode->setCurrentIndex(1);
+    emit mode->activated(1);
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->solution()->scene().mode, SpeedMode::Speed);
+    // constant speed: sdot = v_s everywhere, so the time to traverse is length / v_s
+    const auto& solution = m_window->document()->solution();
+    QVERIFY(std::abs(solution->duration() - solution->path()->length() / solution->scene().speed) <
+            1e-9);
 }
 
 void TestMainWindow::playPauseSeek() {
@@ -226,6 +402,11 @@ void TestMainWindow::playPauseSeek() {
     QCOMPARE(m_window->canvas()->time(), 2.0);
     QCOMPARE(m_window->plotsPanel()->cursorTime(), 2.0);
     QVERIFY(m_window->timeline()->timeLabel()->text().contains(QStringLiteral("2.00")));
+    QCustomPlot* psi = m_window->plotsPanel()->plot(0);
+    psi->replot();
+    double x2 = psi->axisRect()->axis(QCPAxis::atBottom)->coordToPixel(2.0);
+    QVERIFY(std::abs(m_window->plotsPanel()->cursor(0)->geometry().center().x() - x2) <= 1.5);
+    QVERIFY(m_window->plotsPanel()->cursor(0)->isVisible());
     int sliderAt2 = m_window->timeline()->slider()->value();
     QVERIFY(sliderAt2 > 0);
     QTest::keyClick(m_window.get(), Qt::Key_Space);
@@ -255,8 +436,33 @@ void TestMainWindow::clickingPlotSeeks() {
     int x = int(std::lround(t->coordToPixel(5.0)));
     int y = plot->axisRect()->center().y();
     QTest::mouseClick(plot, Qt::LeftButton, {}, QPoint(x, y));
-    QVERIFY2(std::abs(m_window->playback()->time() - 5.0) < 0.1, qPrintable(QString::number(m_window->playback()->time())));
+    QVERIFY2(std::abs(m_window->playback()->time() - 5.0) < 0.1,
+             qPrintable(QString::number(m_window->playback()->time())));
     QVERIFY(std::abs(m_window->canvas()->time() - m_window->playback()->time()) < 1e-12);
+    // dragging with the button down scrubs
+    QPoint to(int(std::lround(t->coordToPixel(8.0))), y);
+    QTest::mousePress(plot, Qt::LeftButton, {}, QPoint(x, y));
+    QMouseEvent drag(QEvent::MouseMove, to, plot->mapToGlobal(to), Qt::NoButton, Qt::LeftButton,
+                     {});
+    QApplication::sendEvent(plot, &drag);
+    QVERIFY(std::abs(m_window->playback()->time() - 8.0) < 0.1);
+    QTest::mouseRelease(plot, Qt::LeftButton, {}, to);
+}
+
+void TestMainWindow::spaceTypesInTextFields() {
+    QLineEdit* edit = m_window->pathPanel()->graphEdit();
+    edit->setFocus();
+    QTRY_VERIFY(edit->hasFocus());
+    edit->end(false);
+    QTest::keyClick(edit, Qt::Key_Space);
+    QVERIFY(!m_window->playback()->isPlaying());
+    QCOMPARE(edit->text(), QStringLiteral("-sin(x) "));
+    // elsewhere Space plays and pauses
+    m_window->canvas()->setFocus();
+    QTest::keyClick(m_window->canvas(), Qt::Key_Space);
+    QVERIFY(m_window->playback()->isPlaying());
+    QTest::keyClick(m_window->canvas(), Qt::Key_Space);
+    QVERIFY(!m_window->playback()->isPlaying());
 }
 
 void TestMainWindow::undoRedo() {
@@ -274,12 +480,14 @@ void TestMainWindow::undoRedo() {
     QCOMPARE(m_window->parametersPanel()->spinBox(QStringLiteral("m"))->value(), 1.0);
     undo->undo();
     m_window->document()->flush();
-    QCOMPARE(QString::fromStdString(m_window->document()->scene().path.y), QStringLiteral("-sin(x)"));
+    QCOMPARE(QString::fromStdString(m_window->document()->scene().path.y),
+             QStringLiteral("-sin(x)"));
     QCOMPARE(panel->graphEdit()->text(), QStringLiteral("-sin(x)"));
     undo->redo();
     undo->redo();
     m_window->document()->flush();
-    QCOMPARE(QString::fromStdString(m_window->document()->solution()->scene().path.y), QStringLiteral("0.5*sin(2*x)"));
+    QCOMPARE(QString::fromStdString(m_window->document()->solution()->scene().path.y),
+             QStringLiteral("0.5*sin(2*x)"));
     QCOMPARE(m_window->document()->solution()->system().mass, 3.0);
 }
 
@@ -314,7 +522,8 @@ void TestMainWindow::openBadFileKeepsScene() {
 
 void TestMainWindow::exportFilesValid() {
     QString dir = m_dir.filePath(QStringLiteral("plots"));
-    QVERIFY(m_window->exportPlotsTo(dir, {QStringLiteral("png"), QStringLiteral("pdf"), QStringLiteral("svg")}));
+    QVERIFY(m_window->exportPlotsTo(
+        dir, {QStringLiteral("png"), QStringLiteral("pdf"), QStringLiteral("svg")}));
     QImage png(dir + QStringLiteral("/psi.png"));
     QVERIFY(!png.isNull());
     QVERIFY(png.width() >= 900);
@@ -341,7 +550,7 @@ void TestMainWindow::screenshotMode() {
     QString file = m_dir.filePath(QStringLiteral("shot.png"));
     QByteArray f = file.toUtf8();
     const char* args[] = {"chaplygin-lab", "--screenshot", f.constData(), "--preset", "circle",
-                          "--at", "2.5", "--size", "1024x700"};
+                          "--at",          "2.5",          "--size",      "1024x700"};
     QCOMPARE(runScreenshot(9, const_cast<char**>(args)), 0);
     QImage image(file);
     QVERIFY(!image.isNull());
@@ -354,10 +563,37 @@ void TestMainWindow::screenshotMode() {
             coloured += c.saturation() > 80 ? 1 : 0;
         }
     QVERIFY(coloured > 200);
-    const char* bad[] = {"chaplygin-lab", "--screenshot", f.constData(), "--path", "y=sin(", "--x-range", "0,3"};
+    const char* bad[] = {"chaplygin-lab", "--screenshot", f.constData(), "--path",
+                         "y=sin(",        "--x-range",    "0,3"};
     QCOMPARE(runScreenshot(7, const_cast<char**>(bad)), 2);
+    const char* late[] = {"chaplygin-lab", "--screenshot", f.constData(), "--preset",
+                          "line",          "--at",         "1000"};
+    QCOMPARE(runScreenshot(7, const_cast<char**>(late)), 2);
     const char* badSize[] = {"chaplygin-lab", "--screenshot", f.constData(), "--size", "big"};
     QCOMPARE(runScreenshot(5, const_cast<char**>(badSize)), 2);
+}
+
+void TestMainWindow::settingsKeepRecentFilesAndLayout() {
+    // only this test writes settings (the other windows are made without them)
+    QCoreApplication::setApplicationName(QStringLiteral("ui_tests_settings"));
+    QSettings().clear();
+    QString file = m_dir.filePath(QStringLiteral("recent.json"));
+    {
+        MainWindow window(true);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        window.resize(1000, 700);
+        QVERIFY(window.saveFile(file));
+        QCOMPARE(window.recentMenu()->actions().size(), 1);
+        window.findChild<QDockWidget*>(QStringLiteral("plotsDock"))->hide();
+        window.close();
+    }
+    MainWindow again(true);
+    QCOMPARE(again.recentMenu()->actions().size(), 1);
+    QCOMPARE(again.recentMenu()->actions().first()->toolTip(), QFileInfo(file).absoluteFilePath());
+    QCOMPARE(again.size(), QSize(1000, 700));
+    QVERIFY(!again.findChild<QDockWidget*>(QStringLiteral("plotsDock"))->isVisibleTo(&again));
+    QSettings().clear();
 }
 
 QTEST_MAIN(TestMainWindow)
