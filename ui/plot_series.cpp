@@ -23,7 +23,7 @@ PlotSeries collectSeries(const Solution& solution, int freeSamples, int exactSam
     freeSamples = std::max(freeSamples, 2);
     for (int i = 0; i < freeSamples; ++i) {
         double t = p.tEnd * i / (freeSamples - 1);
-        FreeState f = solution.at(t).free;
+        FreeState f = solution.freeAt(t);
         p.freeT << t;
         p.freeX << f.x;
         p.freeY << f.y;

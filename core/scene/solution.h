@@ -48,6 +48,8 @@ class Solution {
     double tEnd() const { return m_tEnd; }                   ///< horizon [s]
 
     MotionSample at(double t) const;
+    /// The free motion alone at t (cheaper than at(t) when the controlled state is not needed).
+    FreeState freeAt(double t) const { return m_free.at(t); }
     /// count samples evenly spaced on [0, tEnd] (count >= 2).
     std::vector<MotionSample> sample(int count) const;
     std::vector<MotionSample> sampleAt(const std::vector<double>& times) const;
