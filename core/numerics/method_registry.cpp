@@ -5,6 +5,7 @@
 #include "numerics/gsl_ode.h"
 #include "numerics/quadrature_time_law.h"
 #include "numerics/sleigh_problems.h"
+#include "scene/solution.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,14 +17,6 @@ std::string motionProblemName(MotionProblem problem) {
 }
 
 namespace {
-
-ControlParams paramsOf(const Scene& scene) {
-    ControlParams p;
-    p.system = deriveSystem(scene.system);
-    p.mode = scene.mode;
-    p.speed = scene.speed;
-    return p;
-}
 
 // the controlled state at t = 0, where the free motion starts (as the Solution does)
 FreeInitial initialOf(const Path& path, const ControlParams& params) {
@@ -256,7 +249,7 @@ void addFree(std::vector<Method>& out) {
 MethodCase::MethodCase(const Scene& s) : MethodCase(s, buildPath(s.path)) {}
 
 MethodCase::MethodCase(const Scene& s, std::shared_ptr<const Path> p)
-    : scene(s), path(std::move(p)), params(paramsOf(s)) {
+    : scene(s), path(std::move(p)), params(controlParamsOf(s)) {
     plan = std::make_shared<PlannedMotion>(path, params);
     freeInitial = initialOf(*path, params);
     const double duration = plan->timeLaw().duration();

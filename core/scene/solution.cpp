@@ -7,14 +7,6 @@
 namespace chaplygin {
 namespace {
 
-ControlParams paramsOf(const Scene& scene) {
-    ControlParams p;
-    p.system = deriveSystem(scene.system);
-    p.mode = scene.mode;
-    p.speed = scene.speed;
-    return p;
-}
-
 FreeInitial initialState(const std::shared_ptr<const Path>& path, const ControlParams& params) {
     FreeInitial init;
     const PathPiece& first = path->pieces().front();
@@ -46,13 +38,21 @@ double horizonOf(const Scene& scene, double duration) {
 
 } // namespace
 
+ControlParams controlParamsOf(const Scene& scene) {
+    ControlParams p;
+    p.system = deriveSystem(scene.system);
+    p.mode = scene.mode;
+    p.speed = scene.speed;
+    return p;
+}
+
 Solution Solution::compute(const Scene& scene) {
-    ControlParams params = paramsOf(scene); // parameters first: cheaper to reject
+    ControlParams params = controlParamsOf(scene); // parameters first: cheaper to reject
     return Solution(scene, buildPath(scene.path), params);
 }
 
 Solution Solution::compute(const Scene& scene, std::shared_ptr<const Path> path) {
-    return Solution(scene, std::move(path), paramsOf(scene));
+    return Solution(scene, std::move(path), controlParamsOf(scene));
 }
 
 Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,

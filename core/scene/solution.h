@@ -29,6 +29,10 @@ struct ModelReport {
     std::string freePosition; ///< free x, y
 };
 
+/// The control parameters of a scene: its system's (m_eff, a, b), mode and speed.
+/// Throws InputError naming a bad parameter.
+ControlParams controlParamsOf(const Scene& scene);
+
 /// One immutable result that the CLI, the GUI and the tests read. Values at any t are computed
 /// exactly on request (no interpolation of stored samples). Recomputing with new system
 /// parameters or speed reuses the tabulated path.
