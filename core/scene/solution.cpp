@@ -83,20 +83,26 @@ Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,
     m_models.freePosition = m_free.positionModel();
 }
 
+void Solution::pivotAt(const PathPiece& piece, double t, double sinceStart,
+                       MotionSample& out) const {
+    // pivot about P at |phidot| = v_T/b (physics.md sec. 2.8)
+    double turn = piece.phiTo - piece.phiFrom;
+    double rate = m_params.speed / m_params.system.b;
+    out.t = t;
+    out.s = piece.s0;
+    out.x = piece.x;
+    out.y = piece.y;
+    out.phi = piece.phiFrom + std::copysign(std::min(rate * sinceStart, std::fabs(turn)), turn);
+    out.kappa = std::copysign(INFINITY, turn);
+    out.control = controlAtPivot(m_params, out.phi, turn);
+}
+
 void Solution::controlledAt(double t, MotionSample& out) const {
     PathLocation loc = m_timeLaw.locate(t);
     const PathPiece& piece = m_path->pieces()[loc.piece];
     out.t = t;
     if (piece.kind == PathPiece::Kind::Pivot) {
-        double turn = piece.phiTo - piece.phiFrom;
-        double rate = m_params.speed / m_params.system.b;
-        out.s = piece.s0;
-        out.x = piece.x;
-        out.y = piece.y;
-        out.phi = piece.phiFrom +
-                  std::copysign(std::min(rate * loc.sincePivotStart, std::fabs(turn)), turn);
-        out.kappa = std::copysign(INFINITY, turn);
-        out.control = controlAtPivot(m_params, out.phi, turn);
+        pivotAt(piece, t, loc.sincePivotStart, out);
         return;
     }
     PathNode n = piece.table->at(loc.u);
@@ -137,11 +143,14 @@ std::vector<MotionSample> Solution::controlledAtNodes() const {
     for (std::size_t k = 0; k < pieces.size(); ++k) {
         const PathPiece& piece = pieces[k];
         if (piece.kind == PathPiece::Kind::Pivot) {
-            for (double t : {m_timeLaw.pieceStart(k), m_timeLaw.pieceStart(k + 1)}) {
+            // both ends of the turn with the pivot's own state: Psi, chi and lambda are flat
+            // during the turn and jump at its ends (the impulsive control)
+            double t0 = m_timeLaw.pieceStart(k), t1 = m_timeLaw.pieceStart(k + 1);
+            for (double t : {t0, t1}) {
                 if (t > m_tEnd)
                     break;
                 MotionSample m;
-                controlledAt(t, m);
+                pivotAt(piece, t, t - t0, m);
                 out.push_back(m);
             }
             continue;

@@ -64,6 +64,7 @@ class Solution {
   private:
     Solution(const Scene& scene, std::shared_ptr<const Path> path, const ControlParams& params);
     void controlledAt(double t, MotionSample& out) const;
+    void pivotAt(const PathPiece& piece, double t, double sinceStart, MotionSample& out) const;
 
     Scene m_scene;
     std::shared_ptr<const Path> m_path;

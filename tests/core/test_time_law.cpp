@@ -186,3 +186,23 @@ TEST(TimeLaw, SmallAndLargeGyrationRadiiStayAccurate) {
         EXPECT_NEAR(sol.duration(), exact, 1e-11 * exact) << "b = " << b;
     }
 }
+
+TEST(TimeLaw, NodeSeriesHoldsThePivotStateThroughTheTurn) {
+    Scene scene;
+    scene.path.kind = PathKind::Polyline;
+    scene.path.points = {{0, 0}, {1, 0}, {1, 1}};
+    Solution sol = Solution::compute(scene);
+    const double t1 = 1.0, t2 = 1.0 + std::numbers::pi / 2; // b = 1, v_T = 1
+    int inTurn = 0;
+    for (const MotionSample& m : sol.controlledAtNodes()) {
+        if (m.t > t1 + 1e-12 && m.t < t2 - 1e-12)
+            ADD_FAILURE() << "a node inside the turn at t = " << m.t;
+        bool pivoting = std::isinf(m.kappa);
+        if (pivoting) {
+            ++inTurn;
+            EXPECT_NEAR(m.control.psi, 0, 1e-15); // a left turn: Psi = 0 at both ends of the turn
+            EXPECT_NEAR(m.control.lambda, -0.5, 1e-15); // -m a phidot, phidot = v_T/b
+        }
+    }
+    EXPECT_EQ(inTurn, 2);
+}
