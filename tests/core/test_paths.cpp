@@ -123,8 +123,9 @@ TEST(Paths, SmoothingSplineGivesSmoothCurvatureForAShakyCircle) {
     for (int i = 0; i <= 400; ++i)
         kappa.push_back(t.at(u0 + (u1 - u0) * i / 400.0).kappa);
     for (int i = 1; i < 400; ++i) {
-        if (i >= 80 && i <= 320)
+        if (i >= 80 && i <= 320) {
             EXPECT_NEAR(kappa[i], 1 / R, 0.05 / R) << i;
+        }
         EXPECT_LT(std::fabs(kappa[i + 1] - 2 * kappa[i] + kappa[i - 1]), 0.005 / R) << i;
     }
     // with no smoothing the spline interpolates the points, and the jitter shows in kappa
