@@ -1,7 +1,9 @@
 #include "desktop_entry.h"
 
+#include "accuracy_readout.h"
 #include "common/input_error.h"
 #include "main_window.h"
+#include "methods_panel.h"
 #include "playback.h"
 #include "plots_panel.h"
 #include "scene/headless_options.h"
@@ -57,7 +59,8 @@ struct ScreenshotOptions {
     double at = 0;
     int width = 1280, height = 800;
     bool showParameters =
-        false; ///< --panel parameters: raise the parameters dock over the path dock
+        false;                ///< --panel parameters: raise the parameters dock over the path dock
+    bool showMethods = false; ///< --panel methods: compute and show the work-precision diagram
     Scene scene;
 };
 
@@ -79,9 +82,11 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
                 throw InputError("--at", "the time must be >= 0");
         } else if (arg == "--panel") {
             std::string panel = value(i, arg);
-            if (panel != "path" && panel != "parameters")
-                throw InputError("--panel", "expected path or parameters, got '" + panel + "'");
+            if (panel != "path" && panel != "parameters" && panel != "methods")
+                throw InputError("--panel",
+                                 "expected path, parameters or methods, got '" + panel + "'");
             o.showParameters = panel == "parameters";
+            o.showMethods = panel == "methods";
         } else if (arg == "--size") {
             std::string size = value(i, arg);
             auto x = size.find('x');
@@ -120,9 +125,15 @@ int renderScreenshot(const ScreenshotOptions& o) {
     window.balanceDocks();
     if (o.showParameters)
         window.showParametersDock();
+    if (o.showMethods) {
+        window.showMethodsDock();
+        window.methodsPanel()->start();
+        window.methodsPanel()->waitForFinished();
+    }
     QCoreApplication::processEvents();
     window.canvas()->fitScene();
     window.playback()->seek(o.at);
+    window.accuracyReadout()->refresh();
     window.plotsPanel()->replotNow();
     QCoreApplication::processEvents();
     QImage image = window.grab().toImage();

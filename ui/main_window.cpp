@@ -1,12 +1,16 @@
 #include "main_window.h"
 
+#include "accuracy_readout.h"
 #include "common/atomic_file.h"
 #include "common/input_error.h"
+#include "gallery_menu.h"
+#include "methods_panel.h"
 #include "parameters_panel.h"
 #include "path_panel.h"
 #include "playback.h"
 #include "plot_export.h"
 #include "plots_panel.h"
+#include "scene/gallery.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
 #include "scene_canvas.h"
@@ -72,6 +76,17 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     tabifyDockWidget(m_pathDock, m_parametersDock);
     m_pathDock->raise();
     addDockWidget(Qt::BottomDockWidgetArea, m_plotsDock);
+    m_methods = new MethodsPanel(m_document);
+    m_methodsDock = new QDockWidget(tr("Methods"), this);
+    m_methodsDock->setObjectName(QStringLiteral("methodsDock"));
+    m_methodsDock->setWidget(m_methods);
+    addDockWidget(Qt::BottomDockWidgetArea, m_methodsDock);
+    tabifyDockWidget(m_plotsDock, m_methodsDock);
+    m_plotsDock->raise();
+    m_accuracy = new AccuracyReadout(m_document);
+    m_accuracyDock = makeDock(tr("Accuracy"), QStringLiteral("accuracyDock"), m_accuracy, this);
+    addDockWidget(Qt::RightDockWidgetArea, m_accuracyDock);
+    m_accuracyDock->setMinimumWidth(240);
     m_pathDock->setMinimumWidth(360);
     m_parametersDock->setMinimumWidth(360);
 
@@ -173,6 +188,8 @@ void MainWindow::buildMenus() {
     view->addAction(m_pathDock->toggleViewAction());
     view->addAction(m_parametersDock->toggleViewAction());
     view->addAction(m_plotsDock->toggleViewAction());
+    view->addAction(m_methodsDock->toggleViewAction());
+    view->addAction(m_accuracyDock->toggleViewAction());
     view->addAction(m_timeline->toggleViewAction());
     view->addSeparator();
     view->addAction(tr("&Fit scene"), QKeySequence(tr("Ctrl+0")), m_canvas, &SceneCanvas::fitScene);
@@ -190,6 +207,17 @@ void MainWindow::buildMenus() {
     play->addAction(m_timeline->stepBackAction());
     play->addAction(m_timeline->stepForwardAction());
     play->addAction(m_timeline->loopAction());
+
+    QMenu* methods = menuBar()->addMenu(tr("&Methods"));
+    methods->addAction(tr("Compute &work-precision"), QKeySequence(tr("Ctrl+Shift+W")), this,
+                       [this] {
+                           showMethodsDock();
+                           m_methods->start();
+                       });
+    methods->addAction(tr("&Cancel work-precision"), m_methods, &MethodsPanel::cancel);
+    auto* gallery = new GalleryMenu(this);
+    menuBar()->addMenu(gallery);
+    connect(gallery, &GalleryMenu::entryChosen, this, &MainWindow::loadGalleryEntry);
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&Physics notes"), QKeySequence::HelpContents, this, [this] {
@@ -249,8 +277,7 @@ void MainWindow::applyScene(const Scene& scene) {
 }
 
 void MainWindow::loadScene(const Scene& scene) {
-    m_document->pathFor(scene.path);
-    deriveSystem(scene.system);
+    m_document->check(scene); // a scene that does not solve never replaces the current one
     m_undo->clear();
     applyScene(scene);
     m_document->flush();
@@ -279,20 +306,24 @@ void MainWindow::choosePreset(const QString& name) {
 }
 
 void MainWindow::setPath(const PathSource& source, const QString& description, bool refit) {
-    try {
-        m_document->pathFor(source); // tabulates now: errors stay in the panel, the last path stays
-    } catch (const InputError& e) {
-        m_path->showError(QString::fromStdString(e.what()));
-        return;
-    }
-    m_path->showError({});
-    Scene next = m_current;
-    next.path = source;
-    next.preset.clear();
-    editScene(next, description);
-    m_document->flush();
-    if (refit)
-        m_canvas->fitScene();
+    // tabulated on the path worker: errors stay in the panel, the last path stays meanwhile
+    const QString tabulating = tr("Tabulating the path\u2026");
+    m_document->requestPath(source, [=, this](const QString& error) {
+        if (statusBar()->currentMessage() == tabulating)
+            statusBar()->clearMessage();
+        m_path->showError(error);
+        if (!error.isEmpty())
+            return;
+        Scene next = m_current;
+        next.path = source;
+        next.preset.clear();
+        editScene(next, description);
+        m_document->flush();
+        if (refit)
+            m_canvas->fitScene();
+    });
+    if (m_document->pathPending())
+        statusBar()->showMessage(tabulating);
 }
 
 void MainWindow::onParametersEdited(const Scene& scene, const QString& description,
@@ -317,7 +348,47 @@ void MainWindow::onSolutionChanged() {
     m_status->setText(QString::fromStdString("path: " + m.path + "; time law: " + m.timeLaw +
                                              "; free motion: " + m.freeVelocity + ", " +
                                              m.freePosition));
+    if (m_noteScene && m_document->scene() != *m_noteScene) {
+        m_noteScene.reset();
+        m_accuracy->setNote({}, {});
+    }
+    m_accuracy->setTime(m_playback->time());
     updateTitle();
+}
+
+void MainWindow::showMethodsDock() {
+    m_methodsDock->show();
+    m_methodsDock->raise();
+    // the diagram's legends need about half the height
+    resizeDocks({m_methodsDock}, {std::max(360, height() * 9 / 20)}, Qt::Vertical);
+}
+
+bool MainWindow::loadGalleryEntry(const QString& name) {
+    const GalleryEntry& entry = galleryEntry(name.toStdString());
+    const QString title = QString::fromStdString(entry.title);
+    const QString explanation = QString::fromStdString(entry.explanation);
+    m_accuracyDock->show();
+    m_accuracyDock->raise();
+    try {
+        m_document->check(entry.scene); // the core's refusal is the lesson of a rejected entry
+    } catch (const InputError& e) {
+        const QString refusal = QString::fromStdString(e.what());
+        m_noteScene = m_current;
+        m_accuracy->setNote(tr("Refused: %1").arg(title),
+                            refusal + QStringLiteral("\n\n") + explanation, true);
+        statusBar()->showMessage(refusal, 10000);
+        if (isVisible() && m_useSettings)
+            QMessageBox::warning(this, tr("Gallery: %1").arg(title), refusal);
+        return false;
+    }
+    m_noteScene = entry.scene;
+    m_accuracy->setNote(title, explanation);
+    statusBar()->clearMessage(); // an earlier refusal no longer applies
+    editScene(entry.scene, tr("Gallery: %1").arg(title));
+    m_document->flush();
+    m_playback->seek(0);
+    m_canvas->fitScene();
+    return true;
 }
 
 void MainWindow::onDocumentError(const QString& error) {
@@ -330,6 +401,7 @@ void MainWindow::onDocumentError(const QString& error) {
 void MainWindow::onTime(double t) {
     m_canvas->setTime(t);
     m_plots->setTime(t);
+    m_accuracy->setTime(t);
 }
 
 bool MainWindow::maybeSave() {
@@ -352,9 +424,9 @@ void MainWindow::newScene() {
 
 bool MainWindow::openFile(const QString& path) {
     try {
-        Scene scene = loadSceneFile(path.toStdString());
+        Scene scene = openSceneFile(path);
         loadScene(scene);
-    } catch (const InputError& e) {
+    } catch (const std::exception& e) {
         showFileError(QString::fromStdString(e.what()));
         return false;
     }
@@ -368,6 +440,13 @@ bool MainWindow::openFile(const QString& path) {
 }
 
 bool MainWindow::saveFile(const QString& path) {
+    // a scene that does not solve would not open again: it never replaces a file
+    m_document->flush();
+    if (!m_document->error().isEmpty()) {
+        showFileError(tr("cannot save '%1': the scene does not solve (%2); fix it or undo first")
+                          .arg(path, m_document->error()));
+        return false;
+    }
     try {
         saveSceneFile(path, m_current);
     } catch (const std::exception& e) {

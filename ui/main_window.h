@@ -3,6 +3,8 @@
 
 #include <QMainWindow>
 
+#include <optional>
+
 class QAction;
 class QDockWidget;
 class QLabel;
@@ -11,6 +13,8 @@ class QUndoStack;
 
 namespace chaplygin::ui {
 
+class AccuracyReadout;
+class MethodsPanel;
 class ParametersPanel;
 class PathPanel;
 class Playback;
@@ -47,6 +51,11 @@ class MainWindow : public QMainWindow {
     /// Shows and raises the parameters dock (over the path dock when they share tabs).
     void showParametersDock();
 
+    /// Loads a gallery scene (issue #4) as one undo step and shows its explanation beside the
+    /// animation; a scene the core refuses keeps the current one and shows the refusal.
+    /// Returns whether the scene was loaded. Throws InputError for unknown names.
+    bool loadGalleryEntry(const QString& name);
+
     /// The last message shown for a failed file operation.
     const QString& lastFileError() const { return m_lastFileError; }
 
@@ -56,6 +65,10 @@ class MainWindow : public QMainWindow {
     ParametersPanel* parametersPanel() const { return m_parameters; }
     PathPanel* pathPanel() const { return m_path; }
     PlotsPanel* plotsPanel() const { return m_plots; }
+    MethodsPanel* methodsPanel() const { return m_methods; }
+    AccuracyReadout* accuracyReadout() const { return m_accuracy; }
+    /// Shows and raises the Methods dock.
+    void showMethodsDock();
     TimelineBar* timeline() const { return m_timeline; }
     QUndoStack* undoStack() const { return m_undo; }
     QAction* followAction() const { return m_followAction; }
@@ -93,10 +106,15 @@ class MainWindow : public QMainWindow {
     PathPanel* m_path;
     ParametersPanel* m_parameters;
     PlotsPanel* m_plots;
+    MethodsPanel* m_methods;
+    AccuracyReadout* m_accuracy;
     TimelineBar* m_timeline;
     QDockWidget* m_pathDock;
     QDockWidget* m_parametersDock;
     QDockWidget* m_plotsDock;
+    QDockWidget* m_methodsDock;
+    QDockWidget* m_accuracyDock;
+    std::optional<Scene> m_noteScene; // the scene the accuracy dock's note is about
     QMenu* m_recentMenu = nullptr;
     QAction* m_followAction = nullptr;
     QLabel* m_status;

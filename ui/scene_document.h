@@ -46,7 +46,7 @@ class SceneDocument : public QObject {
     void setScene(const Scene& scene);
     /// Recomputes now (for tests, the screenshot mode and file loading).
     void setSceneNow(const Scene& scene);
-    /// Runs a pending recompute now, if any.
+    /// Waits for a requested path (see requestPath), then runs a pending recompute now, if any.
     void flush();
 
     /// Builds and caches the path of a source; throws InputError. Cheap when cached.

@@ -1,6 +1,7 @@
 #include "scene_files.h"
 
 #include "common/atomic_file.h"
+#include "common/input_error.h"
 #include "plot_series.h"
 #include "scene/csv_writer.h"
 #include "scene/scene_json.h"
@@ -14,6 +15,16 @@ namespace {
 const QString kRecentKey = QStringLiteral("recentFiles");
 constexpr int kMaxRecent = 8;
 } // namespace
+
+Scene openSceneFile(const QString& path) {
+    QFileInfo info(path);
+    std::string where = "cannot open '" + path.toStdString() + "'";
+    if (!info.exists())
+        throw InputError(where, "no such file");
+    if (info.isDir())
+        throw InputError(where, "it is a directory, not a scene file");
+    return loadSceneFile(path.toStdString());
+}
 
 void saveSceneFile(const QString& path, const Scene& scene) {
     writeFileAtomically(path.toStdString(), sceneToJson(scene));

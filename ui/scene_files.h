@@ -7,6 +7,10 @@
 
 namespace chaplygin::ui {
 
+/// File > Open: the scene in path; throws InputError naming the file (missing, a directory) or
+/// the JSON path.
+Scene openSceneFile(const QString& path);
+
 /// File > Save: the scene as versioned JSON (the CLI's --scene format), written atomically.
 /// Throws IoError.
 void saveSceneFile(const QString& path, const Scene& scene);

@@ -86,9 +86,9 @@ void checkCharactersAndNames(const std::string& text, const std::string& variabl
                     : literal.size() - exponent - 1 -
                           (literal[exponent + 1] == '-' || literal[exponent + 1] == '+');
             if (errno == ERANGE || !std::isfinite(value) || exponentDigits > 3)
-                throw InputError(at(label, i),
-                                 "the number '" + literal.substr(0, 40) +
-                                     "' is out of range (|x| from 2.2e-308 to 1.8e308, at most 3 exponent digits)");
+                throw InputError(at(label, i), "the number '" + literal.substr(0, 40) +
+                                                   "' is out of range (|x| from 2.2e-308 to "
+                                                   "1.8e308, at most 3 exponent digits)");
             i = j;
             continue;
         }
@@ -187,6 +187,9 @@ struct Expression::Impl {
 
 Expression Expression::compile(const std::string& text, const std::string& variable,
                                const std::string& label) {
+    // GiNaC's reference counts and tables are not thread-safe: one compile at a time
+    static std::mutex compileMutex;
+    std::lock_guard compileLock(compileMutex);
     checkCharactersAndNames(text, variable, label);
     auto impl = std::make_shared<Impl>();
     impl->text = text;

@@ -16,6 +16,7 @@ struct Jet3 {
 class Expression {
   public:
     /// Throws InputError whose where() is "<label>, position N" (1-based character position).
+    /// Compiles are serialized process-wide (GiNaC is not thread-safe); any thread may call it.
     static Expression compile(const std::string& text, const std::string& variable,
                               const std::string& label);
 

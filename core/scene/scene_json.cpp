@@ -192,8 +192,9 @@ Scene sceneFromJson(const std::string& text) {
         // e.g. a number beyond double range (out_of_range.406), found by fuzz_scene
         std::string msg = e.what();
         auto pos = msg.find("] ");
-        throw InputError("scene file",
-                         "not readable (" + (pos == std::string::npos ? msg : msg.substr(pos + 2)) + ")");
+        throw InputError("scene file", "not readable (" +
+                                           (pos == std::string::npos ? msg : msg.substr(pos + 2)) +
+                                           ")");
     }
     object(j, "");
     if (auto it = j.find("format"); it == j.end() || !it->is_string() || *it != kFormatName)

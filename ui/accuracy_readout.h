@@ -1,0 +1,64 @@
+#pragma once
+#include <QString>
+#include <QTimer>
+#include <QWidget>
+
+#include <optional>
+
+class QLabel;
+
+namespace chaplygin::ui {
+
+class SceneDocument;
+
+/// What the accuracy readout shows at one time; every number compares values the core gives.
+struct AccuracyValues {
+    double t = 0;                     ///< [s]
+    double trackingResidual = 0;      ///< |P(t) - path(s(t))|, the path at the same arc length [m]
+    std::optional<double> paperError; ///< |P(t) - P_paper(t)| on the line and circle presets [m]
+    QString paperEquations;           ///< which closed form, e.g. "eqs. (93)-(94)"
+    std::optional<double> controlledDrift; ///< |T - T0|/T0, constant-energy mode only
+    double freeDrift = 0;                  ///< |T - T0|/T0 of the free motion
+};
+
+/// The live accuracy readout beside the animation (issue #4): at the shown time, the
+/// controlled body's distance from the prescribed path at the same arc length, its error
+/// against the paper's closed form where one exists, the energy drift of the controlled and
+/// the free motion, the models and methods in use, and a note (a gallery scene's explanation).
+/// Time changes are coalesced to one update per display frame.
+class AccuracyReadout : public QWidget {
+    Q_OBJECT
+  public:
+    explicit AccuracyReadout(SceneDocument* document, QWidget* parent = nullptr);
+
+    const AccuracyValues& values() const { return m_values; }
+    /// The shown text of the note (empty when there is none).
+    QString noteText() const;
+    QString modelsText() const;
+
+  public slots:
+    /// Marks the time for an update on the next frame (latest value wins).
+    void setTime(double t);
+    /// Updates now at the last time set.
+    void refresh();
+    /// A note above the numbers; warning draws it as a refusal. Empty text hides it.
+    void setNote(const QString& title, const QString& text, bool warning = false);
+
+  private:
+    void onSolutionChanged();
+
+    SceneDocument* m_document;
+    QLabel* m_note;
+    QLabel* m_time;
+    QLabel* m_tracking;
+    QLabel* m_paper;
+    QLabel* m_controlledDrift;
+    QLabel* m_freeDrift;
+    QLabel* m_models;
+    QTimer m_frame;
+    double m_t = 0;
+    double m_controlledT0 = 0, m_freeT0 = 0;
+    AccuracyValues m_values;
+};
+
+} // namespace chaplygin::ui
