@@ -82,9 +82,8 @@ void panel(QCustomPlot& plot, QCPAxisRect* rect, const WorkPrecisionReport& repo
     auto* title = new QCPTextElement(
         &plot,
         problem == MotionProblem::Controlled
-            ? QStringLiteral("controlled motion (t_end = %1 s)")
-                  .arg(report.controlledEnd, 0, 'g', 4)
-            : QStringLiteral("free motion (t_end = %1 s)").arg(report.freeEnd, 0, 'g', 4),
+            ? QStringLiteral("controlled, t \u2264 %1 s").arg(report.controlledEnd, 0, 'g', 4)
+            : QStringLiteral("free, t \u2264 %1 s").arg(report.freeEnd, 0, 'g', 4),
         QFont(plot.font().family(), 10, QFont::Bold));
     rect->insetLayout()->addElement(title, Qt::AlignTop | Qt::AlignLeft);
 }
