@@ -422,6 +422,16 @@ void MainWindow::newScene() {
     m_document->setFileName({});
 }
 
+// the document now is the file at path: clean, and first in the recent files
+void MainWindow::markSavedAs(const QString& path) {
+    m_document->setFileName(path);
+    m_undo->setClean();
+    if (m_useSettings) {
+        addRecentFile(path);
+        rebuildRecentMenu();
+    }
+}
+
 bool MainWindow::openFile(const QString& path) {
     try {
         Scene scene = openSceneFile(path);
@@ -430,12 +440,7 @@ bool MainWindow::openFile(const QString& path) {
         showFileError(QString::fromStdString(e.what()));
         return false;
     }
-    m_document->setFileName(path);
-    m_undo->setClean();
-    if (m_useSettings) {
-        addRecentFile(path);
-        rebuildRecentMenu();
-    }
+    markSavedAs(path);
     return true;
 }
 
@@ -453,12 +458,7 @@ bool MainWindow::saveFile(const QString& path) {
         showFileError(QString::fromStdString(e.what()));
         return false;
     }
-    m_document->setFileName(path);
-    m_undo->setClean();
-    if (m_useSettings) {
-        addRecentFile(path);
-        rebuildRecentMenu();
-    }
+    markSavedAs(path);
     statusBar()->showMessage(tr("Saved %1").arg(path), 4000);
     return true;
 }

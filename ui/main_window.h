@@ -80,6 +80,7 @@ class MainWindow : public QMainWindow {
   private:
     void buildMenus();
     void rebuildRecentMenu();
+    void markSavedAs(const QString& path);
     void applyScene(const Scene& scene);
     void onSolutionChanged();
     void onDocumentError(const QString& error);

@@ -2,6 +2,7 @@
 // inline message naming the place, keeps the last valid scene, solution and plots, and never
 // opens a modal dialog; saving under faults tells the user and keeps the old file and the '*'.
 #include "fault_injection.h"
+#include "gui_test_support.h"
 #include "main_window.h"
 #include "parameters_panel.h"
 #include "path_panel.h"
@@ -104,19 +105,13 @@ class TestBadInputs : public QObject {
 };
 
 void TestBadInputs::initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName(QStringLiteral("ChaplyginLabTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("ui_bad_input_tests"));
+    test::useTestSettings(QStringLiteral("ui_bad_input_tests"));
     QVERIFY(m_dir.isValid());
 }
 
 void TestBadInputs::init() {
-    m_window = std::make_unique<MainWindow>(false);
-    m_window->resize(1280, 800);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    m_window->document()->flush();
-    QVERIFY(m_window->document()->solution());
+    m_window = test::showTestWindow();
+    QVERIFY(m_window && m_window->document()->solution());
 }
 
 void TestBadInputs::cleanup() {

@@ -1,5 +1,6 @@
 // GUI tests: drive the real widgets of the main window under the offscreen platform.
 #include "desktop_entry.h"
+#include "gui_test_support.h"
 #include "main_window.h"
 #include "parameters_panel.h"
 #include "path_panel.h"
@@ -96,19 +97,12 @@ class TestMainWindow : public QObject {
 };
 
 void TestMainWindow::initTestCase() {
-    // QSettings go to a test location, never the user's
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName(QStringLiteral("ChaplyginLabTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("ui_tests"));
+    test::useTestSettings(QStringLiteral("ui_tests"));
 }
 
 void TestMainWindow::init() {
-    m_window = std::make_unique<MainWindow>(false);
-    m_window->resize(1280, 800);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    m_window->document()->flush();
-    QVERIFY(m_window->document()->solution());
+    m_window = test::showTestWindow();
+    QVERIFY(m_window && m_window->document()->solution());
 }
 
 void TestMainWindow::cleanup() {

@@ -1,6 +1,7 @@
 // GUI tests of issue #4 in the app: the Methods dock (work-precision in a worker thread with
 // progress and cancel), the live accuracy readout, and the gallery of where methods fail.
 #include "accuracy_readout.h"
+#include "gui_test_support.h"
 #include "main_window.h"
 #include "methods_panel.h"
 #include "playback.h"
@@ -71,18 +72,12 @@ class TestMethods : public QObject {
 };
 
 void TestMethods::initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName(QStringLiteral("ChaplyginLabTests"));
-    QCoreApplication::setApplicationName(QStringLiteral("ui_methods_tests"));
+    test::useTestSettings(QStringLiteral("ui_methods_tests"));
 }
 
 void TestMethods::init() {
-    m_window = std::make_unique<MainWindow>(false);
-    m_window->resize(1280, 800);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    m_window->document()->flush();
-    QVERIFY(m_window->document()->solution());
+    m_window = test::showTestWindow();
+    QVERIFY(m_window && m_window->document()->solution());
 }
 
 void TestMethods::cleanup() {

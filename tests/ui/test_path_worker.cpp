@@ -1,5 +1,6 @@
 // The path worker (issue #5, item 8): typed paths are tabulated off the UI thread, the event loop
 // keeps running meanwhile, and the latest request wins.
+#include "gui_test_support.h"
 #include "main_window.h"
 #include "path_panel.h"
 #include "scene_document.h"
@@ -38,10 +39,8 @@ class TestPathWorker : public QObject {
 };
 
 void TestPathWorker::init() {
-    m_window = std::make_unique<MainWindow>(false);
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    m_window->document()->flush();
+    m_window = test::showTestWindow();
+    QVERIFY(m_window);
 }
 
 void TestPathWorker::cleanup() {
