@@ -156,6 +156,16 @@ std::string toGinacSyntax(const std::string& text) {
     return out;
 }
 
+// what GiNaC throws while parsing or differentiating, as a message about the expression
+[[noreturn]] void throwGinacError(const std::exception& e, const std::string& label) {
+    std::string msg = e.what();
+    if (msg.find("power should have exactly 2 operands") != std::string::npos)
+        throw InputError(label, "chained powers a^b^c are ambiguous: write a^(b^c) or (a^b)^c");
+    if (msg.find("division by zero") != std::string::npos)
+        throw InputError(label, "division by zero in a constant part of the expression");
+    throw InputError(label, "cannot be differentiated: " + msg.substr(0, msg.find('\n')));
+}
+
 // GiNaC prints floats beyond double range as 1.0E400: three or more exponent digits
 bool hasHugeExponent(const std::string& printed) {
     for (std::size_t i = printed.find('E'); i != std::string::npos; i = printed.find('E', i + 1)) {
@@ -217,15 +227,14 @@ Expression Expression::compile(const std::string& text, const std::string& varia
     try {
         f = reader(toGinacSyntax(text));
     } catch (const std::exception& e) {
-        std::string msg = e.what();
-        if (msg.find("power should have exactly 2 operands") != std::string::npos)
-            throw InputError(label, "chained powers a^b^c are ambiguous: write a^(b^c) or (a^b)^c");
-        if (msg.find("division by zero") != std::string::npos)
-            throw InputError(label, "division by zero in a constant part of the expression");
-        throw InputError(label, "cannot be differentiated: " + msg.substr(0, msg.find('\n')));
+        throwGinacError(e, label);
     }
     for (int k = 1; k <= 3; ++k) {
-        f = f.diff(sym);
+        try {
+            f = f.diff(sym); // GiNaC evaluates constants here too, e.g. 0^e when differentiated
+        } catch (const std::exception& e) {
+            throwGinacError(e, label);
+        }
         std::ostringstream printed;
         printed << f;
         if (printed.str().size() > kMaxDerivativeLength)
