@@ -2,13 +2,14 @@
 
 #include "common/atomic_file.h"
 #include "common/input_error.h"
-#include "numerics/work_precision.h"
-#include "plot_export.h"
+#include "headless_options.h"
+#include "lab/work_precision.h"
+#include "plots/plot_export.h"
+#include "plots/work_precision_plot.h"
+#include "runtime_directory.h"
 #include "scene/csv_writer.h"
-#include "scene/headless_options.h"
 #include "scene/solution.h"
 #include "scene/summary_json.h"
-#include "work_precision_plot.h"
 
 #include <QApplication>
 #include <QDir>
@@ -19,8 +20,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 namespace chaplygin::app {
 namespace {
 
@@ -28,14 +27,7 @@ namespace {
 void prepareOffscreen() {
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
-    if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR")) {
-        // Qt wants a private runtime directory even offscreen
-        QString runtime = QDir::tempPath() + QStringLiteral("/chaplygin-lab-runtime-") +
-                          QString::number(::getuid());
-        QDir().mkpath(runtime);
-        QFile::setPermissions(runtime, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
-        qputenv("XDG_RUNTIME_DIR", runtime.toUtf8());
-    }
+    ensureRuntimeDirectory();
 }
 
 QStringList formatList(const HeadlessOptions& o) {

@@ -164,4 +164,18 @@ std::string systemKindName(SystemKind kind) {
     return "?";
 }
 
+std::map<std::string, double> defaultSystemParams(SystemKind kind) {
+    switch (kind) {
+    case SystemKind::Sleigh:
+        return {{"m", 1.0}, {"a", 0.5}, {"b", 1.0}};
+    case SystemKind::Disk: // uniform disk: I1 = m R^2/2 about the axle, I2 = m R^2/4 about a
+                           // diameter
+        return {{"m", 1.0}, {"R", 0.5}, {"I1", 0.125}, {"I2", 0.0625}};
+    case SystemKind::Carriage:
+        return {{"R", 0.3},      {"a", 0.2}, {"m", 0.5}, {"I1", 0.0225},
+                {"I2", 0.01125}, {"M", 2.0}, {"I", 0.2}};
+    }
+    return {};
+}
+
 } // namespace chaplygin

@@ -34,4 +34,7 @@ std::string systemKindName(SystemKind kind);
 /// The parameter names each system accepts, in display order.
 const char* const* systemParameterNames(SystemKind kind, int* count);
 
+/// Default parameters of each system (SI units), used when a scene does not give them.
+std::map<std::string, double> defaultSystemParams(SystemKind kind);
+
 } // namespace chaplygin

@@ -1,12 +1,12 @@
 // chaplygin-bench: the GUI's recompute and animation-frame costs, measured on the real widgets
 // under the offscreen platform.
-#include "main_window.h"
-#include "playback.h"
-#include "plot_series.h"
-#include "plots_panel.h"
+#include "canvas/scene_canvas.h"
+#include "document/scene_document.h"
+#include "plots/plot_series.h"
+#include "plots/plots_panel.h"
 #include "scene/presets.h"
-#include "scene_canvas.h"
-#include "scene_document.h"
+#include "shell/main_window.h"
+#include "shell/playback.h"
 
 #include <QApplication>
 #include <qcustomplot.h>

@@ -1,8 +1,8 @@
 #pragma once
 // Shared set-up of the GUI tests: settings in a test location, and the window as every test
 // starts with it.
-#include "main_window.h"
-#include "scene_document.h"
+#include "document/scene_document.h"
+#include "shell/main_window.h"
 
 #include <QCoreApplication>
 #include <QStandardPaths>

@@ -1,16 +1,16 @@
 // GUI side of issue #5: bad input typed, chosen or opened through the real widgets shows an
 // inline message naming the place, keeps the last valid scene, solution and plots, and never
 // opens a modal dialog; saving under faults tells the user and keeps the old file and the '*'.
+#include "canvas/scene_canvas.h"
+#include "document/scene_document.h"
 #include "fault_injection.h"
 #include "gui_test_support.h"
-#include "main_window.h"
-#include "parameters_panel.h"
-#include "path_panel.h"
-#include "plots_panel.h"
+#include "panels/parameters_panel.h"
+#include "panels/path_panel.h"
+#include "plots/plots_panel.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
-#include "scene_canvas.h"
-#include "scene_document.h"
+#include "shell/main_window.h"
 
 #include <QComboBox>
 #include <QDialog>

@@ -1,16 +1,16 @@
 // GUI tests: drive the real widgets of the main window under the offscreen platform.
+#include "canvas/scene_canvas.h"
 #include "desktop_entry.h"
+#include "document/scene_document.h"
 #include "gui_test_support.h"
-#include "main_window.h"
-#include "parameters_panel.h"
-#include "path_panel.h"
-#include "playback.h"
-#include "plots_panel.h"
+#include "panels/parameters_panel.h"
+#include "panels/path_panel.h"
+#include "plots/plots_panel.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
-#include "scene_canvas.h"
-#include "scene_document.h"
-#include "timeline_bar.h"
+#include "shell/main_window.h"
+#include "shell/playback.h"
+#include "shell/timeline_bar.h"
 
 #include <QComboBox>
 #include <QDockWidget>

@@ -1,13 +1,13 @@
 // GUI tests of issue #4 in the app: the Methods dock (work-precision in a worker thread with
 // progress and cancel), the live accuracy readout, and the gallery of where methods fail.
-#include "accuracy_readout.h"
+#include "document/scene_document.h"
 #include "gui_test_support.h"
-#include "main_window.h"
-#include "methods_panel.h"
-#include "playback.h"
-#include "scene/gallery.h"
+#include "lab/gallery.h"
+#include "panels/accuracy_readout.h"
+#include "panels/methods_panel.h"
 #include "scene/presets.h"
-#include "scene_document.h"
+#include "shell/main_window.h"
+#include "shell/playback.h"
 
 #include <QAction>
 #include <QProgressBar>

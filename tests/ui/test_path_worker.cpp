@@ -1,9 +1,9 @@
 // The path worker (issue #5, item 8): typed paths are tabulated off the UI thread, the event loop
 // keeps running meanwhile, and the latest request wins.
+#include "document/scene_document.h"
 #include "gui_test_support.h"
-#include "main_window.h"
-#include "path_panel.h"
-#include "scene_document.h"
+#include "panels/path_panel.h"
+#include "shell/main_window.h"
 
 #include <QDoubleSpinBox>
 #include <QLineEdit>

@@ -1,11 +1,11 @@
 // chaplygin-bench-numerics: cost per right-hand-side call and per solve of every method in the
 // registry (issue #4 item 6). Compare counters ns_per_rhs against BM_Rk4ClassicalFloor, the
 // hand-written classical RK4 on the same problem: the floor.
+#include "lab/method_registry.h"
+#include "lab/sleigh_problems.h"
+#include "lab/work_precision.h"
 #include "numerics/fixed_step.h"
 #include "numerics/gsl_ode.h"
-#include "numerics/method_registry.h"
-#include "numerics/sleigh_problems.h"
-#include "numerics/work_precision.h"
 #include "scene/presets.h"
 
 #include <benchmark/benchmark.h>

@@ -1,0 +1,193 @@
+#include "desktop_entry.h"
+
+#include "canvas/scene_canvas.h"
+#include "common/input_error.h"
+#include "document/scene_document.h"
+#include "headless_options.h"
+#include "panels/accuracy_readout.h"
+#include "panels/methods_panel.h"
+#include "plots/plots_panel.h"
+#include "runtime_directory.h"
+#include "shell/main_window.h"
+#include "shell/playback.h"
+#include "version.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QFile>
+#include <QImage>
+#include <QPixmap>
+
+#include <cstdio>
+#include <exception>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace chaplygin::ui {
+
+namespace {
+
+void describeApplication() {
+    QCoreApplication::setOrganizationName(QStringLiteral("ChaplyginLab"));
+    QCoreApplication::setApplicationName(QStringLiteral("Chaplygin Lab"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(CHAPLYGIN_LAB_VERSION));
+}
+
+// the offscreen platform warns about window hints it cannot honour; that is not news to the user
+void quietOffscreenNoise(QtMsgType type, const QMessageLogContext& context,
+                         const QString& message) {
+    if (message.contains(QLatin1String("propagateSizeHints")))
+        return;
+    std::fprintf(stderr, "%s\n", qPrintable(qFormatLogMessage(type, context, message)));
+}
+
+struct ScreenshotOptions {
+    std::string file;
+    double at = 0;
+    int width = 1280, height = 800;
+    bool showParameters =
+        false;                ///< --panel parameters: raise the parameters dock over the path dock
+    bool showMethods = false; ///< --panel methods: compute and show the work-precision diagram
+    Scene scene;
+};
+
+ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
+    ScreenshotOptions o;
+    std::vector<std::string> rest;
+    auto value = [&](int& i, const std::string& option) {
+        if (i + 1 >= argc)
+            throw InputError(option, "needs a value");
+        return std::string(argv[++i]);
+    };
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (arg == "--screenshot") {
+            o.file = value(i, arg);
+        } else if (arg == "--at") {
+            o.at = parseNumber(value(i, arg), "--at");
+            if (o.at < 0)
+                throw InputError("--at", "the time must be >= 0");
+        } else if (arg == "--panel") {
+            std::string panel = value(i, arg);
+            if (panel != "path" && panel != "parameters" && panel != "methods")
+                throw InputError("--panel",
+                                 "expected path, parameters or methods, got '" + panel + "'");
+            o.showParameters = panel == "parameters";
+            o.showMethods = panel == "methods";
+        } else if (arg == "--size") {
+            std::string size = value(i, arg);
+            auto x = size.find('x');
+            if (x == std::string::npos)
+                throw InputError("--size", "expected WxH, e.g. 1280x800");
+            double w = parseNumber(size.substr(0, x), "--size");
+            double h = parseNumber(size.substr(x + 1), "--size");
+            if (w < 320 || h < 240 || w > 8000 || h > 8000 || w != int(w) || h != int(h))
+                throw InputError("--size",
+                                 "width and height must be whole numbers in 320x240 ... 8000x8000");
+            o.width = int(w);
+            o.height = int(h);
+        } else {
+            rest.push_back(arg);
+        }
+    }
+    if (o.file.empty())
+        throw InputError("--screenshot", "needs the output file name");
+    HeadlessOptions scene = parseHeadlessOptions(rest);
+    o.scene = scene.scene;
+    return o;
+}
+
+int renderScreenshot(const ScreenshotOptions& o) {
+    MainWindow window(false);
+    window.loadScene(o.scene);
+    if (!window.document()->error().isEmpty())
+        throw InputError("scene", window.document()->error().toStdString());
+    double tEnd = window.document()->solution()->tEnd();
+    if (o.at > tEnd)
+        throw InputError("--at", formatNumber(o.at) + " is after the end of the motion, t_end = " +
+                                     formatNumber(tEnd));
+    window.resize(o.width, o.height);
+    window.show();
+    QCoreApplication::processEvents();
+    window.balanceDocks();
+    if (o.showParameters)
+        window.showParametersDock();
+    if (o.showMethods) {
+        window.showMethodsDock();
+        window.methodsPanel()->start();
+        window.methodsPanel()->waitForFinished();
+    }
+    QCoreApplication::processEvents();
+    window.canvas()->fitScene();
+    window.playback()->seek(o.at);
+    window.accuracyReadout()->refresh();
+    window.plotsPanel()->replotNow();
+    QCoreApplication::processEvents();
+    QImage image = window.grab().toImage();
+    if (image.isNull() || !image.save(QString::fromStdString(o.file), "PNG")) {
+        std::fprintf(stderr, "chaplygin-lab: cannot write the screenshot '%s'\n", o.file.c_str());
+        return 1;
+    }
+    return 0;
+}
+
+} // namespace
+
+int runDesktop(int argc, char** argv) {
+    app::ensureRuntimeDirectory();
+    QGuiApplication::setHighDpiScaleFactorRoundingPolicy(
+        Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
+    QApplication app(argc, argv);
+    describeApplication();
+    // QApplication has taken its own options out; what is left is a scene file or scene options
+    QStringList args = QCoreApplication::arguments().mid(1);
+    MainWindow window;
+    try {
+        if (args.size() == 1 && !args[0].startsWith(QLatin1String("--"))) {
+            if (!window.openFile(args[0]))
+                throw InputError("", window.lastFileError().toStdString());
+        } else if (!args.isEmpty()) {
+            std::vector<std::string> options;
+            for (const QString& a : args)
+                options.push_back(a.toStdString());
+            window.loadScene(parseHeadlessOptions(options).scene);
+        }
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "chaplygin-lab: %s\n", e.what());
+        return 2;
+    }
+    window.show();
+    return app.exec();
+}
+
+int runScreenshot(int argc, char** argv) {
+    std::optional<ScreenshotOptions> options;
+    try {
+        options = parseScreenshotOptions(argc, argv);
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "chaplygin-lab: %s\n", e.what());
+        return 2;
+    }
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    app::ensureRuntimeDirectory();
+    // tests call this inside their own QApplication
+    std::unique_ptr<QApplication> app;
+    if (!QCoreApplication::instance()) {
+        qInstallMessageHandler(quietOffscreenNoise);
+        app = std::make_unique<QApplication>(argc, argv);
+    }
+    try {
+        return renderScreenshot(*options);
+    } catch (const InputError& e) {
+        std::fprintf(stderr, "chaplygin-lab: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "chaplygin-lab: internal error: %s\n", e.what());
+        return 1;
+    }
+}
+
+} // namespace chaplygin::ui

@@ -1,0 +1,31 @@
+#pragma once
+#include "scene/scene.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace chaplygin {
+
+/// The parsed headless command line (design.md sec. 3).
+struct HeadlessOptions {
+    Scene scene;
+    std::optional<std::vector<double>> times; ///< --times: rows exactly at these times
+    int samples = 501;                        ///< --samples: rows evenly spaced on [0, t_end]
+    std::string csvPath, summaryPath, plotsDir;
+    std::vector<std::string> formats{"png"};
+    bool help = false;
+    bool workPrecision = false; ///< --work-precision: the speed-against-accuracy sweep (issue #4)
+};
+
+/// Parses the arguments after --headless (and the scene options the screenshot mode shares).
+/// Throws InputError naming the option and what is wrong with it.
+HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args);
+
+/// Parses a whole string as a finite double; throws InputError(where) otherwise.
+double parseNumber(const std::string& text, const std::string& where);
+
+/// The usage text printed by --help.
+std::string headlessUsage();
+
+} // namespace chaplygin

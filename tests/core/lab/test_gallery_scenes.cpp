@@ -1,0 +1,103 @@
+// The gallery of issue #4: each scene's failure is detected (a refusal that names the place) or
+// handled (the app's answer stays exact), and the paper's printed branch fails as described.
+#include "common/input_error.h"
+#include "control/printed_branch.h"
+#include "lab/gallery.h"
+#include "scene/solution.h"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+using namespace chaplygin;
+
+TEST(GalleryScenes, EveryEntryIsExplainedAndBehavesAsDescribed) {
+    ASSERT_GE(galleryEntries().size(), 8u);
+    for (const GalleryEntry& e : galleryEntries()) {
+        EXPECT_GT(e.explanation.size(), 200u) << e.name;
+        if (e.rejected) {
+            try {
+                Solution::compute(e.scene);
+                ADD_FAILURE() << e.name << " was accepted";
+            } catch (const InputError& err) {
+                EXPECT_NE(std::string(err.what()).find(e.message), std::string::npos) << err.what();
+            }
+        } else {
+            Solution s = Solution::compute(e.scene);
+            MotionSample end = s.at(s.tEnd());
+            EXPECT_TRUE(std::isfinite(end.x) && std::isfinite(end.free.x)) << e.name;
+        }
+    }
+    EXPECT_THROW(galleryEntry("no-such-scene"), InputError);
+}
+
+TEST(GalleryScenes, PrintedBranchReversesAtTheInflectionOursDoesNot) {
+    Solution s = Solution::compute(galleryEntry("printed-branch").scene);
+    const double b = s.system().b, vT = s.scene().speed;
+    int printedReversals = 0;
+    double previousPrinted = NAN, largestJump = 0;
+    for (double t = 0; t <= s.duration(); t += 0.01) {
+        MotionSample m = s.at(t);
+        double printed = printedBranchPsi(b, m.kappa);
+        double sdotPrinted = vT * std::sin(printed);
+        if (std::isfinite(previousPrinted)) {
+            largestJump = std::max(largestJump, std::fabs(printed - previousPrinted));
+            printedReversals += (sdotPrinted < 0) != (vT * std::sin(previousPrinted) < 0);
+        }
+        previousPrinted = printed;
+        EXPECT_GT(m.control.sdot, 0); // ours never reverses
+    }
+    // y = -sin x on [0, 4 pi] turns right on (0, pi) and (2 pi, 3 pi): four sign changes of sdot
+    EXPECT_GE(printedReversals, 3);
+    EXPECT_GT(largestJump, 3.0); // a jump of about pi at the inflections
+}
+
+TEST(GalleryScenes, CornerPivotTakesBTimesTheTurn) {
+    Solution s = Solution::compute(galleryEntry("corner-pivot").scene);
+    // three sides of 2 m and two left quarter turns, b = 1, v_T = 1
+    EXPECT_NEAR(s.duration(), 6 + 2 * (std::numbers::pi / 2), 1e-13);
+}
+
+TEST(GalleryScenes, HighCurvatureTimeLawStaysExact) {
+    gsl_set_error_handler_off();
+    Solution s = Solution::compute(galleryEntry("high-curvature").scene);
+    const double A = 0.001, b = s.system().b;
+    // y = -A sin(x/A): t = \int sqrt(1 + y'^2) sqrt(1 + b^2 kappa^2) dx
+    struct P {
+        double A, b;
+    } p{A, b};
+    gsl_function F;
+    F.function = [](double x, void* v) {
+        const P& q = *static_cast<P*>(v);
+        double d1 = -std::cos(x / q.A), d2 = std::sin(x / q.A) / q.A;
+        double g = 1 + d1 * d1, kappa = d2 / std::pow(g, 1.5);
+        return std::sqrt(g) * std::sqrt(1 + q.b * q.b * kappa * kappa);
+    };
+    F.params = &p;
+    gsl_integration_workspace* w = gsl_integration_workspace_alloc(2000);
+    double exact = 0, err = 0;
+    double end = 4 * std::numbers::pi * A;
+    double sum = 0;
+    for (int k = 0; k < 4; ++k) { // one panel per half period: the integrand kinks at inflections
+        gsl_integration_qags(&F, k * end / 4, (k + 1) * end / 4, 0, 1e-13, 2000, w, &exact, &err);
+        sum += exact;
+    }
+    gsl_integration_workspace_free(w);
+    EXPECT_NEAR(s.duration(), sum, 1e-10 * sum);
+}
+
+TEST(GalleryScenes, LongHorizonStaysFiniteAndOnTheEnergyLevel) {
+    Solution s = Solution::compute(galleryEntry("long-horizon").scene);
+    EXPECT_NEAR(s.tEnd(), 5000, 0);
+    for (double t : {0.0, 1000.0, 4999.0, 5000.0}) {
+        MotionSample m = s.at(t);
+        EXPECT_NEAR(std::hypot(m.x, m.y), 1, 1e-12) << t;
+        EXPECT_NEAR(m.control.energy, 0.5, 1e-13);
+        EXPECT_NEAR(m.free.energy, 0.5, 1e-13);
+        EXPECT_TRUE(std::isfinite(m.free.x) && std::isfinite(m.free.y));
+        EXPECT_NE(std::fpclassify(m.free.phidot), FP_SUBNORMAL);
+    }
+}

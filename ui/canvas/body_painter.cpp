@@ -1,0 +1,142 @@
+#include "canvas/body_painter.h"
+
+#include <QPainter>
+#include <QPainterPath>
+
+#include <algorithm>
+#include <cmath>
+
+namespace chaplygin::ui {
+
+namespace {
+
+double param(const SystemSpec& spec, const char* name, double fallback) {
+    auto it = spec.params.find(name);
+    return it == spec.params.end() ? fallback : it->second;
+}
+
+// a uniform elliptical plate with semi-axes (A, A/2) has I/m = 5 A^2 / 16 about its centre
+double boardSemiAxis(const DerivedSystem& d) {
+    double k2 = std::max(d.b * d.b - d.a * d.a, 0.0);
+    return std::max(4.0 * std::sqrt(k2) / std::sqrt(5.0), 0.1 * d.b);
+}
+
+QPen cosmeticPen(const QColor& c, double width) {
+    QPen pen(c, width);
+    pen.setCosmetic(true);
+    pen.setJoinStyle(Qt::RoundJoin);
+    pen.setCapStyle(Qt::RoundCap);
+    return pen;
+}
+
+// centre of mass: a circle with two filled quadrants
+void paintCentreOfMass(QPainter& p, QPointF c, double r, const QColor& ink) {
+    p.setPen(cosmeticPen(ink, 1.2));
+    p.setBrush(Qt::white);
+    p.drawEllipse(c, r, r);
+    p.setBrush(ink);
+    QRectF box(c.x() - r, c.y() - r, 2 * r, 2 * r);
+    p.drawPie(box, 0, 90 * 16);
+    p.drawPie(box, 180 * 16, 90 * 16);
+}
+
+void paintSleigh(QPainter& p, const DerivedSystem& d, const QColor& fill, const QColor& ink) {
+    double big = boardSemiAxis(d);
+    p.setPen(cosmeticPen(ink, 1.5));
+    p.setBrush(fill);
+    p.drawEllipse(QPointF(d.a, 0), big, big / 2);
+    if (std::abs(d.a) > big) // the knife lies outside the board: a strut reaches it
+        p.drawLine(QPointF(0, 0), QPointF(d.a - std::copysign(big, d.a), 0));
+    // knife edge along s-hat at P
+    double knife = 0.22 * big;
+    p.setPen(cosmeticPen(ink, 4));
+    p.drawLine(QPointF(-knife, 0), QPointF(knife, 0));
+    p.setPen(Qt::NoPen);
+    p.setBrush(Qt::black);
+    p.drawEllipse(QPointF(0, 0), 0.03 * big, 0.03 * big); // the contact point P
+    paintCentreOfMass(p, QPointF(d.a, 0), 0.08 * big, ink);
+}
+
+void paintDisk(QPainter& p, const SystemSpec& spec, const QColor& fill, const QColor& ink) {
+    // an upright disk seen from above: a thin slab of length 2R along s-hat
+    double r = param(spec, "R", 0.5);
+    double w = 0.12 * r;
+    p.setPen(cosmeticPen(ink, 1.5));
+    p.setBrush(fill);
+    p.drawRoundedRect(QRectF(-r, -w, 2 * r, 2 * w), w, w);
+    p.setPen(cosmeticPen(ink, 1));
+    p.drawLine(QPointF(0, -2 * w), QPointF(0, 2 * w)); // the contact point P
+    // heading arrow
+    p.drawLine(QPointF(r, 0), QPointF(1.4 * r, 0));
+    p.drawLine(QPointF(1.4 * r, 0), QPointF(1.25 * r, 0.1 * r));
+    p.drawLine(QPointF(1.4 * r, 0), QPointF(1.25 * r, -0.1 * r));
+    paintCentreOfMass(p, QPointF(0, 0), 0.9 * w, ink);
+}
+
+void paintCarriage(QPainter& p, const SystemSpec& spec, const DerivedSystem& d, const QColor& fill,
+                   const QColor& ink) {
+    // the axle passes through P; its half-length is not a model parameter (schematic: 1.5 R)
+    double r = param(spec, "R", 0.3);
+    double half = 1.5 * r;
+    double front = std::max(d.a + 0.6 * r, 0.8 * r);
+    QPainterPath body;
+    body.moveTo(-0.4 * r, -0.8 * half);
+    body.lineTo(front, -0.45 * half);
+    body.lineTo(front, 0.45 * half);
+    body.lineTo(-0.4 * r, 0.8 * half);
+    body.closeSubpath();
+    p.setPen(cosmeticPen(ink, 1.5));
+    p.setBrush(fill);
+    p.drawPath(body);
+    p.setPen(cosmeticPen(ink, 3));
+    p.drawLine(QPointF(0, -half), QPointF(0, half)); // axle
+    p.setPen(cosmeticPen(ink, 1.2));
+    p.setBrush(ink);
+    double tw = 0.22 * r;
+    p.drawRect(QRectF(-r, half - tw, 2 * r, 2 * tw));
+    p.drawRect(QRectF(-r, -half - tw, 2 * r, 2 * tw));
+    paintCentreOfMass(p, QPointF(d.a, 0), 0.18 * r, ink);
+}
+
+} // namespace
+
+double bodyExtent(const SystemSpec& spec, const DerivedSystem& derived) {
+    switch (spec.kind) {
+    case SystemKind::Sleigh:
+        return std::abs(derived.a) + boardSemiAxis(derived);
+    case SystemKind::Disk:
+        return 1.4 * param(spec, "R", 0.5);
+    case SystemKind::Carriage:
+        return std::abs(derived.a) + 2 * param(spec, "R", 0.3);
+    }
+    return 1;
+}
+
+void paintBody(QPainter& painter, const SystemSpec& spec, const DerivedSystem& derived,
+               const BodyPose& pose, const QColor& color, bool ghost) {
+    painter.save();
+    painter.translate(pose.x, pose.y);
+    painter.rotate(pose.phi * 180.0 / M_PI);
+    QColor fill = color.lighter(150);
+    QColor ink = color.darker(140);
+    if (ghost) {
+        fill.setAlpha(70);
+        ink.setAlpha(130);
+    } else {
+        fill.setAlpha(200);
+    }
+    switch (spec.kind) {
+    case SystemKind::Sleigh:
+        paintSleigh(painter, derived, fill, ink);
+        break;
+    case SystemKind::Disk:
+        paintDisk(painter, spec, fill, ink);
+        break;
+    case SystemKind::Carriage:
+        paintCarriage(painter, spec, derived, fill, ink);
+        break;
+    }
+    painter.restore();
+}
+
+} // namespace chaplygin::ui

@@ -1,0 +1,30 @@
+#include "document/scene_command.h"
+
+#include <utility>
+
+namespace chaplygin::ui {
+
+SceneCommand::SceneCommand(const QString& text, Scene before, Scene after, Apply apply,
+                           QString mergeKey)
+    : m_before(std::move(before)), m_after(std::move(after)), m_apply(std::move(apply)),
+      m_mergeKey(std::move(mergeKey)) {
+    setText(text);
+}
+
+void SceneCommand::undo() {
+    m_apply(m_before);
+}
+
+void SceneCommand::redo() {
+    m_apply(m_after);
+}
+
+bool SceneCommand::mergeWith(const QUndoCommand* other) {
+    const auto* o = dynamic_cast<const SceneCommand*>(other);
+    if (!o || o->m_mergeKey != m_mergeKey)
+        return false;
+    m_after = o->m_after;
+    return true;
+}
+
+} // namespace chaplygin::ui

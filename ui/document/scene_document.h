@@ -1,0 +1,109 @@
+#pragma once
+#include "plots/plot_series.h"
+#include "scene/scene.h"
+#include "scene/solution.h"
+
+#include <QElapsedTimer>
+#include <QFuture>
+#include <QFutureWatcher>
+#include <QObject>
+#include <QString>
+#include <QThreadPool>
+#include <QTimer>
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace chaplygin::ui {
+
+/// The open scene and its latest valid Solution, shared by every view. Scene changes are
+/// coalesced: setScene() only marks the document dirty, and one recompute runs with the latest
+/// scene on the next turn of the event loop, at most one per 16 ms frame while a slider moves. A
+/// scene that fails leaves the last valid Solution in place and reports the InputError.
+class SceneDocument : public QObject {
+    Q_OBJECT
+  public:
+    explicit SceneDocument(QObject* parent = nullptr);
+    ~SceneDocument() override;
+
+    /// Free-motion samples for the live plots and the ghost's trail (each costs a Solution::at).
+    static constexpr int kFreeSamples = 400;
+
+    /// The scene as the user last set it (may be the one that failed).
+    const Scene& scene() const { return m_scene; }
+    /// The last valid solution, or null before the first one.
+    const std::shared_ptr<const Solution>& solution() const { return m_solution; }
+    /// What the plots draw, gathered once per recompute.
+    const PlotSeries& series() const { return m_series; }
+    /// The message of the last failed recompute; empty when the scene is valid.
+    const QString& error() const { return m_error; }
+
+    /// Marks the scene for a coalesced recompute (latest value wins).
+    void setScene(const Scene& scene);
+    /// Recomputes now (for tests, the screenshot mode and file loading).
+    void setSceneNow(const Scene& scene);
+    /// Waits for a requested path (see requestPath), then runs a pending recompute now, if any.
+    void flush();
+
+    /// Builds and caches the path of a source; throws InputError. Cheap when cached.
+    std::shared_ptr<const Path> pathFor(const PathSource& source);
+    /// Called with an empty message when the path is built and cached, else with the error.
+    using PathDone = std::function<void(const QString& error)>;
+    /// Builds the path of a source on the path worker and calls done on the UI thread; a cached
+    /// path, or one built within half a frame, answers before this returns. A newer request
+    /// supersedes an older one, whose done is never called (latest wins).
+    void requestPath(const PathSource& source, PathDone done);
+    /// Whether a requested path is still being built.
+    bool pathPending() const;
+
+    /// Solves a scene without installing it (to vet a file before it replaces the current
+    /// scene); throws InputError naming the place. The path is cached for the real recompute.
+    void check(const Scene& scene);
+
+    /// The file this scene was loaded from or saved to; empty if none.
+    const QString& fileName() const { return m_fileName; }
+    void setFileName(const QString& name);
+
+  signals:
+    /// A new valid solution (and series) is in place.
+    void solutionChanged();
+    /// error is empty when the latest scene solved.
+    void errorChanged(const QString& error);
+    void fileNameChanged(const QString& name);
+
+  private:
+    struct PathJob {
+        std::shared_ptr<const Path> path;
+        QString error;
+    };
+    void recompute();
+    std::shared_ptr<const Path> cachedPath(const PathSource& source);
+    void cachePath(const PathSource& source, std::shared_ptr<const Path> path);
+    /// Hands a finished path request to its caller (once).
+    void takePath();
+
+    Scene m_scene;
+    bool m_dirty = false;
+    QTimer m_timer;
+    QElapsedTimer m_lastRecompute;
+    std::shared_ptr<const Solution> m_solution;
+    PlotSeries m_series;
+    QString m_error;
+    QString m_fileName;
+    std::vector<std::pair<PathSource, std::shared_ptr<const Path>>> m_pathCache;
+    std::shared_ptr<const Solution> m_checked; // solved by check(), taken by the next recompute
+    // the latest path request; the pool is declared last so that it is joined first
+    std::shared_ptr<std::atomic<quint64>> m_pathLatest = std::make_shared<std::atomic<quint64>>(0);
+    PathSource m_pathSource;
+    PathDone m_pathDone;
+    QFuture<PathJob> m_pathFuture;
+    bool m_pathTaken = true;
+    QFutureWatcher<PathJob> m_pathWatcher;
+    QThreadPool m_pathPool;
+};
+
+} // namespace chaplygin::ui

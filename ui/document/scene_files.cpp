@@ -1,0 +1,53 @@
+#include "document/scene_files.h"
+
+#include "common/atomic_file.h"
+#include "common/input_error.h"
+#include "plots/plot_series.h"
+#include "scene/csv_writer.h"
+#include "scene/scene_json.h"
+
+#include <QFileInfo>
+#include <QSettings>
+
+namespace chaplygin::ui {
+
+namespace {
+const QString kRecentKey = QStringLiteral("recentFiles");
+constexpr int kMaxRecent = 8;
+} // namespace
+
+Scene openSceneFile(const QString& path) {
+    QFileInfo info(path);
+    std::string where = "cannot open '" + path.toStdString() + "'";
+    if (!info.exists())
+        throw InputError(where, "no such file");
+    if (info.isDir())
+        throw InputError(where, "it is a directory, not a scene file");
+    return loadSceneFile(path.toStdString());
+}
+
+void saveSceneFile(const QString& path, const Scene& scene) {
+    writeFileAtomically(path.toStdString(), sceneToJson(scene));
+}
+
+void exportCsvFile(const QString& path, const Solution& solution, int rows) {
+    std::string text = "# Chaplygin Lab: " + sceneCaption(solution).toStdString() + "\n";
+    text += formatCsv(solution.sample(rows));
+    writeFileAtomically(path.toStdString(), text);
+}
+
+QStringList recentFiles() {
+    return QSettings().value(kRecentKey).toStringList();
+}
+
+void addRecentFile(const QString& path) {
+    QString full = QFileInfo(path).absoluteFilePath();
+    QStringList list = recentFiles();
+    list.removeAll(full);
+    list.prepend(full);
+    while (list.size() > kMaxRecent)
+        list.removeLast();
+    QSettings().setValue(kRecentKey, list);
+}
+
+} // namespace chaplygin::ui

@@ -1,0 +1,169 @@
+#include "panels/accuracy_readout.h"
+
+#include "document/scene_document.h"
+#include "scene/paper_closed_form.h"
+
+#include <QFormLayout>
+#include <QLabel>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+
+namespace chaplygin::ui {
+
+namespace {
+
+constexpr int kFrameMs = 16;
+
+// the path's own point at the arc length s, looked up independently of the time law
+double distanceFromPath(const Path& path, const MotionSample& m) {
+    const auto& pieces = path.pieces();
+    std::size_t k = 0;
+    while (k + 1 < pieces.size() && pieces[k + 1].s0 <= m.s)
+        ++k;
+    const PathPiece& piece = pieces[k];
+    if (piece.kind == PathPiece::Kind::Pivot)
+        return std::hypot(m.x - piece.x, m.y - piece.y);
+    PathNode n = piece.table->at(piece.table->uAtArcLength(m.s - piece.s0));
+    return std::hypot(m.x - n.x, m.y - n.y);
+}
+
+QString metres(double v) {
+    return QStringLiteral("%1 m").arg(v, 0, 'e', 1);
+}
+
+QString relative(double v) {
+    return QString::number(v, 'e', 1);
+}
+
+QLabel* valueLabel() {
+    auto* l = new QLabel;
+    l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    l->setWordWrap(true);
+    return l;
+}
+
+} // namespace
+
+AccuracyReadout::AccuracyReadout(SceneDocument* document, QWidget* parent)
+    : QWidget(parent), m_document(document) {
+    m_note = new QLabel;
+    m_note->setWordWrap(true);
+    m_note->setTextFormat(Qt::RichText);
+    m_note->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_note->setFrameShape(QFrame::StyledPanel);
+    m_note->setMargin(4);
+    m_note->hide();
+    m_time = valueLabel();
+    m_tracking = valueLabel();
+    m_tracking->setToolTip(
+        tr("Distance of the controlled knife point P from the prescribed path's "
+           "own point at the same arc length: the tracking constraint residual"));
+    m_paper = valueLabel();
+    m_paper->setToolTip(tr("Distance from the paper's closed form (line and circle presets, "
+                           "constant energy)"));
+    m_controlledDrift = valueLabel();
+    m_freeDrift = valueLabel();
+    m_models = valueLabel();
+    QFont small = m_models->font();
+    small.setPointSizeF(small.pointSizeF() * 0.9);
+    m_models->setFont(small);
+
+    auto* form = new QFormLayout;
+    form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    form->addRow(tr("t"), m_time);
+    form->addRow(tr("off the path"), m_tracking);
+    form->addRow(tr("vs closed form"), m_paper);
+    form->addRow(tr("energy drift"), m_controlledDrift);
+    form->addRow(tr("free energy drift"), m_freeDrift);
+
+    auto* models = new QLabel(tr("<b>Models and methods</b>"));
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(6, 6, 6, 6);
+    layout->addWidget(m_note);
+    layout->addLayout(form);
+    layout->addWidget(models);
+    layout->addWidget(m_models);
+    layout->addStretch(1);
+
+    m_frame.setSingleShot(true);
+    m_frame.setInterval(kFrameMs);
+    connect(&m_frame, &QTimer::timeout, this, &AccuracyReadout::refresh);
+    connect(m_document, &SceneDocument::solutionChanged, this, &AccuracyReadout::onSolutionChanged);
+    if (m_document->solution())
+        onSolutionChanged();
+}
+
+QString AccuracyReadout::noteText() const {
+    return m_note->isHidden() ? QString() : m_note->text();
+}
+
+QString AccuracyReadout::modelsText() const {
+    return m_models->text();
+}
+
+void AccuracyReadout::setTime(double t) {
+    m_t = t;
+    if (!m_frame.isActive())
+        m_frame.start();
+}
+
+void AccuracyReadout::setNote(const QString& title, const QString& text, bool warning) {
+    if (text.isEmpty() && title.isEmpty()) {
+        m_note->clear();
+        m_note->hide();
+        return;
+    }
+    m_note->setStyleSheet(warning ? QStringLiteral("QLabel { color: #a40000; }") : QString());
+    QString body = text.toHtmlEscaped();
+    body.replace(QLatin1Char('\n'), QStringLiteral("<br>"));
+    m_note->setText(QStringLiteral("<b>%1</b><br>%2").arg(title.toHtmlEscaped(), body));
+    m_note->show();
+}
+
+void AccuracyReadout::onSolutionChanged() {
+    const auto& solution = m_document->solution();
+    if (!solution)
+        return;
+    m_controlledT0 = solution->at(0).control.energy;
+    m_freeT0 = solution->freeAt(0).energy;
+    const ModelReport& m = solution->models();
+    m_models->setText(
+        QStringLiteral("path: %1\ntime law: %2\ns(t): %3\ncontrol: %4\n"
+                       "free velocities: %5\nfree position: %6")
+            .arg(QString::fromStdString(m.path), QString::fromStdString(m.timeLaw),
+                 QString::fromStdString(m.inversion), QString::fromStdString(m.control),
+                 QString::fromStdString(m.freeVelocity), QString::fromStdString(m.freePosition)));
+    refresh();
+}
+
+void AccuracyReadout::refresh() {
+    m_frame.stop();
+    const auto& solution = m_document->solution();
+    if (!solution)
+        return;
+    AccuracyValues v;
+    v.t = std::clamp(m_t, 0.0, solution->tEnd());
+    MotionSample m = solution->at(v.t);
+    v.trackingResidual = distanceFromPath(*solution->path(), m);
+    if (auto paper = paperClosedForm(solution->scene(), v.t)) {
+        v.paperError = std::hypot(m.x - paper->x, m.y - paper->y);
+        v.paperEquations = QString::fromStdString(paper->equations);
+    }
+    if (solution->params().mode == SpeedMode::Energy && m_controlledT0 > 0)
+        v.controlledDrift = std::fabs(m.control.energy - m_controlledT0) / m_controlledT0;
+    if (m_freeT0 > 0)
+        v.freeDrift = std::fabs(m.free.energy - m_freeT0) / m_freeT0;
+    m_values = v;
+
+    m_time->setText(QStringLiteral("%1 s").arg(v.t, 0, 'f', 3));
+    m_tracking->setText(metres(v.trackingResidual));
+    m_paper->setText(v.paperError ? tr("%1 (paper %2)").arg(metres(*v.paperError), v.paperEquations)
+                                  : tr("no closed form for this scene"));
+    m_controlledDrift->setText(v.controlledDrift ? relative(*v.controlledDrift)
+                                                 : tr("T varies by design in constant-speed mode"));
+    m_freeDrift->setText(relative(v.freeDrift));
+}
+
+} // namespace chaplygin::ui

@@ -1,0 +1,250 @@
+#include "panels/methods_panel.h"
+
+#include "common/input_error.h"
+#include "document/scene_document.h"
+#include "plots/work_precision_plot.h"
+
+#include <qcustomplot.h>
+
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <exception>
+
+namespace chaplygin::ui {
+
+namespace {
+
+QString number(double v) {
+    return QString::number(v, 'g', 3);
+}
+
+// the tolerance or step size, where the method has one
+QString settingText(const WorkPrecisionRow& r) {
+    if (r.setting == 0)
+        return {};
+    return QStringLiteral(" (%1)").arg(number(r.setting));
+}
+
+} // namespace
+
+MethodsPanel::MethodsPanel(SceneDocument* document, QWidget* parent)
+    : QWidget(parent), m_document(document) {
+    m_run = new QPushButton(tr("Compute work-precision"));
+    m_run->setToolTip(tr("Sweep every method's tolerances and step sizes for the current scene "
+                         "(Ctrl+Shift+W)"));
+    m_cancel = new QPushButton(tr("Cancel"));
+    m_cancel->setEnabled(false);
+    m_progress = new QProgressBar;
+    m_progress->setRange(0, 1);
+    m_progress->setValue(0);
+    m_progress->setTextVisible(true);
+    m_status = new QLabel(tr("Error against cost per solve for every method: press Compute."));
+    m_status->setWordWrap(true);
+    m_references = new QLabel;
+    m_references->setWordWrap(true);
+    m_references->setTextInteractionFlags(Qt::TextSelectableByMouse);
+
+    m_plot = new QCustomPlot;
+    m_plot->setMinimumHeight(200);
+    m_plot->setNoAntialiasingOnDrag(true);
+
+    m_table = new QTableWidget(0, 5);
+    m_table->setHorizontalHeaderLabels(
+        {tr("problem"), tr("chosen method"), tr("error [m]"), tr("s/solve"), tr("Pareto")});
+    m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setSelectionMode(QAbstractItemView::NoSelection);
+    m_table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_table->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
+    m_table->setMaximumHeight(m_table->horizontalHeader()->sizeHint().height() * 4);
+
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_run);
+    buttons->addWidget(m_cancel);
+    buttons->addWidget(m_progress, 1);
+
+    auto* side = new QVBoxLayout;
+    side->addWidget(m_status);
+    side->addWidget(m_table);
+    side->addWidget(m_references);
+    side->addStretch(1);
+
+    auto* sideWidget = new QWidget;
+    sideWidget->setLayout(side);
+    sideWidget->setMaximumWidth(450);
+    side->setContentsMargins(0, 0, 0, 0);
+    auto* body = new QHBoxLayout;
+    body->addWidget(m_plot, 1);
+    body->addWidget(sideWidget);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addLayout(buttons);
+    layout->addLayout(body, 1);
+
+    connect(m_run, &QPushButton::clicked, this, &MethodsPanel::start);
+    connect(m_cancel, &QPushButton::clicked, this, &MethodsPanel::cancel);
+    connect(&m_watcher, &QFutureWatcherBase::finished, this, &MethodsPanel::onFinished);
+    connect(m_document, &SceneDocument::solutionChanged, this, &MethodsPanel::onSceneChanged);
+}
+
+MethodsPanel::~MethodsPanel() {
+    m_watcher.disconnect(this);
+    if (m_stop)
+        m_stop->store(true);
+    m_watcher.waitForFinished();
+}
+
+QString MethodsPanel::statusText() const {
+    return m_status->text();
+}
+
+void MethodsPanel::start() {
+    if (isRunning() || !m_document->solution())
+        return;
+    m_runScene = m_document->solution()->scene();
+    m_cancelReason.clear();
+    m_stop = std::make_shared<std::atomic<bool>>(false);
+    const quint64 run = ++m_runId;
+    m_running = true;
+    m_progress->setRange(0, 1);
+    m_progress->setValue(0);
+    m_run->setEnabled(false);
+    m_cancel->setEnabled(true);
+    m_status->setText(tr("Sweeping the methods in a worker thread\u2026"));
+    // the worker owns a copy of the scene and builds its own path; progress is queued to this
+    // thread, and the destructor waits for the worker, so `this` outlives every call
+    m_watcher.setFuture(QtConcurrent::run([this, run, scene = m_runScene, stop = m_stop] {
+        Outcome out;
+        WorkPrecisionOptions options;
+        options.cancel = stop.get();
+        options.progress = [this, run](int done, int total) {
+            QMetaObject::invokeMethod(
+                this, [this, run, done, total] { onProgress(run, done, total); },
+                Qt::QueuedConnection);
+        };
+        try {
+            out.report = runWorkPrecision(scene, options);
+        } catch (const InputError& e) {
+            out.error = QString::fromStdString(e.what());
+        } catch (const std::exception& e) {
+            out.error = QStringLiteral("internal error: %1").arg(QString::fromUtf8(e.what()));
+        }
+        return out;
+    }));
+}
+
+void MethodsPanel::cancel() {
+    if (!isRunning() || !m_stop)
+        return;
+    m_stop->store(true);
+    if (m_cancelReason.isEmpty())
+        m_cancelReason = tr("cancelled");
+    m_cancel->setEnabled(false);
+    m_status->setText(tr("Cancelling after the configuration under way\u2026"));
+}
+
+void MethodsPanel::waitForFinished() {
+    if (!isRunning())
+        return;
+    m_watcher.waitForFinished();
+    QCoreApplication::sendPostedEvents(this);
+    onFinished();
+}
+
+void MethodsPanel::onProgress(quint64 run, int done, int total) {
+    if (run != m_runId || !isRunning())
+        return; // a late report of a finished sweep
+    m_progress->setRange(0, std::max(total, 1));
+    m_progress->setValue(done);
+}
+
+void MethodsPanel::onSceneChanged() {
+    if (isRunning() && m_document->solution() && m_document->solution()->scene() != m_runScene) {
+        m_cancelReason = tr("cancelled: the scene changed");
+        cancel();
+    }
+}
+
+void MethodsPanel::onFinished() {
+    if (!m_running)
+        return; // already shown by waitForFinished
+    m_running = false;
+    Outcome out = m_watcher.result();
+    m_run->setEnabled(true);
+    m_cancel->setEnabled(false);
+    if (!out.error.isEmpty()) {
+        m_status->setText(tr("The sweep failed: %1").arg(out.error));
+        m_progress->setRange(0, 1);
+        m_progress->setValue(0);
+        emit finished();
+        return;
+    }
+    m_progress->setValue(m_progress->maximum());
+    m_report = std::move(out.report);
+    showReport(*m_report);
+    emit finished();
+}
+
+void MethodsPanel::showReport(const WorkPrecisionReport& report) {
+    drawWorkPrecision(*m_plot, report);
+    // the dock is shorter than an exported figure: each legend moves from inside its panel to a
+    // column beside it, so that no curve hides behind a legend
+    auto* panels = qobject_cast<QCPLayoutGrid*>(m_plot->plotLayout()->element(0, 0));
+    QList<QCPAxisRect*> rects = m_plot->axisRects();
+    for (int k = 0; panels && k < rects.size(); ++k) {
+        QCPLayoutInset* inset = rects[k]->insetLayout();
+        for (int i = inset->elementCount() - 1; i >= 0; --i) {
+            auto* legend = qobject_cast<QCPLegend*>(inset->elementAt(i));
+            if (!legend || !inset->take(legend))
+                continue;
+            inset->simplify();
+            legend->setRowSpacing(0);
+            legend->setIconSize(14, 8);
+            legend->setMargins(QMargins(2, 2, 2, 2));
+            legend->setBorderPen(Qt::NoPen);
+            panels->insertColumn(2 * k + 1);
+            panels->addElement(0, 2 * k + 1, legend);
+            panels->setColumnStretchFactor(2 * k + 1, 0.01);
+        }
+    }
+    m_plot->replot();
+
+    m_table->setRowCount(0);
+    for (std::size_t i = 0; i < report.rows.size(); ++i) {
+        const WorkPrecisionRow& r = report.rows[i];
+        if (!r.chosen)
+            continue;
+        int row = m_table->rowCount();
+        m_table->insertRow(row);
+        const bool front = onParetoFront(report.rows, i);
+        const QStringList cells = {QString::fromStdString(motionProblemName(r.problem)),
+                                   QString::fromStdString(r.method) + settingText(r),
+                                   number(r.error), number(r.seconds),
+                                   front ? tr("yes") : tr("no")};
+        for (int c = 0; c < cells.size(); ++c)
+            m_table->setItem(row, c, new QTableWidgetItem(cells[c]));
+    }
+    m_references->setText(
+        tr("<b>References</b><br>controlled: %1<br>free: %2")
+            .arg(QString::fromStdString(report.controlledReference).toHtmlEscaped(),
+                 QString::fromStdString(report.freeReference).toHtmlEscaped()));
+    QString summary = tr("%1 configurations; horizons %2 s (controlled), %3 s (free).")
+                          .arg(report.rows.size())
+                          .arg(number(report.controlledEnd), number(report.freeEnd));
+    if (report.cancelled)
+        summary = tr("Stopped (%1) after %2").arg(m_cancelReason, summary);
+    m_status->setText(summary);
+}
+
+} // namespace chaplygin::ui

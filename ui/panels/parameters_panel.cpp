@@ -1,0 +1,315 @@
+#include "panels/parameters_panel.h"
+
+#include "common/input_error.h"
+#include "systems/system.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSlider>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace chaplygin::ui {
+
+namespace {
+
+constexpr int kSliderSteps = 1000;
+
+struct ParamInfo {
+    const char* label;
+    const char* unit;
+    double lo, hi; // slider range; the spin box accepts more
+};
+
+ParamInfo paramInfo(const std::string& name) {
+    if (name == "m")
+        return {"mass m", "kg", 0.05, 10};
+    if (name == "a")
+        return {"CM offset a", "m", -2, 2};
+    if (name == "b")
+        return {"gyration radius b about P", "m", 0.05, 5};
+    if (name == "I")
+        return {"moment of inertia I about the CM", "kg m\u00b2", 0, 10};
+    if (name == "R")
+        return {"wheel radius R", "m", 0.05, 2};
+    if (name == "I1")
+        return {"wheel inertia I1 about its axle", "kg m\u00b2", 0, 2};
+    if (name == "I2")
+        return {"wheel inertia I2 about a diameter", "kg m\u00b2", 0, 2};
+    if (name == "M")
+        return {"carriage body mass M", "kg", 0, 20};
+    return {"", "", 0, 10};
+}
+
+int toSlider(double v, double lo, double hi) {
+    return static_cast<int>(std::lround(std::clamp((v - lo) / (hi - lo), 0.0, 1.0) * kSliderSteps));
+}
+
+} // namespace
+
+ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+    auto* top = new QFormLayout;
+    m_system = new QComboBox;
+    m_system->addItem(tr("Chaplygin sleigh"), int(SystemKind::Sleigh));
+    m_system->addItem(tr("Rolling disk (App. A)"), int(SystemKind::Disk));
+    m_system->addItem(tr("Two-wheeled carriage (App. B)"), int(SystemKind::Carriage));
+    m_system->setToolTip(tr("The Chaplygin system; each reduces to a sleigh with m_eff, a and b"));
+    top->addRow(tr("&System"), m_system);
+    m_gyration = new QComboBox;
+    m_gyration->addItem(tr("enter b, derive I"));
+    m_gyration->addItem(tr("enter I, derive b"));
+    m_gyration->setToolTip(tr("b\u00b2 = a\u00b2 + I/m: give the radius of gyration b [m] or the "
+                              "inertia I [kg m\u00b2]"));
+    m_gyrationLabel = new QLabel(tr("&Gyration"));
+    m_gyrationLabel->setBuddy(m_gyration);
+    top->addRow(m_gyrationLabel, m_gyration);
+    layout->addLayout(top);
+
+    m_rowsHost = new QWidget;
+    m_form = new QFormLayout(m_rowsHost);
+    m_form->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_rowsHost);
+
+    m_derived = new QLabel;
+    m_derived->setWordWrap(true);
+    m_derived->setToolTip(
+        tr("What the control law uses: effective mass [kg], CM offset a [m], "
+           "radius of gyration b about P [m], inertia I about the CM [kg m\u00b2]"));
+    layout->addWidget(m_derived);
+
+    auto* speedForm = new QFormLayout;
+    m_mode = new QComboBox;
+    m_mode->addItem(tr("constant kinetic energy (v_T)"));
+    m_mode->addItem(tr("constant speed along the path (v_s)"));
+    m_mode->setToolTip(
+        tr("Energy: T = m v_T\u00b2/2 fixed (sec. 4); speed: ds/dt = v_s fixed (App. C)"));
+    speedForm->addRow(tr("&Mode"), m_mode);
+    layout->addLayout(speedForm);
+    m_speedLabel = new QLabel;
+    layout->addWidget(m_speedLabel);
+
+    m_error = new QLabel;
+    m_error->setObjectName(QStringLiteral("parameterError"));
+    m_error->setWordWrap(true);
+    m_error->setStyleSheet(QStringLiteral("color: #b00020;"));
+    m_error->hide();
+    layout->addWidget(m_error);
+    layout->addStretch(1);
+    for (QComboBox* combo : findChildren<QComboBox*>()) {
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        combo->setMinimumContentsLength(10);
+    }
+
+    connect(m_system, &QComboBox::activated, this, &ParametersPanel::onSystemChosen);
+    connect(m_gyration, &QComboBox::activated, this, &ParametersPanel::onGyrationChosen);
+    connect(m_mode, &QComboBox::activated, this, &ParametersPanel::onModeChosen);
+}
+
+ParametersPanel::Row ParametersPanel::addRow(const QString& name, const QString& caption,
+                                             const QString& label, const QString& unit, double lo,
+                                             double hi, double value) {
+    Row row;
+    row.spin = new QDoubleSpinBox;
+    row.spin->setObjectName(QStringLiteral("spin_") + name);
+    row.spin->setDecimals(4);
+    row.spin->setRange(lo < 0 ? -1000 : 0, 1000);
+    row.spin->setSingleStep((hi - lo) / 100);
+    row.spin->setKeyboardTracking(false);
+    row.spin->setValue(value);
+    row.spin->setSuffix(QStringLiteral(" ") + unit);
+    row.slider = new QSlider(Qt::Horizontal);
+    row.slider->setObjectName(QStringLiteral("slider_") + name);
+    row.slider->setRange(0, kSliderSteps);
+    row.slider->setValue(toSlider(value, lo, hi));
+    QString tip = QStringLiteral("%1 %2 [%3]; slider %4 \u2026 %5 %3")
+                      .arg(label, caption, unit)
+                      .arg(lo)
+                      .arg(hi);
+    row.spin->setToolTip(tip);
+    row.slider->setToolTip(tip);
+    auto* line = new QWidget;
+    auto* h = new QHBoxLayout(line);
+    h->setContentsMargins(0, 0, 0, 0);
+    h->addWidget(row.spin);
+    h->addWidget(row.slider, 1);
+    auto* captionLabel = new QLabel(caption + QStringLiteral(":"));
+    captionLabel->setToolTip(tip);
+    captionLabel->setBuddy(row.spin);
+    m_form->addRow(captionLabel, line);
+
+    QDoubleSpinBox* spin = row.spin;
+    QSlider* slider = row.slider;
+    connect(spin, &QDoubleSpinBox::valueChanged, this, [=, this](double v) {
+        if (m_updating)
+            return;
+        m_updating = true;
+        slider->setValue(toSlider(v, lo, hi));
+        m_updating = false;
+        onValueChanged(name, v);
+    });
+    connect(slider, &QSlider::valueChanged, this, [=, this](int pos) {
+        if (m_updating)
+            return;
+        double v = lo + (hi - lo) * pos / kSliderSteps;
+        m_updating = true;
+        spin->setValue(v);
+        m_updating = false;
+        onValueChanged(name, v);
+    });
+    return row;
+}
+
+void ParametersPanel::rebuildRows() {
+    while (m_form->rowCount() > 0)
+        m_form->removeRow(0);
+    m_rows.clear();
+    int count = 0;
+    const char* const* names = systemParameterNames(m_scene.system.kind, &count);
+    for (int i = 0; i < count; ++i) {
+        std::string name = names[i];
+        auto it = m_scene.system.params.find(name);
+        if (it == m_scene.system.params.end())
+            continue; // the sleigh has b or I, not both
+        ParamInfo info = paramInfo(name);
+        QString qname = QString::fromStdString(name);
+        m_rows[qname] = addRow(qname, qname, QString::fromUtf8(info.label),
+                               QString::fromUtf8(info.unit), info.lo, info.hi, it->second);
+    }
+    bool energy = m_scene.mode == SpeedMode::Energy;
+    QString speedName = energy ? QStringLiteral("v_T") : QStringLiteral("v_s");
+    m_speedLabel->setText(energy
+                              ? tr("v_T = \u221a(2T/m_eff), the speed the kinetic energy is worth")
+                              : tr("v_s, the constant speed of P along the path"));
+    m_rows[QStringLiteral("speed")] = addRow(QStringLiteral("speed"), speedName, tr("speed"),
+                                             QStringLiteral("m/s"), 0.05, 5, m_scene.speed);
+}
+
+void ParametersPanel::setScene(const Scene& scene) {
+    m_updating = true;
+    // new rows when the parameter names (or the speed's name) change
+    std::set<QString> shown, wanted{QStringLiteral("speed")};
+    for (const auto& row : m_rows)
+        shown.insert(row.first);
+    for (const auto& param : scene.system.params)
+        wanted.insert(QString::fromStdString(param.first));
+    bool rebuild = shown != wanted || scene.mode != m_scene.mode;
+    m_scene = scene;
+    m_system->setCurrentIndex(m_system->findData(int(scene.system.kind)));
+    bool sleigh = scene.system.kind == SystemKind::Sleigh;
+    m_gyration->setVisible(sleigh);
+    m_gyrationLabel->setVisible(sleigh);
+    m_gyration->setCurrentIndex(scene.system.params.count("I") ? 1 : 0);
+    m_mode->setCurrentIndex(scene.mode == SpeedMode::Energy ? 0 : 1);
+    if (rebuild) {
+        rebuildRows();
+    } else {
+        for (auto& [name, row] : m_rows) {
+            double v = name == QStringLiteral("speed") ? scene.speed
+                                                       : scene.system.params.at(name.toStdString());
+            if (row.spin->value() != v) {
+                row.spin->setValue(v);
+                ParamInfo info = paramInfo(name.toStdString());
+                if (name == QStringLiteral("speed"))
+                    info = {"", "", 0.05, 5};
+                row.slider->setValue(toSlider(v, info.lo, info.hi));
+            }
+        }
+    }
+    m_updating = false;
+    updateDerived();
+}
+
+void ParametersPanel::updateDerived() {
+    try {
+        DerivedSystem d = deriveSystem(m_scene.system);
+        m_derived->setText(tr("m_eff = %1 kg, a = %2 m, b = %3 m, I = %4 kg m\u00b2")
+                               .arg(d.mass, 0, 'g', 5)
+                               .arg(d.a, 0, 'g', 5)
+                               .arg(d.b, 0, 'g', 5)
+                               .arg(d.inertia(), 0, 'g', 5));
+    } catch (const InputError&) {
+        m_derived->setText(tr("(no valid system)"));
+    }
+}
+
+void ParametersPanel::showError(const QString& message) {
+    m_error->setText(message);
+    m_error->setVisible(!message.isEmpty());
+}
+
+QString ParametersPanel::errorText() const {
+    return m_error->isVisible() ? m_error->text() : QString();
+}
+
+QDoubleSpinBox* ParametersPanel::spinBox(const QString& name) const {
+    auto it = m_rows.find(name);
+    return it == m_rows.end() ? nullptr : it->second.spin;
+}
+
+QSlider* ParametersPanel::slider(const QString& name) const {
+    auto it = m_rows.find(name);
+    return it == m_rows.end() ? nullptr : it->second.slider;
+}
+
+void ParametersPanel::onValueChanged(const QString& name, double value) {
+    if (name == QStringLiteral("speed"))
+        m_scene.speed = value;
+    else
+        m_scene.system.params[name.toStdString()] = value;
+    updateDerived();
+    emitEdit(tr("Change %1 to %2")
+                 .arg(name == QStringLiteral("speed") ? tr("speed") : name)
+                 .arg(value, 0, 'g', 4),
+             QStringLiteral("param:") + name);
+}
+
+void ParametersPanel::onSystemChosen(int index) {
+    auto kind = static_cast<SystemKind>(m_system->itemData(index).toInt());
+    if (kind == m_scene.system.kind)
+        return;
+    Scene next = m_scene;
+    next.system.kind = kind;
+    next.system.params = defaultSystemParams(kind);
+    setScene(next);
+    emitEdit(tr("Choose the %1").arg(m_system->currentText()), {});
+}
+
+void ParametersPanel::onGyrationChosen(int index) {
+    bool wantI = index == 1;
+    if (wantI == (m_scene.system.params.count("I") > 0))
+        return;
+    Scene next = m_scene;
+    try {
+        DerivedSystem d = deriveSystem(m_scene.system);
+        next.system.params.erase(wantI ? "b" : "I");
+        next.system.params[wantI ? "I" : "b"] = wantI ? d.inertia() : d.b;
+    } catch (const InputError& e) {
+        showError(QString::fromStdString(e.what()));
+        return;
+    }
+    setScene(next);
+    emitEdit(wantI ? tr("Enter I instead of b") : tr("Enter b instead of I"), {});
+}
+
+void ParametersPanel::onModeChosen(int index) {
+    SpeedMode mode = index == 0 ? SpeedMode::Energy : SpeedMode::Speed;
+    if (mode == m_scene.mode)
+        return;
+    Scene next = m_scene;
+    next.mode = mode;
+    setScene(next);
+    emitEdit(mode == SpeedMode::Energy ? tr("Constant energy") : tr("Constant speed"), {});
+}
+
+void ParametersPanel::emitEdit(const QString& description, const QString& mergeKey) {
+    emit sceneEdited(m_scene, description, mergeKey);
+}
+
+} // namespace chaplygin::ui

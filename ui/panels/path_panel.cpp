@@ -1,0 +1,204 @@
+#include "panels/path_panel.h"
+
+#include "scene/presets.h"
+
+#include <QButtonGroup>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QVBoxLayout>
+
+namespace chaplygin::ui {
+
+namespace {
+// strokes are sampled every 10 px: 3 spacings irons out a shaky hand and keeps the shape
+constexpr double kDrawnSmoothing = 3.0;
+} // namespace
+
+PathPanel::PathPanel(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QVBoxLayout(this);
+
+    auto* presetBox = new QGroupBox(tr("Preset (the paper's examples)"));
+    auto* pv = new QVBoxLayout(presetBox);
+    m_preset = new QComboBox;
+    m_preset->addItem(tr("(choose a preset)"));
+    for (const std::string& name : presetNames())
+        m_preset->addItem(QString::fromStdString(name));
+    m_preset->setToolTip(tr("Load one of the paper's four examples with the paper's parameters"));
+    m_presetInfo = new QLabel;
+    m_presetInfo->setWordWrap(true);
+    pv->addWidget(m_preset);
+    pv->addWidget(m_presetInfo);
+    layout->addWidget(presetBox);
+
+    auto* typed = new QGroupBox(tr("Typed path"));
+    auto* form = new QFormLayout(typed);
+    m_graph = new QRadioButton(tr("graph y(x)"));
+    m_parametric = new QRadioButton(tr("parametric x(u), y(u)"));
+    auto* group = new QButtonGroup(this);
+    group->addButton(m_graph);
+    group->addButton(m_parametric);
+    auto* kinds = new QHBoxLayout;
+    kinds->addWidget(m_graph);
+    kinds->addWidget(m_parametric);
+    form->addRow(kinds);
+    m_y = new QLineEdit;
+    m_y->setObjectName(QStringLiteral("graphEdit"));
+    m_y->setToolTip(
+        tr("y as a function of x [m], e.g. -sin(x) or 0.5*x + 1; press Enter to apply"));
+    form->addRow(tr("y(x) ="), m_y);
+    m_xu = new QLineEdit;
+    m_xu->setToolTip(tr("x as a function of u [m], e.g. 2*cos(u)"));
+    form->addRow(tr("x(u) ="), m_xu);
+    m_yu = new QLineEdit;
+    m_yu->setToolTip(tr("y as a function of u [m], e.g. 2*sin(u)"));
+    form->addRow(tr("y(u) ="), m_yu);
+    auto* range = new QHBoxLayout;
+    m_from = new QDoubleSpinBox;
+    m_to = new QDoubleSpinBox;
+    for (QDoubleSpinBox* s : {m_from, m_to}) {
+        s->setRange(-1e4, 1e4);
+        s->setDecimals(4);
+        s->setKeyboardTracking(false);
+        s->setToolTip(tr("The range of x [m] (graph) or of u (parametric), traversed from the "
+                         "first to the second"));
+        range->addWidget(s);
+    }
+    m_rangeLabel = new QLabel(tr("x from, to"));
+    form->addRow(m_rangeLabel, range);
+    m_apply = new QPushButton(tr("&Apply path"));
+    m_apply->setToolTip(tr("Tabulate the typed path (Enter in a field does the same)"));
+    form->addRow(m_apply);
+    m_error = new QLabel;
+    m_error->setObjectName(QStringLiteral("pathError"));
+    m_error->setWordWrap(true);
+    m_error->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_error->setStyleSheet(QStringLiteral("color: #b00020;"));
+    m_error->hide();
+    form->addRow(m_error);
+    layout->addWidget(typed);
+
+    auto* drawn = new QGroupBox(tr("Drawn path"));
+    auto* dv = new QFormLayout(drawn);
+    m_draw = new QPushButton(tr("&Draw on the canvas"));
+    m_draw->setCheckable(true);
+    m_draw->setToolTip(
+        tr("Press and drag on the canvas to draw a new path; it is sampled and smoothed"));
+    dv->addRow(m_draw);
+    m_corners = new QComboBox;
+    m_corners->addItem(tr("smooth (spline through the points)"), int(CornerMode::Smooth));
+    m_corners->addItem(tr("pivot (straight segments, turn in place)"), int(CornerMode::Pivot));
+    m_corners->setToolTip(tr("How a drawn path's corners are followed"));
+    dv->addRow(tr("Corners"), m_corners);
+    m_smoothing = new QDoubleSpinBox;
+    m_smoothing->setRange(0, 20);
+    m_smoothing->setDecimals(1);
+    m_smoothing->setSingleStep(0.5);
+    m_smoothing->setValue(kDrawnSmoothing);
+    m_smoothing->setKeyboardTracking(false);
+    m_smoothing->setToolTip(
+        tr("Smooth corners: spline bandwidth in point spacings (0 passes through every point)"));
+    dv->addRow(tr("Smoothing"), m_smoothing);
+    m_polylineInfo = new QLabel;
+    dv->addRow(m_polylineInfo);
+    layout->addWidget(drawn);
+    layout->addStretch(1);
+    for (QComboBox* combo : findChildren<QComboBox*>()) {
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        combo->setMinimumContentsLength(10);
+    }
+
+    connect(m_preset, &QComboBox::activated, this, [this](int index) {
+        if (index > 0)
+            emit presetChosen(m_preset->itemText(index));
+    });
+    connect(m_graph, &QRadioButton::toggled, this, &PathPanel::updateKind);
+    for (QLineEdit* e : {m_y, m_xu, m_yu})
+        connect(e, &QLineEdit::returnPressed, this, &PathPanel::applyTyped);
+    connect(m_apply, &QPushButton::clicked, this, &PathPanel::applyTyped);
+    connect(m_draw, &QPushButton::toggled, this, &PathPanel::drawModeToggled);
+    auto optionsChanged = [this] {
+        const PathSource& p = m_scene.path;
+        if (p.kind == PathKind::Polyline &&
+            (drawCorners() != p.corners || drawSmoothing() != p.smoothing))
+            emit drawOptionsChanged(drawCorners(), drawSmoothing());
+    };
+    connect(m_corners, &QComboBox::activated, this, optionsChanged);
+    connect(m_smoothing, &QDoubleSpinBox::valueChanged, this, optionsChanged);
+    m_graph->setChecked(true);
+    updateKind();
+}
+
+CornerMode PathPanel::drawCorners() const {
+    return static_cast<CornerMode>(m_corners->currentData().toInt());
+}
+
+double PathPanel::drawSmoothing() const {
+    return m_smoothing->value();
+}
+
+void PathPanel::updateKind() {
+    bool graph = m_graph->isChecked();
+    m_y->setEnabled(graph);
+    m_xu->setEnabled(!graph);
+    m_yu->setEnabled(!graph);
+    m_rangeLabel->setText(graph ? tr("x from, to") : tr("u from, to"));
+}
+
+void PathPanel::setScene(const Scene& scene) {
+    m_scene = scene;
+    const PathSource& p = scene.path;
+    int preset = m_preset->findText(QString::fromStdString(scene.preset));
+    m_preset->setCurrentIndex(preset > 0 ? preset : 0);
+    m_presetInfo->setText(QString::fromStdString(presetDescription(scene.preset)));
+    if (p.kind != PathKind::Polyline) {
+        (p.kind == PathKind::Graph ? m_graph : m_parametric)->setChecked(true);
+        m_y->setText(QString::fromStdString(p.y));
+        m_xu->setText(QString::fromStdString(p.xOfU));
+        m_yu->setText(QString::fromStdString(p.yOfU));
+        m_from->setValue(p.from);
+        m_to->setValue(p.to);
+        m_polylineInfo->clear();
+    } else {
+        m_corners->setCurrentIndex(m_corners->findData(int(p.corners)));
+        m_smoothing->blockSignals(true);
+        m_smoothing->setValue(p.smoothing);
+        m_smoothing->blockSignals(false);
+        m_polylineInfo->setText(
+            tr("Current path: %1 drawn points, %2 corners")
+                .arg(p.points.size())
+                .arg(p.corners == CornerMode::Pivot ? tr("pivot") : tr("smooth")));
+    }
+    updateKind();
+}
+
+void PathPanel::showError(const QString& message) {
+    m_error->setText(message);
+    m_error->setVisible(!message.isEmpty());
+}
+
+QString PathPanel::errorText() const {
+    return m_error->isVisible() ? m_error->text() : QString();
+}
+
+void PathPanel::applyTyped() {
+    PathSource source;
+    source.kind = m_graph->isChecked() ? PathKind::Graph : PathKind::Parametric;
+    if (source.kind == PathKind::Graph) {
+        source.y = m_y->text().trimmed().toStdString();
+    } else {
+        source.xOfU = m_xu->text().trimmed().toStdString();
+        source.yOfU = m_yu->text().trimmed().toStdString();
+    }
+    source.from = m_from->value();
+    source.to = m_to->value();
+    emit pathTyped(source);
+}
+
+} // namespace chaplygin::ui

@@ -1,0 +1,204 @@
+#include "plots/plot_figures.h"
+
+#include <qcustomplot.h>
+
+namespace chaplygin::ui {
+namespace {
+
+const QColor kControlled(0x1f, 0x77, 0xb4);
+const QColor kFree(0xd6, 0x27, 0x28);
+const QColor kPath(0x7f, 0x7f, 0x7f);
+
+QCPGraph* addGraph(QCPAxisRect* rect, const QVector<double>& x, const QVector<double>& y,
+                   const QString& name, const QColor& color, Qt::PenStyle style = Qt::SolidLine) {
+    QCPGraph* g =
+        rect->parentPlot()->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    g->setData(x, y, true);
+    g->setName(name);
+    g->setPen(QPen(color, 1.5, style));
+    return g;
+}
+
+QCPCurve* addCurve(QCPAxisRect* rect, const QVector<double>& x, const QVector<double>& y,
+                   const QString& name, const QColor& color, Qt::PenStyle style = Qt::SolidLine) {
+    auto* c = new QCPCurve(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
+    c->setData(x, y);
+    c->setName(name);
+    c->setPen(QPen(color, 1.5, style));
+    return c;
+}
+
+void labels(QCPAxisRect* rect, const QString& x, const QString& y) {
+    rect->axis(QCPAxis::atBottom)->setLabel(x);
+    rect->axis(QCPAxis::atLeft)->setLabel(y);
+}
+
+// the legend goes in a row under a lone plot (so it never hides a curve), or inside a panel
+void legendIn(QCPAxisRect* rect, QCustomPlot& plot) {
+    auto* legend = new QCPLegend;
+    QCPLayoutGrid* grid = plot.plotLayout();
+    if (grid->elementCount() == 1 && grid->element(0, 0) == rect) {
+        grid->addElement(1, 0, legend);
+        grid->setRowStretchFactor(1, 0.001);
+        legend->setFillOrder(QCPLegend::foColumnsFirst);
+        legend->setBorderPen(Qt::NoPen);
+        legend->setMargins(QMargins(4, 0, 4, 2));
+    } else {
+        rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
+        legend->setBrush(QColor(255, 255, 255, 210));
+    }
+    legend->setLayer("legend");
+    legend->setFont(QFont(plot.font().family(), 8));
+    for (int i = 0; i < plot.plottableCount(); ++i) {
+        QCPAbstractPlottable* p = plot.plottable(i);
+        if (p->keyAxis()->axisRect() == rect)
+            p->addToLegend(legend);
+    }
+}
+
+void rescale(QCPAxisRect* rect, bool equalAspect = false) {
+    for (QCPAbstractPlottable* p : rect->plottables())
+        p->rescaleAxes(p != rect->plottables().first());
+    QCPAxis* x = rect->axis(QCPAxis::atBottom);
+    QCPAxis* y = rect->axis(QCPAxis::atLeft);
+    // a little margin; a flat series gets a visible band around it
+    for (QCPAxis* a : {x, y}) {
+        QCPRange r = a->range();
+        double pad = r.size() > 1e-12 * std::max(1.0, std::abs(r.center()))
+                         ? 0.05 * r.size()
+                         : 0.5 * std::max(1e-3, std::abs(r.center()));
+        a->setRange(r.lower - pad, r.upper + pad);
+    }
+    if (equalAspect)
+        y->setScaleRatio(x, 1.0);
+}
+
+void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSeries& s) {
+    switch (kind) {
+    case PlotKind::Psi:
+        addGraph(rect, s.t, s.psi, QStringLiteral("controlled \u03a8"), kControlled);
+        addGraph(rect, s.freeT, s.freePsi, QStringLiteral("free \u03a8"), kFree, Qt::DashLine);
+        labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03a8 [rad]"));
+        break;
+    case PlotKind::Chi:
+        addGraph(rect, s.t, s.chi, QStringLiteral("controlled \u03c7"), kControlled);
+        addGraph(rect, s.freeT, s.freeChi, QStringLiteral("free \u03c7 (constant)"), kFree,
+                 Qt::DashLine);
+        labels(rect, QStringLiteral("t [s]"),
+               QStringLiteral("\u03c7 = \u03a8 \u2212 (a/b)\u03c6 [rad]"));
+        break;
+    case PlotKind::Lambda:
+        addGraph(rect, s.t, s.lambda, QStringLiteral("\u03bb = m b d\u03c7/dt"), kControlled);
+        labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03bb [kg m/s]"));
+        break;
+    case PlotKind::Energy:
+        addGraph(rect, s.t, s.energy, QStringLiteral("controlled T"), kControlled);
+        addGraph(rect, s.freeT, s.freeEnergy, QStringLiteral("free T"), kFree, Qt::DashLine);
+        labels(rect, QStringLiteral("t [s]"), QStringLiteral("kinetic energy T [J]"));
+        break;
+    default:
+        break;
+    }
+    rescale(rect);
+    legendIn(rect, plot);
+}
+
+void trajectoryPlot(QCustomPlot& plot, QCPAxisRect* rect, const PlotSeries& s) {
+    addCurve(rect, s.pathX, s.pathY, QStringLiteral("prescribed path"), kPath, Qt::DotLine);
+    addCurve(rect, s.x, s.y, QStringLiteral("controlled body (P)"), kControlled);
+    addCurve(rect, s.freeX, s.freeY, QStringLiteral("free body (P)"), kFree, Qt::DashLine);
+    labels(rect, QStringLiteral("x [m]"), QStringLiteral("y [m]"));
+    rescale(rect, true);
+    legendIn(rect, plot);
+}
+
+// the paper's Figs. 2 and 3: s(t), x(t), y(t) and y(x) with the path
+void paperFigure(QCustomPlot& plot, const PlotSeries& s) {
+    QCPLayoutGrid* grid = plot.plotLayout();
+    grid->clear();
+    auto* panels = new QCPLayoutGrid;
+    grid->addElement(0, 0, panels);
+    QCPAxisRect* rects[4];
+    for (int i = 0; i < 4; ++i) {
+        rects[i] = new QCPAxisRect(&plot);
+        panels->addElement(i / 2, i % 2, rects[i]);
+    }
+    addGraph(rects[0], s.t, s.s, QStringLiteral("s(t)"), kControlled);
+    labels(rects[0], QStringLiteral("t [s]"), QStringLiteral("(a) s [m]"));
+    addGraph(rects[1], s.t, s.x, QStringLiteral("x(t)"), kControlled);
+    labels(rects[1], QStringLiteral("t [s]"), QStringLiteral("(b) x [m]"));
+    addGraph(rects[2], s.t, s.y, QStringLiteral("y(t)"), kControlled);
+    labels(rects[2], QStringLiteral("t [s]"), QStringLiteral("(c) y [m]"));
+    addCurve(rects[3], s.pathX, s.pathY, QStringLiteral("path"), kPath, Qt::DotLine);
+    addCurve(rects[3], s.x, s.y, QStringLiteral("tracked y(x)"), kControlled);
+    labels(rects[3], QStringLiteral("x [m]"), QStringLiteral("(d) y [m]"));
+    for (QCPAxisRect* r : rects) {
+        rescale(r);
+        legendIn(r, plot);
+    }
+}
+
+} // namespace
+
+QString plotFileStem(PlotKind kind) {
+    switch (kind) {
+    case PlotKind::Psi:
+        return QStringLiteral("psi");
+    case PlotKind::Chi:
+        return QStringLiteral("chi");
+    case PlotKind::Lambda:
+        return QStringLiteral("lambda");
+    case PlotKind::Energy:
+        return QStringLiteral("energy");
+    case PlotKind::Trajectory:
+        return QStringLiteral("trajectory");
+    case PlotKind::PaperFigure:
+        return QStringLiteral("paper_figure");
+    }
+    return QStringLiteral("plot");
+}
+
+QString plotTitle(PlotKind kind) {
+    switch (kind) {
+    case PlotKind::Psi:
+        return QStringLiteral("Control angle \u03a8(t)");
+    case PlotKind::Chi:
+        return QStringLiteral("Driving angle \u03c7(t)");
+    case PlotKind::Lambda:
+        return QStringLiteral("Control multiplier \u03bb(t)");
+    case PlotKind::Energy:
+        return QStringLiteral("Kinetic energy T(t)");
+    case PlotKind::Trajectory:
+        return QStringLiteral("Trajectories of the knife point P");
+    case PlotKind::PaperFigure:
+        return QStringLiteral("s(t), x(t), y(t) and y(x), as in the paper's Figs. 2-3");
+    }
+    return {};
+}
+
+void drawPlot(QCustomPlot& plot, PlotKind kind, const PlotSeries& series) {
+    plot.setAutoAddPlottableToLegend(false);
+    plot.clearPlottables();
+    plot.clearItems();
+    if (kind == PlotKind::PaperFigure) {
+        paperFigure(plot, series);
+        return;
+    }
+    QCPLayoutGrid* grid = plot.plotLayout();
+    grid->clear();
+    auto* rect = new QCPAxisRect(&plot);
+    grid->addElement(0, 0, rect);
+    if (kind == PlotKind::Trajectory)
+        trajectoryPlot(plot, rect, series);
+    else
+        timePlot(plot, rect, kind, series);
+}
+
+void addCaption(QCustomPlot& plot, const QString& caption) {
+    QCPLayoutGrid* grid = plot.plotLayout();
+    grid->insertRow(0);
+    auto* text = new QCPTextElement(&plot, caption, QFont(plot.font().family(), 9));
+    grid->addElement(0, 0, text);
+}
+
+} // namespace chaplygin::ui

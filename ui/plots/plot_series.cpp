@@ -1,0 +1,65 @@
+#include "plots/plot_series.h"
+
+#include <cmath>
+
+namespace chaplygin::ui {
+
+PlotSeries collectSeries(const Solution& solution, int freeSamples, int exactSamples) {
+    PlotSeries p;
+    p.tEnd = solution.tEnd();
+    std::vector<MotionSample> controlled =
+        exactSamples > 0 ? solution.sample(exactSamples) : solution.controlledAtNodes();
+    for (const MotionSample& m : controlled) {
+        p.t << m.t;
+        p.s << m.s;
+        p.x << m.x;
+        p.y << m.y;
+        p.psi << m.control.psi;
+        p.chi << m.control.chi;
+        p.lambda << m.control.lambda;
+        p.energy << m.control.energy;
+    }
+    const DerivedSystem& sys = solution.system();
+    freeSamples = std::max(freeSamples, 2);
+    for (int i = 0; i < freeSamples; ++i) {
+        double t = p.tEnd * i / (freeSamples - 1);
+        FreeState f = solution.freeAt(t);
+        p.freeT << t;
+        p.freeX << f.x;
+        p.freeY << f.y;
+        // the free sleigh's control angle: (sdot, b phidot) = V (sin Psi, cos Psi)
+        double psi = std::atan2(f.sdot, sys.b * f.phidot);
+        p.freePsi << psi;
+        p.freeChi << psi - (sys.a / sys.b) * f.phi;
+        p.freeEnergy << f.energy;
+    }
+    for (const PathPiece& piece : solution.path()->pieces()) {
+        if (piece.kind != PathPiece::Kind::Curve)
+            continue;
+        for (const PathNode& n : piece.table->nodes()) {
+            p.pathX << n.x;
+            p.pathY << n.y;
+        }
+    }
+    return p;
+}
+
+QString sceneCaption(const Solution& solution) {
+    const Scene& scene = solution.scene();
+    const DerivedSystem& sys = solution.system();
+    QString system = QString::fromStdString(systemKindName(scene.system.kind));
+    QString mode = scene.mode == SpeedMode::Energy ? QStringLiteral("constant energy, v_T = %1 m/s")
+                                                   : QStringLiteral("constant speed, v_s = %1 m/s");
+    QString caption = QStringLiteral("%1: m_eff = %2 kg, a = %3 m, b = %4 m; %5")
+                          .arg(system)
+                          .arg(sys.mass, 0, 'g', 6)
+                          .arg(sys.a, 0, 'g', 6)
+                          .arg(sys.b, 0, 'g', 6)
+                          .arg(mode.arg(scene.speed, 0, 'g', 6));
+    if (!scene.preset.empty())
+        caption =
+            QStringLiteral("preset %1 \u2014 ").arg(QString::fromStdString(scene.preset)) + caption;
+    return caption;
+}
+
+} // namespace chaplygin::ui

@@ -1,0 +1,96 @@
+#include "plots/plots_panel.h"
+
+#include "document/scene_document.h"
+
+#include <QGridLayout>
+#include <QPalette>
+
+#include <cmath>
+#include <qcustomplot.h>
+
+namespace chaplygin::ui {
+
+PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
+    : QWidget(parent), m_document(document) {
+    m_grid = new QGridLayout(this);
+    m_grid->setContentsMargins(2, 2, 2, 2);
+    m_grid->setSpacing(2);
+    for (int i = 0; i < 4; ++i) {
+        auto* plot = new QCustomPlot;
+        plot->setObjectName(plotFileStem(kKinds[i]));
+        plot->setMinimumSize(200, 110);
+        plot->setToolTip(plotTitle(kKinds[i]) +
+                         tr(" \u2014 click or drag to move the animation to that time"));
+        plot->setNotAntialiasedElements(QCP::aeAll);
+        // the time cursor is a thin child widget: moving it repaints two narrow strips, not the
+        // plot
+        auto* cursor = new QWidget(plot);
+        cursor->setAttribute(Qt::WA_TransparentForMouseEvents);
+        cursor->setAutoFillBackground(true);
+        QPalette palette = cursor->palette();
+        palette.setColor(QPalette::Window, QColor(40, 160, 40));
+        cursor->setPalette(palette);
+        cursor->hide();
+        m_cursors[i] = cursor;
+        connect(plot, &QCustomPlot::afterReplot, this, [this, i] { placeCursor(i); });
+        // press seeks, dragging with the button down scrubs
+        auto seek = [this, plot](QMouseEvent* e) {
+            QCPAxisRect* rect = plot->axisRectCount() > 0 ? plot->axisRect() : nullptr;
+            if (rect && (e->buttons() & Qt::LeftButton))
+                emit seekRequested(rect->axis(QCPAxis::atBottom)->pixelToCoord(e->position().x()));
+        };
+        connect(plot, &QCustomPlot::mousePress, this, seek);
+        connect(plot, &QCustomPlot::mouseMove, this, seek);
+        m_grid->addWidget(plot, i / 2, i % 2);
+        m_plots[i] = plot;
+    }
+    connect(document, &SceneDocument::solutionChanged, this, &PlotsPanel::refresh);
+}
+
+void PlotsPanel::resizeEvent(QResizeEvent* e) {
+    // a wide, low dock shows the four plots in a row, otherwise two by two
+    int columns = width() > 3 * height() ? 4 : 2;
+    if (columns != m_columns) {
+        m_columns = columns;
+        for (int i = 0; i < 4; ++i) {
+            m_grid->removeWidget(m_plots[i]);
+            m_grid->addWidget(m_plots[i], i / columns, i % columns);
+        }
+    }
+    QWidget::resizeEvent(e);
+}
+
+void PlotsPanel::refresh() {
+    for (int i = 0; i < 4; ++i) {
+        drawPlot(*m_plots[i], kKinds[i], m_document->series());
+        m_plots[i]->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+void PlotsPanel::placeCursor(int index) {
+    QCustomPlot* plot = m_plots[index];
+    QWidget* cursor = m_cursors[index];
+    if (plot->axisRectCount() == 0) {
+        cursor->hide();
+        return;
+    }
+    QCPAxisRect* rect = plot->axisRect();
+    QCPAxis* axis = rect->axis(QCPAxis::atBottom);
+    double x = axis->coordToPixel(m_time);
+    bool inside = axis->range().contains(m_time) && rect->height() > 0;
+    cursor->setGeometry(int(std::lround(x)) - 1, rect->top(), 2, rect->height());
+    cursor->setVisible(inside);
+}
+
+void PlotsPanel::setTime(double t) {
+    m_time = t;
+    for (int i = 0; i < 4; ++i)
+        placeCursor(i);
+}
+
+void PlotsPanel::replotNow() {
+    for (QCustomPlot* plot : m_plots)
+        plot->replot(QCustomPlot::rpImmediateRefresh);
+}
+
+} // namespace chaplygin::ui

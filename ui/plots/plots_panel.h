@@ -1,0 +1,55 @@
+#pragma once
+#include "plots/plot_figures.h"
+
+#include <QWidget>
+
+#include <array>
+
+class QCustomPlot;
+class QGridLayout;
+
+namespace chaplygin::ui {
+
+class SceneDocument;
+
+/// The plots dock: Psi, chi, lambda and the kinetic energy against t, each drawn by drawPlot
+/// (so they look like the exported plots) with the free motion alongside, and a time cursor
+/// that is a thin child widget, so that moving it repaints two narrow strips. Clicking seeks.
+class PlotsPanel : public QWidget {
+    Q_OBJECT
+  public:
+    static constexpr std::array<PlotKind, 4> kKinds{PlotKind::Psi, PlotKind::Chi, PlotKind::Lambda,
+                                                    PlotKind::Energy};
+
+    explicit PlotsPanel(SceneDocument* document, QWidget* parent = nullptr);
+
+    QCustomPlot* plot(int index) const { return m_plots[index]; }
+    double cursorTime() const { return m_time; }
+    /// The time cursor drawn over a plot.
+    QWidget* cursor(int index) const { return m_cursors[index]; }
+
+  public slots:
+    /// Hands the document's series to the plots (after each recompute).
+    void refresh();
+    void setTime(double t);
+    /// Repaints every plot now (for screenshots and the benchmark).
+    void replotNow();
+
+  signals:
+    void seekRequested(double t);
+
+  protected:
+    void resizeEvent(QResizeEvent* e) override;
+
+  private:
+    void placeCursor(int index);
+
+    SceneDocument* m_document;
+    std::array<QCustomPlot*, 4> m_plots{};
+    std::array<QWidget*, 4> m_cursors{};
+    double m_time = 0;
+    QGridLayout* m_grid;
+    int m_columns = 2;
+};
+
+} // namespace chaplygin::ui

@@ -1,0 +1,21 @@
+#include "shell/gallery_menu.h"
+
+#include "lab/gallery.h"
+
+namespace chaplygin::ui {
+
+GalleryMenu::GalleryMenu(QWidget* parent) : QMenu(tr("&Gallery"), parent) {
+    setToolTipsVisible(true);
+    for (const GalleryEntry& e : galleryEntries()) {
+        const QString name = QString::fromStdString(e.name);
+        QString title = QString::fromStdString(e.title);
+        if (e.rejected)
+            title += tr(" (refused)");
+        QAction* action = addAction(title, this, [this, name] { emit entryChosen(name); });
+        action->setObjectName(QStringLiteral("gallery-") + name);
+        action->setStatusTip(QString::fromStdString(e.explanation));
+        action->setToolTip(QString::fromStdString(e.explanation));
+    }
+}
+
+} // namespace chaplygin::ui

@@ -1,0 +1,546 @@
+#include "shell/main_window.h"
+
+#include "canvas/scene_canvas.h"
+#include "common/atomic_file.h"
+#include "common/input_error.h"
+#include "document/scene_command.h"
+#include "document/scene_document.h"
+#include "document/scene_files.h"
+#include "lab/gallery.h"
+#include "panels/accuracy_readout.h"
+#include "panels/methods_panel.h"
+#include "panels/parameters_panel.h"
+#include "panels/path_panel.h"
+#include "plots/plot_export.h"
+#include "plots/plots_panel.h"
+#include "scene/presets.h"
+#include "scene/scene_json.h"
+#include "shell/gallery_menu.h"
+#include "shell/playback.h"
+#include "shell/timeline_bar.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QScrollArea>
+#include <QSettings>
+#include <QStatusBar>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <exception>
+
+namespace chaplygin::ui {
+
+namespace {
+
+QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content,
+                      QMainWindow* parent) {
+    auto* dock = new QDockWidget(title, parent);
+    dock->setObjectName(name);
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(content);
+    dock->setWidget(scroll);
+    return dock;
+}
+
+} // namespace
+
+MainWindow::MainWindow(bool useSettings, QWidget* parent)
+    : QMainWindow(parent), m_useSettings(useSettings), m_document(new SceneDocument(this)),
+      m_playback(new Playback(this)), m_undo(new QUndoStack(this)) {
+    m_canvas = new SceneCanvas(m_document);
+    setCentralWidget(m_canvas);
+
+    m_path = new PathPanel;
+    m_parameters = new ParametersPanel;
+    m_plots = new PlotsPanel(m_document);
+    m_pathDock = makeDock(tr("Path"), QStringLiteral("pathDock"), m_path, this);
+    m_parametersDock =
+        makeDock(tr("System and parameters"), QStringLiteral("parametersDock"), m_parameters, this);
+    m_plotsDock = new QDockWidget(tr("Plots"), this);
+    m_plotsDock->setObjectName(QStringLiteral("plotsDock"));
+    m_plotsDock->setWidget(m_plots);
+    addDockWidget(Qt::LeftDockWidgetArea, m_pathDock);
+    addDockWidget(Qt::LeftDockWidgetArea, m_parametersDock);
+    tabifyDockWidget(m_pathDock, m_parametersDock);
+    m_pathDock->raise();
+    addDockWidget(Qt::BottomDockWidgetArea, m_plotsDock);
+    m_methods = new MethodsPanel(m_document);
+    m_methodsDock = new QDockWidget(tr("Methods"), this);
+    m_methodsDock->setObjectName(QStringLiteral("methodsDock"));
+    m_methodsDock->setWidget(m_methods);
+    addDockWidget(Qt::BottomDockWidgetArea, m_methodsDock);
+    tabifyDockWidget(m_plotsDock, m_methodsDock);
+    m_plotsDock->raise();
+    m_accuracy = new AccuracyReadout(m_document);
+    m_accuracyDock = makeDock(tr("Accuracy"), QStringLiteral("accuracyDock"), m_accuracy, this);
+    addDockWidget(Qt::RightDockWidgetArea, m_accuracyDock);
+    m_accuracyDock->setMinimumWidth(240);
+    m_pathDock->setMinimumWidth(360);
+    m_parametersDock->setMinimumWidth(360);
+
+    m_timeline = new TimelineBar(m_playback, this);
+    addToolBar(Qt::BottomToolBarArea, m_timeline);
+    m_status = new QLabel;
+    statusBar()->addWidget(m_status, 1);
+
+    buildMenus();
+
+    connect(m_document, &SceneDocument::solutionChanged, this, &MainWindow::onSolutionChanged);
+    connect(m_document, &SceneDocument::errorChanged, this, &MainWindow::onDocumentError);
+    connect(m_document, &SceneDocument::fileNameChanged, this, &MainWindow::updateTitle);
+    connect(m_undo, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(m_playback, &Playback::timeChanged, this, &MainWindow::onTime);
+    connect(m_plots, &PlotsPanel::seekRequested, m_playback, &Playback::seek);
+    connect(m_path, &PathPanel::presetChosen, this, &MainWindow::choosePreset);
+    connect(m_path, &PathPanel::pathTyped, this,
+            [this](const PathSource& s) { setPath(s, tr("Type a path")); });
+    connect(m_path, &PathPanel::drawModeToggled, m_canvas, &SceneCanvas::setDrawMode);
+    connect(m_path, &PathPanel::drawOptionsChanged, this,
+            [this](CornerMode mode, double smoothing) {
+                PathSource s = m_current.path;
+                s.corners = mode;
+                s.smoothing = smoothing;
+                setPath(s, tr("Change the corners"), false);
+            });
+    connect(m_canvas, &SceneCanvas::pathDrawn, this,
+            [this](const std::vector<std::pair<double, double>>& points) {
+                PathSource s;
+                s.kind = PathKind::Polyline;
+                s.points = points;
+                s.corners = m_path->drawCorners();
+                s.smoothing = m_path->drawSmoothing();
+                setPath(s, tr("Draw a path"));
+            });
+    connect(m_canvas, &SceneCanvas::pointsEdited, this,
+            [this](const std::vector<std::pair<double, double>>& points) {
+                PathSource s = m_current.path;
+                s.points = points;
+                setPath(s, tr("Edit the drawn path"), false);
+            });
+    connect(m_parameters, &ParametersPanel::sceneEdited, this, &MainWindow::onParametersEdited);
+
+    bool restored = false;
+    if (m_useSettings) {
+        QSettings settings;
+        restored = restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray());
+        restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
+    }
+    if (!restored) {
+        resize(1280, 800);
+        balanceDocks();
+    }
+    loadScene(presetScene("sinusoid"));
+}
+
+MainWindow::~MainWindow() {
+    // the undo stack signals cleanChanged while it is destroyed, after this window has gone
+    m_undo->disconnect(this);
+}
+
+void MainWindow::balanceDocks() {
+    // the canvas gets most of the height; the plots a third
+    resizeDocks({m_plotsDock}, {std::max(220, height() / 3)}, Qt::Vertical);
+    resizeDocks({m_pathDock}, {std::max(360, width() / 4)}, Qt::Horizontal);
+}
+
+void MainWindow::showParametersDock() {
+    m_parametersDock->show();
+    m_parametersDock->raise();
+}
+
+void MainWindow::buildMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    file->addAction(tr("&New"), QKeySequence::New, this, &MainWindow::newScene);
+    file->addAction(tr("&Open\u2026"), QKeySequence::Open, this, &MainWindow::openDialog);
+    m_recentMenu = file->addMenu(tr("Open &Recent"));
+    rebuildRecentMenu();
+    file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { saveDialog(false); });
+    file->addAction(tr("Save &As\u2026"), QKeySequence::SaveAs, this, [this] { saveDialog(true); });
+    file->addSeparator();
+    file->addAction(tr("Export &plots\u2026"), QKeySequence(tr("Ctrl+E")), this,
+                    &MainWindow::exportPlotsDialog);
+    file->addAction(tr("Export &CSV\u2026"), QKeySequence(tr("Ctrl+Shift+E")), this,
+                    &MainWindow::exportCsvDialog);
+    file->addSeparator();
+    file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = m_undo->createUndoAction(this, tr("&Undo"));
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = m_undo->createRedoAction(this, tr("&Redo"));
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addAction(m_pathDock->toggleViewAction());
+    view->addAction(m_parametersDock->toggleViewAction());
+    view->addAction(m_plotsDock->toggleViewAction());
+    view->addAction(m_methodsDock->toggleViewAction());
+    view->addAction(m_accuracyDock->toggleViewAction());
+    view->addAction(m_timeline->toggleViewAction());
+    view->addSeparator();
+    view->addAction(tr("&Fit scene"), QKeySequence(tr("Ctrl+0")), m_canvas, &SceneCanvas::fitScene);
+    m_followAction = view->addAction(tr("F&ollow body"));
+    m_followAction->setCheckable(true);
+    m_followAction->setShortcut(QKeySequence(tr("Ctrl+B")));
+    connect(m_followAction, &QAction::toggled, m_canvas, &SceneCanvas::setFollowBody);
+    connect(m_canvas, &SceneCanvas::followBodyChanged, m_followAction, &QAction::setChecked);
+    view->addAction(tr("Zoom &in"), QKeySequence::ZoomIn, this, [this] { m_canvas->zoomBy(1.25); });
+    view->addAction(tr("Zoom &out"), QKeySequence::ZoomOut, this,
+                    [this] { m_canvas->zoomBy(0.8); });
+
+    QMenu* play = menuBar()->addMenu(tr("&Animation"));
+    play->addAction(m_timeline->playAction());
+    play->addAction(m_timeline->stepBackAction());
+    play->addAction(m_timeline->stepForwardAction());
+    play->addAction(m_timeline->loopAction());
+
+    QMenu* methods = menuBar()->addMenu(tr("&Methods"));
+    methods->addAction(tr("Compute &work-precision"), QKeySequence(tr("Ctrl+Shift+W")), this,
+                       [this] {
+                           showMethodsDock();
+                           m_methods->start();
+                       });
+    methods->addAction(tr("&Cancel work-precision"), m_methods, &MethodsPanel::cancel);
+    auto* gallery = new GalleryMenu(this);
+    menuBar()->addMenu(gallery);
+    connect(gallery, &GalleryMenu::entryChosen, this, &MainWindow::loadGalleryEntry);
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&Physics notes"), QKeySequence::HelpContents, this, [this] {
+        QMessageBox::information(this, tr("Physics notes"),
+                                 tr("<p>The knife point P follows the prescribed path. The control "
+                                    "angle \u03a8 satisfies "
+                                    "tan \u03a8 = \u03c1/b (eq. 45); \u03c7 = \u03a8 \u2212 "
+                                    "(a/b)\u03c6 is the driving angle and "
+                                    "\u03bb = m b d\u03c7/dt the control multiplier. The control "
+                                    "is workless, so the kinetic "
+                                    "energy stays constant in the energy mode.</p>"
+                                    "<p>The ghost is the free (Lagrange\u2013d'Alembert, "
+                                    "Neimark\u2013Fufaev) sleigh from the same "
+                                    "initial state: it turns away and ends on a straight line.</p>"
+                                    "<p>Disk and carriage reduce to a sleigh with effective mass "
+                                    "m_eff, offset a and radius of "
+                                    "gyration b (Apps. A, B).</p><p>Models in use: %1</p>")
+                                     .arg(m_status->text().toHtmlEscaped()));
+    });
+    help->addAction(tr("&About Chaplygin Lab"), this, [this] {
+        QMessageBox::about(
+            this, tr("About Chaplygin Lab"),
+            tr("<b>Chaplygin Lab %1</b><p>Control of nonholonomic Chaplygin systems "
+               "(Antunes, Sigaud, de Moraes, Braz. J. Phys. 2009): sleigh, rolling disk and "
+               "two-wheeled carriage.</p>")
+                .arg(QCoreApplication::applicationVersion()));
+    });
+}
+
+void MainWindow::rebuildRecentMenu() {
+    m_recentMenu->clear();
+    const QStringList files = m_useSettings ? recentFiles() : QStringList();
+    for (const QString& f : files)
+        m_recentMenu
+            ->addAction(QFileInfo(f).fileName(), this,
+                        [this, f] {
+                            if (maybeSave())
+                                openFile(f);
+                        })
+            ->setToolTip(f);
+    m_recentMenu->setEnabled(!files.isEmpty());
+}
+
+void MainWindow::applyScene(const Scene& scene) {
+    // a parameter change leaves the path fields alone (with any unfinished typing in them)
+    bool pathChanged =
+        scene.path != m_current.path || scene.preset != m_current.preset || !m_applied;
+    m_current = scene;
+    m_applied = true;
+    if (pathChanged) {
+        m_path->setScene(scene);
+        m_path->showError({});
+    }
+    m_parameters->setScene(scene);
+    m_parameters->showError({});
+    m_document->setScene(scene);
+}
+
+void MainWindow::loadScene(const Scene& scene) {
+    m_document->check(scene); // a scene that does not solve never replaces the current one
+    m_undo->clear();
+    applyScene(scene);
+    m_document->flush();
+    m_playback->seek(0);
+    m_canvas->fitScene();
+}
+
+void MainWindow::editScene(const Scene& scene, const QString& description,
+                           const QString& mergeKey) {
+    if (scene == m_current)
+        return;
+    m_undo->push(new SceneCommand(
+        description, m_current, scene, [this](const Scene& s) { applyScene(s); }, mergeKey));
+}
+
+void MainWindow::choosePreset(const QString& name) {
+    try {
+        Scene next = presetScene(name.toStdString());
+        m_document->pathFor(next.path);
+        editScene(next, tr("Preset %1").arg(name));
+        m_document->flush();
+        m_canvas->fitScene();
+    } catch (const InputError& e) {
+        m_path->showError(QString::fromStdString(e.what()));
+    }
+}
+
+void MainWindow::setPath(const PathSource& source, const QString& description, bool refit) {
+    // tabulated on the path worker: errors stay in the panel, the last path stays meanwhile
+    const QString tabulating = tr("Tabulating the path\u2026");
+    m_document->requestPath(source, [=, this](const QString& error) {
+        if (statusBar()->currentMessage() == tabulating)
+            statusBar()->clearMessage();
+        m_path->showError(error);
+        if (!error.isEmpty())
+            return;
+        Scene next = m_current;
+        next.path = source;
+        next.preset.clear();
+        editScene(next, description);
+        m_document->flush();
+        if (refit)
+            m_canvas->fitScene();
+    });
+    if (m_document->pathPending())
+        statusBar()->showMessage(tabulating);
+}
+
+void MainWindow::onParametersEdited(const Scene& scene, const QString& description,
+                                    const QString& mergeKey) {
+    try {
+        deriveSystem(scene.system);
+    } catch (const InputError& e) {
+        m_parameters->showError(QString::fromStdString(e.what()));
+        return;
+    }
+    m_parameters->showError({});
+    editScene(scene, description, mergeKey);
+}
+
+void MainWindow::onSolutionChanged() {
+    const auto& solution = m_document->solution();
+    m_playback->setTEnd(solution->tEnd());
+    m_timeline->sync();
+    m_canvas->setTime(m_playback->time());
+    m_plots->setTime(m_playback->time());
+    const ModelReport& m = solution->models();
+    m_status->setText(QString::fromStdString("path: " + m.path + "; time law: " + m.timeLaw +
+                                             "; free motion: " + m.freeVelocity + ", " +
+                                             m.freePosition));
+    if (m_noteScene && m_document->scene() != *m_noteScene) {
+        m_noteScene.reset();
+        m_accuracy->setNote({}, {});
+    }
+    m_accuracy->setTime(m_playback->time());
+    updateTitle();
+}
+
+void MainWindow::showMethodsDock() {
+    m_methodsDock->show();
+    m_methodsDock->raise();
+    // the diagram's legends need about half the height
+    resizeDocks({m_methodsDock}, {std::max(360, height() * 9 / 20)}, Qt::Vertical);
+}
+
+bool MainWindow::loadGalleryEntry(const QString& name) {
+    const GalleryEntry& entry = galleryEntry(name.toStdString());
+    const QString title = QString::fromStdString(entry.title);
+    const QString explanation = QString::fromStdString(entry.explanation);
+    m_accuracyDock->show();
+    m_accuracyDock->raise();
+    try {
+        m_document->check(entry.scene); // the core's refusal is the lesson of a rejected entry
+    } catch (const InputError& e) {
+        const QString refusal = QString::fromStdString(e.what());
+        m_noteScene = m_current;
+        m_accuracy->setNote(tr("Refused: %1").arg(title),
+                            refusal + QStringLiteral("\n\n") + explanation, true);
+        statusBar()->showMessage(refusal, 10000);
+        if (isVisible() && m_useSettings)
+            QMessageBox::warning(this, tr("Gallery: %1").arg(title), refusal);
+        return false;
+    }
+    m_noteScene = entry.scene;
+    m_accuracy->setNote(title, explanation);
+    statusBar()->clearMessage(); // an earlier refusal no longer applies
+    editScene(entry.scene, tr("Gallery: %1").arg(title));
+    m_document->flush();
+    m_playback->seek(0);
+    m_canvas->fitScene();
+    return true;
+}
+
+void MainWindow::onDocumentError(const QString& error) {
+    if (!error.isEmpty()) {
+        m_parameters->showError(error);
+        statusBar()->showMessage(error, 8000);
+    }
+}
+
+void MainWindow::onTime(double t) {
+    m_canvas->setTime(t);
+    m_plots->setTime(t);
+    m_accuracy->setTime(t);
+}
+
+bool MainWindow::maybeSave() {
+    if (!m_useSettings || m_undo->isClean())
+        return true;
+    auto answer = QMessageBox::question(
+        this, tr("Chaplygin Lab"), tr("The scene has unsaved changes. Save them?"),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save)
+        return saveDialog(false);
+    return answer == QMessageBox::Discard;
+}
+
+void MainWindow::newScene() {
+    if (!maybeSave())
+        return;
+    loadScene(presetScene("sinusoid"));
+    m_document->setFileName({});
+}
+
+// the document now is the file at path: clean, and first in the recent files
+void MainWindow::markSavedAs(const QString& path) {
+    m_document->setFileName(path);
+    m_undo->setClean();
+    if (m_useSettings) {
+        addRecentFile(path);
+        rebuildRecentMenu();
+    }
+}
+
+bool MainWindow::openFile(const QString& path) {
+    try {
+        Scene scene = openSceneFile(path);
+        loadScene(scene);
+    } catch (const std::exception& e) {
+        showFileError(QString::fromStdString(e.what()));
+        return false;
+    }
+    markSavedAs(path);
+    return true;
+}
+
+bool MainWindow::saveFile(const QString& path) {
+    // a scene that does not solve would not open again: it never replaces a file
+    m_document->flush();
+    if (!m_document->error().isEmpty()) {
+        showFileError(tr("cannot save '%1': the scene does not solve (%2); fix it or undo first")
+                          .arg(path, m_document->error()));
+        return false;
+    }
+    try {
+        saveSceneFile(path, m_current);
+    } catch (const std::exception& e) {
+        showFileError(QString::fromStdString(e.what()));
+        return false;
+    }
+    markSavedAs(path);
+    statusBar()->showMessage(tr("Saved %1").arg(path), 4000);
+    return true;
+}
+
+bool MainWindow::exportPlotsTo(const QString& dir, const QStringList& formats) {
+    m_document->flush();
+    try {
+        exportPlots(*m_document->solution(), dir, formats);
+    } catch (const std::exception& e) {
+        showFileError(QString::fromStdString(e.what()));
+        return false;
+    }
+    statusBar()->showMessage(tr("Plots written to %1").arg(dir), 4000);
+    return true;
+}
+
+bool MainWindow::exportCsvTo(const QString& path) {
+    m_document->flush();
+    try {
+        exportCsvFile(path, *m_document->solution());
+    } catch (const std::exception& e) {
+        showFileError(QString::fromStdString(e.what()));
+        return false;
+    }
+    statusBar()->showMessage(tr("CSV written to %1").arg(path), 4000);
+    return true;
+}
+
+void MainWindow::openDialog() {
+    if (!maybeSave())
+        return;
+    QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), {},
+                                                tr("Scenes (*.json);;All files (*)"));
+    if (!path.isEmpty())
+        openFile(path);
+}
+
+bool MainWindow::saveDialog(bool askName) {
+    QString path = m_document->fileName();
+    if (askName || path.isEmpty())
+        path = QFileDialog::getSaveFileName(this, tr("Save scene"), path, tr("Scenes (*.json)"));
+    return !path.isEmpty() && saveFile(path);
+}
+
+void MainWindow::exportPlotsDialog() {
+    QString dir =
+        QFileDialog::getExistingDirectory(this, tr("Export plots (PNG, PDF and SVG) into"));
+    if (!dir.isEmpty())
+        exportPlotsTo(dir, {QStringLiteral("png"), QStringLiteral("pdf"), QStringLiteral("svg")});
+}
+
+void MainWindow::exportCsvDialog() {
+    QString path = QFileDialog::getSaveFileName(this, tr("Export CSV"), {}, tr("CSV (*.csv)"));
+    if (!path.isEmpty())
+        exportCsvTo(path);
+}
+
+void MainWindow::showFileError(const QString& message) {
+    m_lastFileError = message;
+    statusBar()->showMessage(message, 10000);
+    if (isVisible() && !QCoreApplication::closingDown() && m_useSettings)
+        QMessageBox::warning(this, tr("Chaplygin Lab"), message);
+}
+
+void MainWindow::updateTitle() {
+    QString name = m_document->fileName().isEmpty() ? tr("untitled")
+                                                    : QFileInfo(m_document->fileName()).fileName();
+    setWindowTitle(tr("%1%2 \u2014 Chaplygin Lab")
+                       .arg(name, m_undo->isClean() ? QString() : QStringLiteral("*")));
+}
+
+void MainWindow::closeEvent(QCloseEvent* e) {
+    if (!maybeSave()) {
+        e->ignore();
+        return;
+    }
+    if (m_useSettings) {
+        QSettings settings;
+        settings.setValue(QStringLiteral("geometry"), saveGeometry());
+        settings.setValue(QStringLiteral("windowState"), saveState());
+    }
+    e->accept();
+}
+
+} // namespace chaplygin::ui

@@ -1,0 +1,79 @@
+#include "shell/timeline_bar.h"
+
+#include "shell/playback.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QLabel>
+#include <QSlider>
+#include <QStyle>
+
+#include <cmath>
+
+namespace chaplygin::ui {
+
+namespace {
+constexpr int kSliderSteps = 2000;
+}
+
+TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
+    : QToolBar(tr("Timeline"), parent), m_playback(playback) {
+    setObjectName(QStringLiteral("timeline"));
+    m_stepBack = addAction(style()->standardIcon(QStyle::SP_MediaSeekBackward), tr("Step &back"));
+    m_stepBack->setShortcut(Qt::Key_Comma);
+    m_stepBack->setToolTip(tr("One step back (,)"));
+    m_play = addAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("&Play"));
+    m_play->setShortcut(Qt::Key_Space);
+    m_play->setToolTip(tr("Play or pause (Space)"));
+    m_stepForward =
+        addAction(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("Step &forward"));
+    m_stepForward->setShortcut(Qt::Key_Period);
+    m_stepForward->setToolTip(tr("One step forward (.)"));
+    m_loop = addAction(tr("Loop"));
+    m_loop->setCheckable(true);
+    m_loop->setToolTip(tr("Start again at the end"));
+    m_speed = new QComboBox;
+    for (double f : {0.25, 0.5, 1.0, 2.0, 4.0})
+        m_speed->addItem(QStringLiteral("\u00d7%1").arg(f), f);
+    m_speed->setCurrentIndex(2);
+    m_speed->setToolTip(tr("Playback speed: simulated seconds per real second"));
+    addWidget(m_speed);
+    m_slider = new QSlider(Qt::Horizontal);
+    m_slider->setRange(0, kSliderSteps);
+    m_slider->setToolTip(tr("Scrub through time"));
+    m_slider->setMinimumWidth(200);
+    addWidget(m_slider);
+    m_timeLabel = new QLabel;
+    m_timeLabel->setMinimumWidth(150);
+    addWidget(m_timeLabel);
+
+    connect(m_play, &QAction::triggered, playback, &Playback::togglePlay);
+    connect(m_stepBack, &QAction::triggered, playback, &Playback::stepBackward);
+    connect(m_stepForward, &QAction::triggered, playback, &Playback::stepForward);
+    connect(m_loop, &QAction::toggled, playback, &Playback::setLoop);
+    connect(m_speed, &QComboBox::currentIndexChanged, this,
+            [this](int i) { m_playback->setSpeedFactor(m_speed->itemData(i).toDouble()); });
+    connect(m_slider, &QSlider::valueChanged, this, [this](int v) {
+        if (!m_syncing)
+            m_playback->seek(m_playback->tEnd() * v / kSliderSteps);
+    });
+    connect(playback, &Playback::timeChanged, this, &TimelineBar::sync);
+    connect(playback, &Playback::playingChanged, this, [this](bool playing) {
+        m_play->setIcon(
+            style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+        m_play->setText(playing ? tr("&Pause") : tr("&Play"));
+    });
+    sync();
+}
+
+void TimelineBar::sync() {
+    m_syncing = true;
+    double end = m_playback->tEnd();
+    m_slider->setValue(
+        end > 0 ? static_cast<int>(std::lround(m_playback->time() / end * kSliderSteps)) : 0);
+    m_timeLabel->setText(
+        tr(" t = %1 s / %2 s").arg(m_playback->time(), 0, 'f', 2).arg(end, 0, 'f', 2));
+    m_syncing = false;
+}
+
+} // namespace chaplygin::ui
