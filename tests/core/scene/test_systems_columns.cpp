@@ -89,9 +89,9 @@ void checkScene(const Scene& scene, const std::array<double, 6>& summary,
     std::string json = formatSummary(sol);
     const char* keys[] = {"a", "b", "m_eff", "I", "path_length", "duration"};
     for (int i = 0; i < 6; ++i)
-        EXPECT_NEAR(summaryNumber(json, keys[i]), summary[i], 1e-10 * (1 + std::fabs(summary[i])))
+        EXPECT_NEAR(summaryNumber(json, keys[i]), summary[i], 1e-12 * (1 + std::fabs(summary[i])))
             << keys[i];
-    EXPECT_NEAR(summaryNumber(json, "t_end"), summary[5], 1e-10 * summary[5]);
+    EXPECT_NEAR(summaryNumber(json, "t_end"), summary[5], 1e-12 * summary[5]);
 
     std::vector<double> times;
     for (const Row& r : rows)
@@ -108,7 +108,7 @@ void checkScene(const Scene& scene, const std::array<double, 6>& summary,
             double v = std::strtod(p, &end);
             ASSERT_NE(end, p) << names[c];
             p = *end == ',' ? end + 1 : end;
-            EXPECT_NEAR(v, r[c], 1e-10 * (1 + std::fabs(r[c]))) << names[c] << " at t = " << r[0];
+            EXPECT_NEAR(v, r[c], 1e-12 * (1 + std::fabs(r[c]))) << names[c] << " at t = " << r[0];
         }
     }
 }
