@@ -33,7 +33,8 @@ std::string formatSummary(const Solution& solution) {
                    {"inversion", m.inversion},
                    {"control", m.control},
                    {"free_velocity", m.freeVelocity},
-                   {"free_position", m.freePosition}};
+                   {"free_position", m.freePosition},
+                   {"vakonomic", m.vakonomic}};
     return j.dump(2) + "\n";
 }
 
