@@ -15,6 +15,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QFile>
+#include <QIcon>
 #include <QImage>
 #include <QPixmap>
 
@@ -33,6 +34,9 @@ void describeApplication() {
     QCoreApplication::setOrganizationName(QStringLiteral("ChaplyginLab"));
     QCoreApplication::setApplicationName(QStringLiteral("Chaplygin Lab"));
     QCoreApplication::setApplicationVersion(QStringLiteral(CHAPLYGIN_LAB_VERSION));
+    // resources/chaplygin-lab.qrc, compiled into the executable
+    QGuiApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/chaplygin-lab.svg")));
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.chaplyginlab.ChaplyginLab"));
 }
 
 // the offscreen platform warns about window hints it cannot honour; that is not news to the user
