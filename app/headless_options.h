@@ -7,7 +7,7 @@
 
 namespace chaplygin {
 
-/// The parsed headless command line (design.md sec. 3).
+/// The parsed headless command line (chaplygin-lab --headless --help).
 struct HeadlessOptions {
     Scene scene;
     std::optional<std::vector<double>> times; ///< --times: rows exactly at these times
@@ -15,7 +15,8 @@ struct HeadlessOptions {
     std::string csvPath, summaryPath, plotsDir;
     std::vector<std::string> formats{"png"};
     bool help = false;
-    bool workPrecision = false; ///< --work-precision: the speed-against-accuracy sweep (issue #4)
+    bool workPrecision =
+        false; ///< --work-precision: the speed-against-accuracy sweep (docs/numerics.md §2)
 };
 
 /// Parses the arguments after --headless (and the scene options the screenshot mode shares).

@@ -6,7 +6,7 @@
 namespace chaplygin {
 
 enum class SpeedMode {
-    Energy, ///< constant kinetic energy: v_T = sqrt(2T/m_eff) fixed (sec. 4)
+    Energy, ///< constant kinetic energy: v_T = sqrt(2T/m_eff) fixed (paper sec. 4)
     Speed   ///< constant speed along the path: sdot = v_s fixed (App. C)
 };
 SpeedMode speedModeFromName(const std::string& name);
@@ -19,7 +19,7 @@ struct ControlParams {
     double speed = 1.0; ///< v_T [m/s] in Energy mode, v_s [m/s] in Speed mode
 };
 
-/// The tracking control at one point of the path (physics.md sec. 2). Units: SI.
+/// The tracking control at one point of the path (docs/physics.md §2). Units: SI.
 struct ControlState {
     double sdot = 0, phidot = 0;   ///< [m/s], [rad/s]
     double sddot = 0, phiddot = 0; ///< [m/s^2], [rad/s^2]

@@ -19,7 +19,7 @@ struct FreeState {
 
 /// The free (Lagrange-d'Alembert / Neimark-Fufaev) sleigh, eqs. (D12)-(D15):
 /// sddot = a phidot^2, phiddot = -a sdot phidot/b^2. Velocities and heading in closed form
-/// (physics.md sec. 1): sdot = V tanh(kt + c), phidot = sigma (V/b) sech(kt + c),
+/// (docs/physics.md §4): sdot = V tanh(kt + c), phidot = sigma (V/b) sech(kt + c),
 /// phi = phi0 + sigma (b/a)(gd(kt + c) - gd(c)), k = aV/b^2, c = atanh(sdot0/V).
 /// Position: z = x + iy integrates sdot e^{i phi} by 8-point Gauss-Legendre panels narrower than
 /// both time scales (1/k and b/V), so it is exact to rounding; past |kt + c| > 40 the heading is
