@@ -10,6 +10,7 @@
 #include "runtime_directory.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
+#include "translations.h"
 #include "version.h"
 
 #include <QApplication>
@@ -17,6 +18,7 @@
 #include <QFile>
 #include <QIcon>
 #include <QImage>
+#include <QLocale>
 #include <QPixmap>
 
 #include <cstdio>
@@ -145,6 +147,7 @@ int runDesktop(int argc, char** argv) {
         Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
     QApplication app(argc, argv);
     describeApplication();
+    app::installTranslations(app, QLocale::system());
     // QApplication has taken its own options out; what is left is a scene file or scene options
     QStringList args = QCoreApplication::arguments().mid(1);
     MainWindow window;
