@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <stdexcept>
+
 namespace chaplygin {
 namespace {
 
@@ -21,12 +23,18 @@ std::vector<GalleryEntry> build() {
         GalleryEntry e;
         e.name = std::string(
             file.path.substr(folder.size(), file.path.size() - folder.size() - suffix.size()));
-        e.scene = sceneFromJson(text);
-        const nlohmann::json about = nlohmann::json::parse(text).at("gallery");
-        e.title = about.at("title").get<std::string>();
-        e.explanation = about.at("explanation").get<std::string>();
-        e.rejected = about.value("rejected", false);
-        e.message = about.value("message", std::string());
+        try {
+            e.scene = sceneFromJson(text);
+            const nlohmann::json about = nlohmann::json::parse(text).at("gallery");
+            e.title = about.at("title").get<std::string>();
+            e.explanation = about.at("explanation").get<std::string>();
+            e.rejected = about.value("rejected", false);
+            e.message = about.value("message", std::string());
+        } catch (const std::exception& err) {
+            // a resource compiled into the program: a build defect, not bad input
+            throw std::logic_error("resources/scenes/" + std::string(file.path) + ": " +
+                                   err.what());
+        }
         g.push_back(std::move(e));
     }
     return g;

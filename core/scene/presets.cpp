@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <stdexcept>
+
 namespace chaplygin {
 namespace {
 
@@ -23,9 +25,15 @@ const std::vector<Preset>& presets() {
             if (!file.path.starts_with("presets/"))
                 continue;
             std::string text(file.text);
-            Scene scene = sceneFromJson(text);
-            nlohmann::json j = nlohmann::json::parse(text);
-            list.push_back({scene.preset, j.value("description", std::string()), scene});
+            try {
+                Scene scene = sceneFromJson(text);
+                nlohmann::json j = nlohmann::json::parse(text);
+                list.push_back({scene.preset, j.at("description").get<std::string>(), scene});
+            } catch (const std::exception& err) {
+                // a resource compiled into the program: a build defect, not bad input
+                throw std::logic_error("resources/scenes/" + std::string(file.path) + ": " +
+                                       err.what());
+            }
         }
         return list;
     }();
