@@ -30,6 +30,14 @@ for size in 16 22 24 32 48 64 128 256 512; do
     [ $(((h0 << 24) + (h1 << 16) + (h2 << 8) + h3)) -eq "$size" ] || fail "$png is not ${size}x${size}"
 done
 grep -q -- '\\-\\-preset' "$usr/share/man/man1/chaplygin-lab.1" || fail "the man page lacks --preset"
+# the desktop entry names the installed program and icon; the metainfo launches that entry
+desktop=$usr/share/applications/io.github.chaplyginlab.ChaplyginLab.desktop
+exe=$(sed -n 's/^Exec=\([^ ]*\).*/\1/p' "$desktop")
+[ -x "$usr/bin/$exe" ] || fail "Exec=$exe is not installed in bin/"
+icon=$(sed -n 's/^Icon=//p' "$desktop")
+[ -s "$usr/share/icons/hicolor/scalable/apps/$icon.svg" ] || fail "Icon=$icon is not installed"
+grep -q "<launchable type=\"desktop-id\">$(basename "$desktop")</launchable>" \
+  "$usr/share/metainfo/io.github.chaplyginlab.ChaplyginLab.metainfo.xml" || fail "the metainfo does not launch $(basename "$desktop")"
 
 cd "$work"
 export QT_QPA_PLATFORM=offscreen
