@@ -4,7 +4,7 @@ install(TARGETS chaplygin-lab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 
 set(man_page ${PROJECT_BINARY_DIR}/man/chaplygin-lab.1)
 add_custom_command(OUTPUT ${man_page}
-  COMMAND ${CMAKE_COMMAND} -E env QT_QPA_PLATFORM=offscreen
+  COMMAND ${CMAKE_COMMAND} -E env QT_QPA_PLATFORM=offscreen ASAN_OPTIONS=detect_leaks=0
           ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:chaplygin-lab> -DOUTPUT=${man_page}
           -DVERSION=${PROJECT_VERSION} -P ${PROJECT_SOURCE_DIR}/cmake/man_page.cmake
   DEPENDS chaplygin-lab ${PROJECT_SOURCE_DIR}/cmake/man_page.cmake
