@@ -6,6 +6,7 @@
 #include "headless_options.h"
 #include "panels/accuracy_readout.h"
 #include "panels/methods_panel.h"
+#include "panels/sweep_panel.h"
 #include "plots/plots_panel.h"
 #include "runtime_directory.h"
 #include "shell/main_window.h"
@@ -14,12 +15,15 @@
 #include "version.h"
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QIcon>
 #include <QImage>
 #include <QLocale>
 #include <QPixmap>
+#include <QSpinBox>
 
 #include <cstdio>
 #include <exception>
@@ -56,6 +60,8 @@ struct ScreenshotOptions {
     bool showParameters =
         false;                ///< --panel parameters: raise the parameters dock over the path dock
     bool showMethods = false; ///< --panel methods: compute and show the work-precision diagram
+    bool showSweep = false;   ///< --panel sweep: show the Sweep dock, run --sweep if given
+    std::optional<SweepSpec> sweep;
     Scene scene;
 };
 
@@ -77,9 +83,10 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
                 throw InputError("--at", "the time must be >= 0");
         } else if (arg == "--panel") {
             std::string panel = value(i, arg);
-            if (panel != "path" && panel != "parameters" && panel != "methods")
-                throw InputError("--panel",
-                                 "expected path, parameters or methods, got '" + panel + "'");
+            if (panel != "path" && panel != "parameters" && panel != "methods" && panel != "sweep")
+                throw InputError("--panel", "expected path, parameters, methods or sweep, got '" +
+                                                panel + "'");
+            o.showSweep = panel == "sweep";
             o.showParameters = panel == "parameters";
             o.showMethods = panel == "methods";
         } else if (arg == "--size") {
@@ -102,6 +109,7 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
         throw InputError("--screenshot", "needs the output file name");
     HeadlessOptions scene = parseHeadlessOptions(rest);
     o.scene = scene.scene;
+    o.sweep = scene.sweep;
     return o;
 }
 
@@ -124,6 +132,18 @@ int renderScreenshot(const ScreenshotOptions& o) {
         window.showMethodsDock();
         window.methodsPanel()->start();
         window.methodsPanel()->waitForFinished();
+    }
+    if (o.showSweep) {
+        window.showSweepDock();
+        if (o.sweep) {
+            SweepPanel* sweep = window.sweepPanel();
+            sweep->parameterBox()->setCurrentText(QString::fromStdString(o.sweep->parameter));
+            sweep->fromBox()->setValue(o.sweep->from);
+            sweep->toBox()->setValue(o.sweep->to);
+            sweep->countBox()->setValue(o.sweep->count);
+            sweep->start();
+            sweep->waitForFinished();
+        }
     }
     QCoreApplication::processEvents();
     window.canvas()->fitScene();

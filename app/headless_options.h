@@ -1,4 +1,5 @@
 #pragma once
+#include "lab/parameter_sweep.h"
 #include "scene/scene.h"
 
 #include <optional>
@@ -15,8 +16,12 @@ struct HeadlessOptions {
     std::string csvPath, summaryPath, plotsDir;
     std::vector<std::string> formats{"png"};
     bool help = false;
-    bool workPrecision =
-        false; ///< --work-precision: the speed-against-accuracy sweep (docs/numerics.md §2)
+    bool workPrecision = false; ///< --work-precision: the speed-against-accuracy sweep
+    std::optional<SweepSpec> sweep; ///< --sweep NAME=FROM:TO:COUNT
+    std::string animationPath;      ///< --animation FILE: GIF, MP4 or a folder of PNG frames
+    int fps = 30;                   ///< --fps
+    int width = 1280, height = 720; ///< --size WxH of the animation
+    bool withPlots = false;         ///< --with-plots: the plots beside the canvas
 };
 
 /// Parses the arguments after --headless (and the scene options the screenshot mode shares).
@@ -25,6 +30,9 @@ HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args);
 
 /// Parses a whole string as a finite double; throws InputError(where) otherwise.
 double parseNumber(const std::string& text, const std::string& where);
+
+/// Parses --sweep NAME=FROM:TO:COUNT; throws InputError("--sweep").
+SweepSpec parseSweepSpec(const std::string& text);
 
 /// The usage text printed by --help.
 std::string headlessUsage();
