@@ -16,7 +16,7 @@ struct HeadlessOptions {
     std::string csvPath, summaryPath, plotsDir;
     std::vector<std::string> formats{"png"};
     bool help = false;
-    bool workPrecision = false; ///< --work-precision: the speed-against-accuracy sweep
+    bool workPrecision = false;     ///< --work-precision: the speed-against-accuracy sweep
     std::optional<SweepSpec> sweep; ///< --sweep NAME=FROM:TO:COUNT
     std::string animationPath;      ///< --animation FILE: GIF, MP4 or a folder of PNG frames
     int fps = 30;                   ///< --fps

@@ -31,7 +31,7 @@ struct ControlState {
     double vT = 0;                 ///< sqrt(2T/m) [m/s]
     double forceAxial = 0;         ///< F_cs = m (sddot - a phidot^2) [N]; M_eff sddot (a = 0)
     double forceLateral = 0;       ///< F_cphi = m_tr sdot phidot + m a phiddot [N] (m_tr: the
-                                   ///< translating mass, docs/physics.md sec. 2)
+                                   ///< translating mass, docs/physics.md §2)
     double torque = 0;             ///< S_c = I phiddot about the CM (J phiddot, carriage) [N m]
     double knifeReaction = 0;      ///< N = F_cphi, acting at P [N]
     double controlCouple = 0;      ///< tau = S_c + a N [N m]
