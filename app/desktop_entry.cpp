@@ -11,6 +11,7 @@
 #include "runtime_directory.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
+#include "translations.h"
 #include "version.h"
 
 #include <QApplication>
@@ -18,7 +19,9 @@
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QIcon>
 #include <QImage>
+#include <QLocale>
 #include <QPixmap>
 #include <QSpinBox>
 
@@ -37,6 +40,9 @@ void describeApplication() {
     QCoreApplication::setOrganizationName(QStringLiteral("ChaplyginLab"));
     QCoreApplication::setApplicationName(QStringLiteral("Chaplygin Lab"));
     QCoreApplication::setApplicationVersion(QStringLiteral(CHAPLYGIN_LAB_VERSION));
+    // resources/chaplygin-lab.qrc, compiled into the executable
+    QGuiApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/chaplygin-lab.svg")));
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.chaplyginlab.ChaplyginLab"));
 }
 
 // the offscreen platform warns about window hints it cannot honour; that is not news to the user
@@ -161,6 +167,7 @@ int runDesktop(int argc, char** argv) {
         Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
     QApplication app(argc, argv);
     describeApplication();
+    app::installTranslations(app, QLocale::system());
     // QApplication has taken its own options out; what is left is a scene file or scene options
     QStringList args = QCoreApplication::arguments().mid(1);
     MainWindow window;

@@ -8,7 +8,7 @@
 
 namespace chaplygin {
 
-/// The parsed headless command line (design.md sec. 3).
+/// The parsed headless command line (chaplygin-lab --headless --help).
 struct HeadlessOptions {
     Scene scene;
     std::optional<std::vector<double>> times; ///< --times: rows exactly at these times
@@ -16,7 +16,7 @@ struct HeadlessOptions {
     std::string csvPath, summaryPath, plotsDir;
     std::vector<std::string> formats{"png"};
     bool help = false;
-    bool workPrecision = false; ///< --work-precision: the speed-against-accuracy sweep (issue #4)
+    bool workPrecision = false;     ///< --work-precision: the speed-against-accuracy sweep
     std::optional<SweepSpec> sweep; ///< --sweep NAME=FROM:TO:COUNT
     std::string animationPath;      ///< --animation FILE: GIF, MP4 or a folder of PNG frames
     int fps = 30;                   ///< --fps

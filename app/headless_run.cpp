@@ -66,7 +66,8 @@ int solveScene(const HeadlessOptions& o, int argc, char** argv) {
     return 0;
 }
 
-// issue #4: the speed-against-accuracy sweep as CSV, its references as JSON, and the diagram
+// --work-precision: the speed-against-accuracy sweep as CSV, its references as JSON, and the
+// diagram
 int runWorkPrecisionLab(const HeadlessOptions& o, int argc, char** argv) {
     // bad input is reported as for a plain run; the sweep's horizon may pass the path's end
     Scene check = o.scene;

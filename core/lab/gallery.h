@@ -7,7 +7,8 @@
 namespace chaplygin {
 
 /// A scene where a method or a model fails, with what a lecturer should say about it
-/// (issue #4, "where methods fail"). Each has a test that the failure is detected or handled.
+/// ("where methods fail"), read from resources/scenes/gallery. Each has a test that the failure
+/// is detected or handled.
 struct GalleryEntry {
     std::string name;        ///< short id, e.g. "cusp"
     std::string title;       ///< one line for menus

@@ -18,7 +18,7 @@ constexpr double kGolden = 0.6180339887498949;
 
 // the four control quantities whose maxima a row holds, from one control state
 std::array<double, 4> magnitudes(const ControlState& c) {
-    // power of the control: F_cs sdot + tau phidot = dT/dt (docs/physics.md sec. 2.7)
+    // power of the control: F_cs sdot + tau phidot = dT/dt (docs/physics.md §2)
     double power = c.forceAxial * c.sdot + c.controlCouple * c.phidot;
     return {std::fabs(c.lambda), std::fabs(c.controlCouple), std::fabs(c.forceLateral),
             std::fabs(power)};
@@ -260,7 +260,7 @@ SweepReport runParameterSweep(const Scene& scene, const SweepSpec& spec,
             if (piece.kind == PathPiece::Kind::Curve) {
                 curveMaxima(solution.params(), piece, max);
             } else {
-                // the pivot's state is constant during the turn (docs/physics.md sec. 2.8)
+                // the pivot's state is constant during the turn (docs/physics.md §3)
                 auto m = magnitudes(
                     controlAtPivot(solution.params(), piece.phiFrom, piece.phiTo - piece.phiFrom));
                 for (int q = 0; q < 4; ++q)

@@ -32,7 +32,7 @@ PlannedMotion::State PlannedMotion::at(double t) const {
     const double a = m_params.system.a, b = m_params.system.b;
     State st;
     if (piece.kind == PathPiece::Kind::Pivot) {
-        // pivot about P at |phidot| = v_T/b, Psi = 0 or pi (physics.md sec. 2.8)
+        // pivot about P at |phidot| = v_T/b, Psi = 0 or pi (docs/physics.md §3)
         const double turn = piece.phiTo - piece.phiFrom;
         const double rate = m_params.speed / b;
         st.x = piece.x;

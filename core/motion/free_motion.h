@@ -19,7 +19,7 @@ struct FreeState {
 
 /// The free (Lagrange-d'Alembert / Neimark-Fufaev) sleigh, eqs. (D12)-(D15):
 /// sddot = a phidot^2, phiddot = -a sdot phidot/b^2. Velocities and heading in closed form
-/// (physics.md sec. 1): sdot = V tanh(kt + c), phidot = sigma (V/b) sech(kt + c),
+/// (docs/physics.md §4): sdot = V tanh(kt + c), phidot = sigma (V/b) sech(kt + c),
 /// phi = phi0 + sigma (b/a)(gd(kt + c) - gd(c)), k = aV/b^2, c = asinh(sdot0/(b|phidot0|)),
 /// with gd(kt + c) - gd(c) = 2 atan(sinh(kt/2)/cosh(c + kt/2)) (no cancellation).
 /// Position: z = x + iy integrates sdot e^{i phi} by 8-point Gauss-Legendre panels narrower than

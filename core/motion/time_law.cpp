@@ -25,7 +25,7 @@ TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
                     "corner at (" + formatNumber(piece.x) + ", " + formatNumber(piece.y) + ")",
                     "constant-speed mode cannot turn a corner (the kinetic energy would be "
                     "infinite); use --mode energy or --corners smooth");
-            // pivot about P: |phidot| = v_T/b, so it takes b |dphi|/v_T (sec. 2.8)
+            // pivot about P: |phidot| = v_T/b, so it takes b |dphi|/v_T (docs/physics.md §3)
             m_pieceStart.push_back(t0 + params.system.b * std::fabs(piece.phiTo - piece.phiFrom) /
                                             params.speed);
             continue;

@@ -16,7 +16,7 @@ struct PathLocation {
 };
 
 /// The time law t(s) and its inverse for one path and one set of control parameters.
-/// Energy mode: dt/ds = sqrt(1 + b^2 kappa^2)/v_T (physics.md sec. 2.3), summed over the path
+/// Energy mode: dt/ds = sqrt(1 + b^2 kappa^2)/v_T (docs/physics.md §2), summed over the path
 /// table's Gauss nodes; pivots take b |dphi|/v_T. Speed mode: t = s/v_s (App. C).
 /// Building it never re-tabulates the path: it costs one pass over the stored nodes.
 class TimeLaw {

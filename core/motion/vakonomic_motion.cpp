@@ -203,7 +203,7 @@ VakonomicState VakonomicMotion::at(double t) const {
     }
     st.x = z.real();
     st.y = z.imag();
-    // lambda_c = m b Psidot, lambda = lambda_c - m a phidot (physics.md sec. 1)
+    // lambda_c = m b Psidot, lambda = lambda_c - m a phidot (docs/physics.md §2)
     st.lambda = m * b * st.psidot - m * m_sys.a * st.phidot;
     st.chi = st.psi - (m_sys.a / b) * st.phi;
     st.energy = 0.5 * m * (st.sdot * st.sdot + b * b * st.phidot * st.phidot);

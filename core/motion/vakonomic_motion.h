@@ -21,11 +21,11 @@ struct VakonomicState {
     double energy = 0; ///< T = (m/2)(sdot^2 + b^2 phidot^2) from the state [J]
 };
 
-/// The genuine vakonomic body, the multiplier obeying its own equation (physics.md sec. 1,
+/// The genuine vakonomic body, the multiplier obeying its own equation (docs/physics.md §2,
 /// paper (14)-(17)): m sddot = lambda_c phidot, m b^2 phiddot = -lambda_c sdot,
 /// lambda_c_dot = -m sdot phidot. With sdot = v_T sin Psi, b phidot = v_T cos Psi and
 /// Psidot = lambda_c/(m b), Psi'' = -(v_T^2/(2 b^2)) sin 2Psi: a pendulum in 2Psi, solved in
-/// closed form through Jacobi elliptic functions (docs/physics.md sec. 2), and so are phi and
+/// closed form through Jacobi elliptic functions (docs/physics.md §2), and so are phi and
 /// the position (through the elliptic integral D). Every value at any t costs one sn-cn-dn and
 /// one Carlson R_D; nothing is integrated step by step.
 class VakonomicMotion {

@@ -99,7 +99,7 @@ Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,
 
 void Solution::pivotAt(const PathPiece& piece, double t, double sinceStart,
                        MotionSample& out) const {
-    // pivot about P at |phidot| = v_T/b (physics.md sec. 2.8)
+    // pivot about P at |phidot| = v_T/b (docs/physics.md §3)
     double turn = piece.phiTo - piece.phiFrom;
     double rate = m_params.speed / m_params.system.b;
     out.t = t;

@@ -13,7 +13,7 @@ std::string formatSummary(const Solution& solution) {
     if (!scene.preset.empty())
         j["preset"] = scene.preset;
     // a: the CM offset the control law uses (0 for the disk and the carriage); I: the inertia
-    // about the CM that goes with b (I2 for the disk, J for the carriage), docs/physics.md sec. 1
+    // about the CM that goes with b (I2 for the disk, J for the carriage), docs/physics.md §1
     j["a"] = sys.a;
     j["b"] = sys.b;
     j["m_eff"] = sys.mass;

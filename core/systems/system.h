@@ -16,7 +16,7 @@ struct SystemSpec {
 };
 
 /// Every Chaplygin system here reduces to a sleigh: effective mass, CM offset a, gyration radius b
-/// (docs/physics.md sec. 1). The disk's and the carriage's centre of mass is above P, so their
+/// (docs/physics.md §1). The disk's and the carriage's centre of mass is above P, so their
 /// a is 0; the carriage's half-axle is a system parameter that enters only b.
 struct DerivedSystem {
     double mass = 1.0; ///< effective mass m_eff [kg]

@@ -178,7 +178,7 @@ plots_all_formats)
   done
   ;;
 work_precision)
-  # issue #4: >= 6 methods per problem, an error <= 1e-10 on both, one chosen row each, the diagram
+  # --work-precision: >= 6 methods per problem, an error <= 1e-10 on both, one chosen row each, the diagram
   run 0 --preset catenary --t-end 10 --work-precision --csv "$work/wp.csv" --summary "$work/wp.json" \
     --plots "$work/plots" --format png,svg
   head -1 "$work/wp.csv" | grep -qx 'problem,method,tolerance,error,seconds,rhs_evals,chosen' || fail "header"

@@ -4,7 +4,7 @@
 The sinusoid y = -sin(x), x in [0, 4 pi] (paper (108)-(113)), sleigh m = 1, a = 0.5, v_T = 1.
 Duration: the time law, paper (112), t = int sqrt(1 + b^2 kappa^2) ds / v_T, integrated with
 mpmath's tanh-sinh quadrature at 30 digits in x (ds = sqrt(1 + y'^2) dx).
-max |lambda|: lambda = m (b Psidot - a phidot) (docs/physics.md sec. 2) with sdot =
+max |lambda|: lambda = m (b Psidot - a phidot) (docs/physics.md §2) with sdot =
 v_T / sqrt(1 + b^2 kappa^2), phidot = kappa sdot, Psidot = -b kappa_s sdot / (1 + b^2 kappa^2);
 kappa and kappa_s from sympy's exact derivatives; a 20001-point grid in x, then golden-section
 refinement of every local maximum of the grid.

@@ -20,7 +20,7 @@ namespace chaplygin::ui {
 class JobRunner;
 class SceneDocument;
 
-/// The Methods dock (issue #4): the work-precision diagram of the current scene, computed on
+/// The Methods dock: the work-precision diagram of the current scene, computed on
 /// demand in a worker thread with a progress bar and a Cancel button; then the references and
 /// the app's chosen configurations, each marked on or off the Pareto front. A scene change while
 /// the sweep runs cancels it.

@@ -61,7 +61,7 @@ class MainWindow : public QMainWindow {
     /// Shows and raises the parameters dock (over the path dock when they share tabs).
     void showParametersDock();
 
-    /// Loads a gallery scene (issue #4) as one undo step and shows its explanation beside the
+    /// Loads a gallery scene as one undo step and shows its explanation beside the
     /// animation; a scene the core refuses keeps the current one and shows the refusal.
     /// Returns whether the scene was loaded. Throws InputError for unknown names.
     bool loadGalleryEntry(const QString& name);

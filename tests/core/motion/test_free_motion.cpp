@@ -69,7 +69,7 @@ TEST(FreeMotion, NegativeOffsetEndsMovingBackwards) {
 }
 
 TEST(FreeMotion, HypergeometricClosedFormForBetaTwo) {
-    // b/a = 2: G(th) = -cos(2th)/2 + ln cos th + i(th - sin(2th)/2) (physics.md sec. 1)
+    // b/a = 2: G(th) = -cos(2th)/2 + ln cos th + i(th - sin(2th)/2) (docs/physics.md §4)
     const double a = 0.5, b = 1.0, beta = 2;
     FreeInitial init{0, 0, 0.3, 0.2, 0.8};
     FreeMotion free({1.0, a, b}, init, 30);

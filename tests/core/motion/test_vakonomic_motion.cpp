@@ -77,7 +77,7 @@ double checkAgainstReference(const DerivedSystem& sys, const VakonomicInitial& i
             EXPECT_LE(e, tol) << "t = " << times[i];
             worst = std::max(worst, e);
         }
-        // energy from the state, conserved (physics.md sec. 1)
+        // energy from the state, conserved (docs/physics.md §2)
         EXPECT_NEAR(s.energy, t0, 1e-12 * t0) << "t = " << times[i];
         // Psi, Psidot and chi are consistent with the state
         EXPECT_NEAR(std::sin(s.psi) * vT, s.sdot, 1e-13 * vT) << "t = " << times[i];

@@ -1,6 +1,6 @@
 // The rolling disk and the two-wheeled carriage against an independent reference on every CSV
 // column and summary field: tests/core/scene/systems_reference.py derives them at 30 digits from a
-// Newton-Euler balance of each body (docs/physics.md sec. 2), not from the control law, and prints
+// Newton-Euler balance of each body (docs/physics.md §2), not from the control law, and prints
 // the tables below. The carriage has b = 0.3186 below its half-axle a = 0.4.
 #include "scene/csv_writer.h"
 #include "scene/solution.h"

@@ -1,5 +1,5 @@
 // chaplygin-bench-numerics: cost per right-hand-side call and per solve of every method in the
-// registry (issue #4 item 6). Compare counters ns_per_rhs against BM_Rk4ClassicalFloor, the
+// registry (docs/numerics.md §3, §5). Compare counters ns_per_rhs against BM_Rk4ClassicalFloor, the
 // hand-written classical RK4 on the same problem: the floor.
 #include "lab/method_registry.h"
 #include "lab/sleigh_problems.h"
@@ -150,7 +150,7 @@ void BM_Solve(benchmark::State& state, std::string problem, std::string method) 
             benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-// issue #4 item 5: the app's chosen configuration is on the Pareto front of the catenary's
+// the app's chosen configuration is on the Pareto front of the catenary's
 // work-precision chart (t_end = 10). One iteration is one whole sweep; the counters say whether
 // each chosen row is on the front, and the run fails if one is not.
 void BM_ChosenOnParetoFront(benchmark::State& state) {
