@@ -24,9 +24,10 @@ namespace {
 void addForces(const ControlParams& p, ControlState& c) {
     const DerivedSystem& sys = p.system;
     const double m = sys.mass, a = sys.a;
-    // physics.md sec. 2.7, eqs. (69)-(70)
+    // docs/physics.md sec. 2, eqs. (69)-(70). The lateral reaction is carried by the mass that
+    // translates (the disk's m, the carriage's M + 2m); for the sleigh it is m_eff = m.
     c.forceAxial = m * (c.sddot - a * c.phidot * c.phidot);
-    c.forceLateral = m * (c.sdot * c.phidot + a * c.phiddot);
+    c.forceLateral = sys.translatingMass * c.sdot * c.phidot + m * a * c.phiddot;
     c.torque = sys.inertia() * c.phiddot;
     c.knifeReaction = c.forceLateral;
     c.controlCouple = c.torque + a * c.knifeReaction;

@@ -29,9 +29,10 @@ struct ControlState {
     double lambda = 0;             ///< m b chidot [N s/m * m = kg m/s]
     double energy = 0;             ///< kinetic energy T [J]
     double vT = 0;                 ///< sqrt(2T/m) [m/s]
-    double forceAxial = 0;         ///< F_cs = m (sddot - a phidot^2) [N]
-    double forceLateral = 0;       ///< F_cphi = m (sdot phidot + a phiddot) [N]
-    double torque = 0;             ///< S_c = I phiddot about the CM [N m]
+    double forceAxial = 0;         ///< F_cs = m (sddot - a phidot^2) [N]; M_eff sddot (a = 0)
+    double forceLateral = 0;       ///< F_cphi = m_tr sdot phidot + m a phiddot [N] (m_tr: the
+                                   ///< translating mass, docs/physics.md sec. 2)
+    double torque = 0;             ///< S_c = I phiddot about the CM (J phiddot, carriage) [N m]
     double knifeReaction = 0;      ///< N = F_cphi, acting at P [N]
     double controlCouple = 0;      ///< tau = S_c + a N [N m]
 };

@@ -22,6 +22,18 @@ FreeInitial initialState(const std::shared_ptr<const Path>& path, const ControlP
     return init;
 }
 
+// the free body's state and the tracking's lambda(0), the vakonomic system's only free constant
+VakonomicInitial vakonomicInitial(const std::shared_ptr<const Path>& path,
+                                  const ControlParams& params) {
+    FreeInitial f = initialState(path, params);
+    const PathPiece& first = path->pieces().front();
+    PathNode n = path->start();
+    ControlState c = first.kind == PathPiece::Kind::Pivot
+                         ? controlAtPivot(params, n.phi, first.phiTo - first.phiFrom)
+                         : controlOnCurve(params, n.kappa, n.dkappa, n.phi);
+    return {f.x, f.y, f.phi, f.sdot, f.phidot, c.lambda};
+}
+
 double horizonOf(const Scene& scene, double duration) {
     if (!scene.tEnd)
         return duration;
@@ -59,6 +71,7 @@ Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,
                    const ControlParams& params)
     : m_scene(scene), m_path(std::move(path)), m_params(params), m_timeLaw(m_path, params),
       m_free(params.system, initialState(m_path, params), horizonOf(scene, m_timeLaw.duration())),
+      m_vak(params.system, vakonomicInitial(m_path, params)),
       m_tEnd(horizonOf(scene, m_timeLaw.duration())) {
     std::size_t panels = 0;
     for (const PathPiece& p : m_path->pieces())
@@ -81,6 +94,7 @@ Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,
     m_models.control = "closed form in kappa, dkappa/ds and phi (Psi = atan2(1, b kappa))";
     m_models.freeVelocity = m_free.velocityModel();
     m_models.freePosition = m_free.positionModel();
+    m_models.vakonomic = m_vak.model();
 }
 
 void Solution::pivotAt(const PathPiece& piece, double t, double sinceStart,
@@ -118,6 +132,7 @@ MotionSample Solution::at(double t) const {
     MotionSample m;
     controlledAt(t, m);
     m.free = m_free.at(t);
+    m.vak = m_vak.at(t);
     return m;
 }
 
