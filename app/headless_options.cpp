@@ -327,6 +327,17 @@ HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args) {
     if (o.sweep && (o.times || o.scene.tEnd))
         throw InputError("--sweep",
                          "runs each value over the whole path; drop --times and --t-end");
+    if (o.sweep && !o.summaryPath.empty())
+        throw InputError("--summary", "does not apply to --sweep (its rows go to --csv)");
+    if (!o.animationPath.empty() &&
+        (o.workPrecision || !o.csvPath.empty() || !o.summaryPath.empty() || !o.plotsDir.empty()))
+        throw InputError("--animation", "writes the animation alone; run --csv, --summary and "
+                                        "--plots separately");
+    if (o.animationPath.empty() && (seen.count("--fps") || seen.count("--size") || o.withPlots))
+        throw InputError(seen.count("--fps")    ? "--fps"
+                         : seen.count("--size") ? "--size"
+                                                : "--with-plots",
+                         "applies only to --animation");
     if (o.sweep)
         validateSweep(o.scene, *o.sweep);
     return o;

@@ -95,9 +95,13 @@ int runSweep(const HeadlessOptions& o, int argc, char** argv) {
     if (!o.plotsDir.empty()) {
         prepareOffscreen();
         QApplication app(argc, argv);
-        QString caption = o.scene.preset.empty()
-                              ? QStringLiteral("typed scene")
-                              : QStringLiteral("preset ") + QString::fromStdString(o.scene.preset);
+        QString caption = (o.scene.preset.empty() ? QStringLiteral("typed scene")
+                                                  : QStringLiteral("preset ") +
+                                                        QString::fromStdString(o.scene.preset)) +
+                          QStringLiteral(", %1, %2 mode, speed %3 m/s")
+                              .arg(QString::fromStdString(systemKindName(o.scene.system.kind)),
+                                   QString::fromStdString(speedModeName(o.scene.mode)))
+                              .arg(o.scene.speed);
         ui::exportSweep(report, caption, QString::fromStdString(o.plotsDir), formatList(o));
     }
     return 0;

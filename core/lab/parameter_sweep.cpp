@@ -120,9 +120,9 @@ std::string sweepQuantityLabel(SweepQuantity q) {
     case SweepQuantity::Duration:
         return "duration [s]";
     case SweepQuantity::MaxAbsLambda:
-        return "max |lambda| [kg m/s]";
+        return "max |λ| [kg m/s]";
     case SweepQuantity::MaxAbsControlCouple:
-        return "max |tau| [N m]";
+        return "max |τ| [N m]";
     case SweepQuantity::MaxAbsForceLateral:
         return "max |N| [N]";
     case SweepQuantity::MaxAbsControlPower:

@@ -40,7 +40,7 @@ enum class SweepQuantity {
 constexpr int kSweepQuantityCount = 6;
 /// The CSV column name of a quantity (duration, max_abs_lambda, ...).
 std::string sweepQuantityColumn(SweepQuantity q);
-/// A label with units for plots and menus ("max |lambda| [kg m/s]").
+/// A label with units for plots and menus ("max |λ| [kg m/s]").
 std::string sweepQuantityLabel(SweepQuantity q);
 double sweepQuantityValue(const SweepRow& row, SweepQuantity q);
 

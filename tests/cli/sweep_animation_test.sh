@@ -39,6 +39,8 @@ sweep_bad_range)
   expect_err "in energy mode sweep vT, not vs"
   run 2 --preset circle --sweep vT=0:2:3
   expect_err "vT = 0 (value 1 of 3) is invalid"
+  run 2 --preset circle --sweep b=1:2:3 --summary -
+  expect_err "^chaplygin-lab: --summary: does not apply to --sweep"
   ;;
 sweep_columns_and_plots)
   run 0 --preset catenary --sweep vT=0.5:2:4 --csv "$work/s.csv" --plots "$work/plots" --format png,svg
@@ -84,6 +86,10 @@ animation_png_frames)
   expect_err "unknown format '.avi'"
   run 2 --preset line --animation "$work/x/" --size 10x10
   expect_err "--size"
+  run 2 --preset line --animation "$work/x/" --csv -
+  expect_err "writes the animation alone"
+  run 2 --preset line --fps 10 --csv -
+  expect_err "--fps: applies only to --animation"
   ;;
 animation_without_ffmpeg)
   # PATH without ffmpeg: GIF and MP4 are refused with a clear message, PNG frames still work

@@ -37,6 +37,7 @@ class TestSweepAnimation : public QObject {
     void sweepRunsAndPlotsTheClosedForm();
     void badRangeIsRefusedBeforeAnyWork();
     void cancelStopsASweep();
+    void sceneChangeCancelsASweep();
     void clickingAPointLoadsItsValueAsOneUndoStep();
     void exportWritesFramesRenderedOffscreen();
     void exportDialogPathWithCancelLeavesNoFiles();
@@ -125,6 +126,19 @@ void TestSweepAnimation::cancelStopsASweep() {
     QVERIFY(panel->runButton()->isEnabled());
 }
 
+void TestSweepAnimation::sceneChangeCancelsASweep() {
+    load("catenary");
+    SweepPanel* panel = m_window->sweepPanel();
+    chooseRange("vT", 0.5, 3, 1000);
+    panel->start();
+    QVERIFY(panel->isRunning());
+    load("circle");
+    QTRY_VERIFY_WITH_TIMEOUT(!panel->isRunning(), 20000);
+    QVERIFY(panel->report() && panel->report()->cancelled);
+    QVERIFY2(panel->statusText().contains(QLatin1String("the scene changed")),
+             qPrintable(panel->statusText()));
+}
+
 void TestSweepAnimation::clickingAPointLoadsItsValueAsOneUndoStep() {
     load("circle");
     m_window->showSweepDock();
@@ -156,7 +170,7 @@ void TestSweepAnimation::exportWritesFramesRenderedOffscreen() {
     AnimationSettings s;
     s.file = dir.filePath(QStringLiteral("frames/"));
     s.fps = 2;
-    s.size = QSize(320, 240);
+    s.size = QSize(640, 360);
     s.withPlots = true;
     // the window is hidden behind the export: frames come from an offscreen widget
     m_window->hide();
@@ -166,8 +180,16 @@ void TestSweepAnimation::exportWritesFramesRenderedOffscreen() {
     QCOMPARE(frames.size(), 19);
     QImage first(QDir(s.file).filePath(frames.first()));
     QImage last(QDir(s.file).filePath(frames.last()));
-    QCOMPARE(first.size(), QSize(320, 240));
+    QCOMPARE(first.size(), QSize(640, 360));
     QVERIFY(first != last); // the body has moved
+    // the plots beside the canvas are drawn: the free motion's red curves (plot_figures.cpp)
+    int red = 0;
+    for (int y = 0; y < first.height(); ++y)
+        for (int x = first.width() * 3 / 5; x < first.width(); ++x) {
+            QColor c = first.pixelColor(x, y);
+            red += c.red() > 180 && c.green() < 110 && c.blue() < 110;
+        }
+    QVERIFY2(red > 100, qPrintable(QString::number(red)));
 }
 
 void TestSweepAnimation::exportDialogPathWithCancelLeavesNoFiles() {

@@ -109,6 +109,12 @@ QString SweepPanel::statusText() const {
 }
 
 void SweepPanel::onSceneChanged() {
+    // the sweep would describe a scene that is no longer shown
+    if (m_runner->isRunning() && m_document->solution() &&
+        m_document->solution()->scene() != m_runScene) {
+        m_sceneChanged = true;
+        m_runner->cancel();
+    }
     const Scene& scene = m_document->scene();
     if (m_namesShown && scene.system.kind == m_shownKind && scene.mode == m_shownMode)
         return;
@@ -152,6 +158,7 @@ void SweepPanel::start() {
         return;
     }
     m_outcome = std::make_shared<Outcome>();
+    m_sceneChanged = false;
     m_progress->setRange(0, spec.count);
     m_progress->setValue(0);
     m_run->setEnabled(false);
@@ -190,14 +197,19 @@ void SweepPanel::onFinished() {
     } else if (m_outcome->report) {
         m_report = m_outcome->report;
         const SweepReport& r = *m_report;
-        QString what = tr("%1 values of %2 from %3 to %4")
-                           .arg(r.rows.size())
-                           .arg(QString::fromStdString(r.spec.parameter))
-                           .arg(r.spec.from)
-                           .arg(r.spec.to);
-        m_status->setText(r.cancelled
-                              ? tr("Cancelled after %1. Click a point to load it.").arg(what)
-                              : tr("%1. Click a point to load it.").arg(what));
+        const QString name = QString::fromStdString(r.spec.parameter);
+        QString what =
+            r.rows.size() == 1
+                ? tr("1 value of %1 from %2 to %3").arg(name).arg(r.spec.from).arg(r.spec.to)
+                : tr("%1 values of %2 from %3 to %4")
+                      .arg(r.rows.size())
+                      .arg(name)
+                      .arg(r.spec.from)
+                      .arg(r.spec.to);
+        m_status->setText(!r.cancelled ? tr("%1. Click a point to load it.").arg(what)
+                          : m_sceneChanged
+                              ? tr("Cancelled (the scene changed) after %1.").arg(what)
+                              : tr("Cancelled after %1. Click a point to load it.").arg(what));
         if (!r.cancelled)
             m_progress->setValue(m_progress->maximum());
         redraw();

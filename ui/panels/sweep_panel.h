@@ -24,8 +24,8 @@ class SceneDocument;
 /// The Sweep dock: one parameter of the current scene over a range, a quantity (duration, max
 /// |lambda|, max |tau|, max |N|, max |power|, final separation) plotted against it. The sweep
 /// runs in a JobRunner with a progress bar and Cancel; a bad range is refused before any work
-/// with the core's message. Clicking a point asks to load that value (sceneEdited, so the
-/// owner pushes it on the undo stack).
+/// with the core's message, and a scene change cancels a running sweep. Clicking a point asks to
+/// load that value (sceneEdited, so the owner pushes it on the undo stack).
 class SweepPanel : public QWidget {
     Q_OBJECT
   public:
@@ -88,6 +88,7 @@ class SweepPanel : public QWidget {
     SystemKind m_shownKind = SystemKind::Sleigh;
     SpeedMode m_shownMode = SpeedMode::Energy;
     bool m_namesShown = false;
+    bool m_sceneChanged = false; // the running sweep was cancelled by a scene change
 };
 
 } // namespace chaplygin::ui

@@ -101,8 +101,10 @@ AnimationExporter::AnimationExporter(SceneDocument* document, const AnimationSet
     m_frame->show();
     layout->activate();
     m_canvas->fitScene();
-    if (m_plots)
+    if (m_plots) {
         m_plots->refresh();
+        m_plots->replotNow(); // the plots are drawn once; each frame moves the time cursor
+    }
 
     if (m_format == AnimationFormat::PngFrames) {
         QString dir = settings.file;
@@ -131,6 +133,9 @@ AnimationExporter::AnimationExporter(SceneDocument* document, const AnimationSet
             throw IoError("cannot write into the folder '" + text(target.absolutePath()) +
                           "': " + text(reserve.errorString()));
         m_temporary = reserve.fileName();
+        // QTemporaryFile makes it private; the animation is an ordinary document
+        reserve.setPermissions(QFileDevice::ReadOwner | QFileDevice::WriteOwner |
+                               QFileDevice::ReadGroup | QFileDevice::ReadOther);
     }
     QStringList args{QStringLiteral("-hide_banner"),
                      QStringLiteral("-loglevel"),
@@ -206,7 +211,7 @@ void AnimationExporter::writeNextFrame() {
         QByteArray png;
         QBuffer buffer(&png);
         buffer.open(QIODevice::WriteOnly);
-        if (!image.save(&buffer, "PNG"))
+        if (!image.save(&buffer, "PNG", 80)) // light compression: frames are many and large
             throw IoError("cannot encode frame " + std::to_string(m_done));
         QString name =
             QDir(m_settings.file).filePath(framePattern().arg(m_done, 5, 10, QLatin1Char('0')));
