@@ -38,6 +38,12 @@ double solveXi(const TimeLaw::TimePanel& p, double tau, double D) {
 
 } // namespace
 
+struct TimeLaw::Lazy {
+    explicit Lazy(std::size_t n) : panels(n), once(new std::once_flag[n]) {}
+    std::vector<TimePanel> panels;
+    std::unique_ptr<std::once_flag[]> once;
+};
+
 TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
     : m_path(std::move(path)), m_params(params) {
     const char* option = params.mode == SpeedMode::Energy ? "--vT" : "--vs";
@@ -47,7 +53,7 @@ TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
     const auto& pieces = m_path->pieces();
     m_pieceStart.assign(1, 0.0);
     m_nodeTimes.resize(pieces.size());
-    m_timePanels.resize(pieces.size());
+    m_lazy.resize(pieces.size());
     const double b2 = params.system.b * params.system.b, invSpeed = 1 / params.speed;
     const bool energy = params.mode == SpeedMode::Energy;
     for (std::size_t k = 0; k < pieces.size(); ++k) {
@@ -70,53 +76,83 @@ TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
         times[0] = t0;
         if (energy)
             m_closedForm = m_closedForm && table.uniform();
-        const auto& cheb = table.chebPanels();
-        std::vector<TimePanel>& tps = m_timePanels[k];
-        tps.resize(cheb.size());
-        for (std::size_t i = 0; i < table.panels().size(); ++i) {
-            if (i < cheb.size() && cheb[i].certified) {
-                // dt/dxi at the Chebyshev points, its interpolant, and the interpolant's integral
-                std::array<double, cheb::kPoints> r, a;
-                for (int j = 0; j < cheb::kPoints; ++j) {
-                    const double bk = cheb[i].kappa[j];
-                    r[j] =
-                        cheb[i].dsdxi[j] * invSpeed * (energy ? std::sqrt(1 + b2 * bk * bk) : 1.0);
-                }
-                cheb::coefficients(r.data(), a.data());
-                std::array<double, cheb::kPoints + 1> F;
-                cheb::integrate(a.data(), cheb::kPoints, F.data());
-                TimePanel& tp = tps[i];
-                double duration = 0;
-                for (int j = 0; j <= cheb::kPoints; ++j) {
-                    tp.c[j][0] = F[j];
-                    tp.c[j][1] = j < cheb::kPoints ? a[j] : 0.0;
-                    duration += F[j]; // T_k(1) = 1
-                }
-                tp.rateStart = r[cheb::kDegree];
-                tp.rateEnd = r[0];
-                // \int |r - p| dxi <= 2 max |r - p|, estimated as twice the tail
-                const double bound = 4 * cheb::tailEstimate(a.data(), cheb::kPoints);
-                tp.certified = bound <= kTimeTolerance * duration || cheb[i].noiseLimited;
-                if (tp.certified) {
-                    m_timeBound = std::max(m_timeBound, bound);
-                    times[i + 1] = times[i] + duration;
-                    continue;
-                }
+        if (!table.chebPanels().empty())
+            m_lazy[k] = std::make_shared<Lazy>(table.panels().size());
+        if (!energy) {
+            for (std::size_t i = 0; i < times.size(); ++i)
+                times[i] = t0 + table.nodes()[i].s * invSpeed;
+        } else {
+            for (std::size_t i = 0; i < table.panels().size(); ++i) {
+                const PathTable::GaussPanel& g = table.panels()[i];
+                double dt = 0;
+                for (int j = 0; j < gauss::kPoints; ++j)
+                    dt += g.weight[j] * std::sqrt(1 + b2 * g.kappa[j] * g.kappa[j]);
+                times[i + 1] = times[i] + dt * invSpeed;
             }
-            if (i < cheb.size())
-                ++m_exactPanels;
-            if (!energy) {
-                times[i + 1] = t0 + table.nodes()[i + 1].s * invSpeed;
-                continue;
-            }
-            const PathTable::GaussPanel& g = table.panels()[i];
-            double dt = 0;
-            for (int j = 0; j < gauss::kPoints; ++j)
-                dt += g.weight[j] * std::sqrt(1 + b2 * g.kappa[j] * g.kappa[j]);
-            times[i + 1] = times[i] + dt * invSpeed;
         }
         m_pieceStart.push_back(times.back());
     }
+}
+
+void TimeLaw::buildPanel(int piece, int k, TimePanel& tp) const {
+    const PathTable::ChebPanel& cp = m_path->pieces()[piece].table->chebPanels()[k];
+    if (!cp.certified)
+        return;
+    const bool energy = m_params.mode == SpeedMode::Energy;
+    const double b2 = m_params.system.b * m_params.system.b, invSpeed = 1 / m_params.speed;
+    // dt/dxi at the Chebyshev points, its interpolant, and the interpolant's integral
+    std::array<double, cheb::kPoints> r, a;
+    for (int j = 0; j < cheb::kPoints; ++j) {
+        const double kappa = cp.kappa[j];
+        r[j] = cp.dsdxi[j] * invSpeed * (energy ? std::sqrt(1 + b2 * kappa * kappa) : 1.0);
+    }
+    cheb::coefficients(r.data(), a.data());
+    std::array<double, cheb::kPoints + 1> F;
+    cheb::integrate(a.data(), cheb::kPoints, F.data());
+    double duration = 0;
+    for (int j = 0; j <= cheb::kPoints; ++j) {
+        tp.c[j][0] = F[j];
+        tp.c[j][1] = j < cheb::kPoints ? a[j] : 0.0;
+        duration += F[j]; // T_k(1) = 1
+    }
+    tp.rateStart = r[cheb::kDegree];
+    tp.rateEnd = r[0];
+    // \int |r - p| dxi <= 2 max |r - p|, estimated as twice the tail; and the integral over the
+    // panel against the Gauss rule on the exact values (the node times)
+    const double gaussDuration = m_nodeTimes[piece][k + 1] - m_nodeTimes[piece][k];
+    const double bound = std::max(4 * cheb::tailEstimate(a.data(), cheb::kPoints),
+                                  std::fabs(duration - gaussDuration));
+    tp.bound = bound;
+    // the node times themselves are rounded to a few ulps of t
+    const double floor = 8 * 2.220446049250313e-16 * std::fabs(m_nodeTimes[piece][k + 1]);
+    tp.certified = bound <= std::max(kTimeTolerance * duration, floor) || cp.noiseLimited;
+}
+
+const TimeLaw::TimePanel& TimeLaw::timePanel(int piece, int k) const {
+    Lazy& lazy = *m_lazy[piece];
+    std::call_once(lazy.once[k], [&] { buildPanel(piece, k, lazy.panels[k]); });
+    return lazy.panels[k];
+}
+
+double TimeLaw::timeBound() const {
+    double bound = 0;
+    for (std::size_t p = 0; p < m_lazy.size(); ++p)
+        if (m_lazy[p])
+            for (std::size_t k = 0; k < m_lazy[p]->panels.size(); ++k) {
+                const TimePanel& tp = timePanel(static_cast<int>(p), static_cast<int>(k));
+                if (tp.certified)
+                    bound = std::max(bound, tp.bound);
+            }
+    return bound;
+}
+
+int TimeLaw::exactPanels() const {
+    int n = 0;
+    for (std::size_t p = 0; p < m_lazy.size(); ++p)
+        if (m_lazy[p])
+            for (std::size_t k = 0; k < m_lazy[p]->panels.size(); ++k)
+                n += timePanel(static_cast<int>(p), static_cast<int>(k)).certified ? 0 : 1;
+    return n;
 }
 
 double TimeLaw::rate(double speed, double kappa) const {
@@ -144,12 +180,14 @@ double TimeLaw::timeAtExact(int piece, double u) const {
 double TimeLaw::timeAt(int piece, double u) const {
     const PathTable& table = *m_path->pieces()[piece].table;
     int k = table.panelOf(u);
-    const std::vector<TimePanel>& tps = m_timePanels[piece];
-    if (k < static_cast<int>(tps.size()) && tps[k].certified) {
-        const double a = table.nodes()[k].u, b = table.nodes()[k + 1].u;
-        double f[2];
-        cheb::evaluateMany(tps[k].c, (2 * u - (a + b)) / (b - a), f);
-        return m_nodeTimes[piece][k] + f[0];
+    if (interpolated(piece)) {
+        const TimePanel& tp = timePanel(piece, k);
+        if (tp.certified) {
+            const double a = table.nodes()[k].u, b = table.nodes()[k + 1].u;
+            double f[2];
+            cheb::evaluateMany(tp.c, (2 * u - (a + b)) / (b - a), f);
+            return m_nodeTimes[piece][k] + f[0];
+        }
     }
     return timeAtExact(piece, u);
 }
@@ -157,12 +195,14 @@ double TimeLaw::timeAt(int piece, double u) const {
 double TimeLaw::rateAt(int piece, double u) const {
     const PathTable& table = *m_path->pieces()[piece].table;
     int k = table.panelOf(u);
-    const std::vector<TimePanel>& tps = m_timePanels[piece];
-    const double a = table.nodes()[k].u, b = table.nodes()[k + 1].u;
-    if (k < static_cast<int>(tps.size()) && tps[k].certified) {
-        double f[2];
-        cheb::evaluateMany(tps[k].c, (2 * u - (a + b)) / (b - a), f);
-        return f[1] * 2 / (b - a);
+    if (interpolated(piece)) {
+        const TimePanel& tp = timePanel(piece, k);
+        if (tp.certified) {
+            const double a = table.nodes()[k].u, b = table.nodes()[k + 1].u;
+            double f[2];
+            cheb::evaluateMany(tp.c, (2 * u - (a + b)) / (b - a), f);
+            return f[1] * 2 / (b - a);
+        }
     }
     if (table.uniform()) {
         const PathNode& n = table.nodes()[k];
@@ -190,18 +230,18 @@ PathLocation TimeLaw::locate(double t) const {
                            static_cast<int>(m_path->pieces().size()) - 1);
     const PathPiece& pp = m_path->pieces()[piece];
     if (pp.kind == PathPiece::Kind::Curve) {
-        const std::vector<TimePanel>& tps = m_timePanels[piece];
-        if (!tps.empty()) {
+        if (interpolated(piece)) {
             const std::vector<double>& times = m_nodeTimes[piece];
             auto nt = std::upper_bound(times.begin(), times.end(), t);
             int k = std::clamp(static_cast<int>(nt - times.begin()) - 1, 0,
-                               static_cast<int>(tps.size()) - 1);
-            if (tps[k].certified) {
+                               static_cast<int>(times.size()) - 2);
+            const TimePanel& tp = timePanel(piece, k);
+            if (tp.certified) {
                 const PathNode &lo = pp.table->nodes()[k], &hi = pp.table->nodes()[k + 1];
                 PathLocation loc;
                 loc.piece = piece;
                 loc.panel = k;
-                loc.xi = solveXi(tps[k], t - times[k], times[k + 1] - times[k]);
+                loc.xi = solveXi(tp, t - times[k], times[k + 1] - times[k]);
                 loc.u = 0.5 * (lo.u + hi.u) + 0.5 * (hi.u - lo.u) * loc.xi;
                 return loc;
             }

@@ -2,7 +2,9 @@
 #include "control/control_law.h"
 #include "paths/path.h"
 
+#include <array>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace chaplygin {
@@ -21,10 +23,12 @@ struct PathLocation {
 /// Energy mode: dt/ds = sqrt(1 + b^2 kappa^2)/v_T (physics.md sec. 2.3), summed over the path
 /// table's Gauss nodes; pivots take b |dphi|/v_T. Speed mode: t = s/v_s (App. C).
 /// Building it never re-tabulates the path: it costs one pass over the stored nodes.
-/// On a panel with certified interpolants (PathTable::ChebPanel) t(u) is the integral of the
-/// degree-16 Chebyshev interpolant of dt/du through its 17 points, with an error bound from the
-/// interpolant's coefficient tail; locate() inverts it by Newton on that polynomial. Panels that
-/// are not certified (or whose bound exceeds 1e-13 of the panel's time) use the exact curve.
+/// On a panel with certified interpolants (PathTable::ChebPanel) t(u) within the panel is the
+/// integral of the degree-16 Chebyshev interpolant of dt/du through its 17 points, built on the
+/// panel's first use (thread-safe) and certified there: twice its coefficient tail, and its
+/// integral over the panel against the 8-point Gauss rule, within 1e-13 of the panel's time.
+/// locate() inverts it by Newton on that polynomial. Panels that fail use the exact curve.
+/// Construction costs what it did before interpolation: 8 square roots per panel.
 class TimeLaw {
   public:
     /// Throws InputError when the mode cannot follow the path (a corner in Speed mode) or the
@@ -53,24 +57,28 @@ class TimeLaw {
     struct TimePanel {
         std::array<std::array<double, 2>, cheb::kPoints + 1> c{};
         double rateStart = 0, rateEnd = 0; ///< dt/dxi at xi = -1 and 1
+        double bound = 0;                  ///< error bound of t over the panel [s]
         bool certified = false;
     };
-    /// The interpolated panels of a Curve piece (empty for closed forms and pivots).
-    const std::vector<TimePanel>& timePanels(int piece) const { return m_timePanels[piece]; }
-    /// The largest error bound of t over the certified panels [s], and the panels left exact.
-    double timeBound() const { return m_timeBound; }
-    int exactPanels() const { return m_exactPanels; }
+    /// Whether a Curve piece has interpolated panels (not closed form, not a pivot).
+    bool interpolated(int piece) const { return m_lazy[piece] != nullptr; }
+    /// Panel k of a Curve piece with interpolated panels, built on first use.
+    const TimePanel& timePanel(int piece, int k) const;
+    /// Builds every panel: the largest error bound of t over the certified ones [s], and the
+    /// number left to exact evaluation.
+    double timeBound() const;
+    int exactPanels() const;
 
   private:
+    struct Lazy;
     double rate(double speed, double kappa) const; // dt/du
+    void buildPanel(int piece, int k, TimePanel& out) const;
     PathLocation curveLocation(int piece, int panel, double u) const;
     std::shared_ptr<const Path> m_path;
     ControlParams m_params;
     std::vector<double> m_pieceStart; // size pieces + 1
     std::vector<std::vector<double>> m_nodeTimes;
-    std::vector<std::vector<TimePanel>> m_timePanels;
-    double m_timeBound = 0;
-    int m_exactPanels = 0;
+    std::vector<std::shared_ptr<Lazy>> m_lazy; // per piece; shared by copies (same values)
     bool m_closedForm = true;
 };
 

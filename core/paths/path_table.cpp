@@ -305,6 +305,25 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve) : m_curve(std::move(cur
                              c.parameterName() + "1, got " + formatNumber(u0) + ", " +
                              formatNumber(u1));
 
+    if (c.straight()) {
+        // one panel, closed form: no scales to find, nothing to refine
+        PanelData d = computePanel(c, u0, u1, u1 - u0);
+        for (double u : {u0, u1}) {
+            CurvePoint p = c.eval(u);
+            CurveGeometry g = geometryOf(p);
+            PathNode n;
+            n.u = u;
+            n.s = u == u0 ? 0.0 : d.length;
+            n.x = p.x;
+            n.y = p.y;
+            n.speed = g.speed;
+            n.phi = g.heading;
+            m_nodes.push_back(n);
+        }
+        m_panels.push_back(d.gauss);
+        m_uniform = true;
+        return;
+    }
     // a coarse look at the whole curve sets the scales of the refinement
     double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
     CurveGeometry g0;

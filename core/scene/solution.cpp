@@ -109,14 +109,12 @@ Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,
         m_models.timeLaw = "quadrature (Gauss-Legendre of sqrt(1 + b^2 kappa^2)/v_T ds)";
         m_models.inversion = "Newton on t(s) with the exact dt/ds";
     }
-    if (!m_timeLaw.closedForm() && m_timeLaw.timeBound() > 0) {
-        m_models.timeLaw = "per-panel degree-16 Chebyshev interpolant of dt/du, integrated "
-                           "(bound " +
-                           formatNumber(m_timeLaw.timeBound()) + " s per panel)";
+    if (!m_timeLaw.closedForm() && m_timeLaw.interpolated(0) && m_path->pieces().size() == 1) {
+        m_models.timeLaw = "quadrature (Gauss-Legendre of sqrt(1 + b^2 kappa^2)/v_T ds) at the "
+                           "panel ends; inside a panel the integral of the degree-16 Chebyshev "
+                           "interpolant of dt/du, certified to 1e-13 of the panel's time on first "
+                           "use (exact Gauss-Legendre where it fails)";
         m_models.inversion = "Newton on the interpolated t(u)";
-        if (m_timeLaw.exactPanels() > 0)
-            m_models.timeLaw += "; Gauss-Legendre with exact curve evaluation on " +
-                                std::to_string(m_timeLaw.exactPanels()) + " panel(s)";
     }
     m_models.control = "closed form in kappa, dkappa/ds and phi (Psi = atan2(1, b kappa))";
     m_models.freeVelocity = m_free.velocityModel();
