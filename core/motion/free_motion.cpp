@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace chaplygin {
 namespace {
@@ -13,9 +14,6 @@ constexpr double kTailTau = 40.0; // sech(40) < 1e-17
 // the Gudermannian gd(tau) = 2 atan(tanh(tau/2)) = Psi for the free sleigh
 double gd(double tau) {
     return 2 * std::atan(std::tanh(0.5 * tau));
-}
-double sech(double tau) {
-    return 1.0 / std::cosh(tau);
 }
 
 } // namespace
@@ -77,10 +75,14 @@ void FreeMotion::velocities(double t, double* sdot, double* phidot, double* phi)
         *phi = m_init.phi + m_init.phidot * t;
         return;
     case Case::General: {
-        double tau = m_k * t + m_c;
-        *sdot = m_v * std::tanh(tau);
-        *phidot = m_sigma * (m_v / b) * sech(tau);
-        *phi = m_init.phi + m_sigma * m_beta * (gd(tau) - m_psi0);
+        // tanh, sech and gd from one expm1: e = exp(-|tau|) = 1 + em, tanh|tau| =
+        // (1 - e^2)/(1 + e^2), sech tau = 2e/(1 + e^2), gd|tau| = pi/2 - 2 atan(e)
+        const double tau = m_k * t + m_c, em = std::expm1(-std::fabs(tau)), e = 1 + em;
+        const double inv = 1 / (1 + e * e), sign = tau < 0 ? -1.0 : 1.0;
+        *sdot = sign * m_v * (-em * (2 + em)) * inv;
+        *phidot = m_sigma * (m_v / b) * (2 * e * inv);
+        *phi = m_init.phi +
+               m_sigma * m_beta * (sign * (0.5 * std::numbers::pi - 2 * std::atan(e)) - m_psi0);
         return;
     }
     }

@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace chaplygin {
@@ -39,9 +40,13 @@ double solveXi(const TimeLaw::TimePanel& p, double tau, double D) {
 } // namespace
 
 struct TimeLaw::Lazy {
-    explicit Lazy(std::size_t n) : panels(n), once(new std::once_flag[n]) {}
+    explicit Lazy(std::size_t n) : panels(n), ready(new std::atomic<bool>[n]) {
+        for (std::size_t k = 0; k < n; ++k)
+            ready[k].store(false, std::memory_order_relaxed);
+    }
     std::vector<TimePanel> panels;
-    std::unique_ptr<std::once_flag[]> once;
+    std::unique_ptr<std::atomic<bool>[]> ready; // panels[k] is built and will not change
+    std::mutex mutex;
 };
 
 TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
@@ -130,7 +135,13 @@ void TimeLaw::buildPanel(int piece, int k, TimePanel& tp) const {
 
 const TimeLaw::TimePanel& TimeLaw::timePanel(int piece, int k) const {
     Lazy& lazy = *m_lazy[piece];
-    std::call_once(lazy.once[k], [&] { buildPanel(piece, k, lazy.panels[k]); });
+    if (!lazy.ready[k].load(std::memory_order_acquire)) {
+        std::lock_guard<std::mutex> lock(lazy.mutex);
+        if (!lazy.ready[k].load(std::memory_order_relaxed)) {
+            buildPanel(piece, k, lazy.panels[k]);
+            lazy.ready[k].store(true, std::memory_order_release);
+        }
+    }
     return lazy.panels[k];
 }
 
