@@ -21,9 +21,9 @@ void PlannedMotion::position(double t, double* x, double* y) const {
         *y = piece.y;
         return;
     }
-    CurvePoint p = piece.table->curve().eval(loc.u);
-    *x = p.x;
-    *y = p.y;
+    PathNode n = piece.table->interpolatedAt(loc.panel, loc.xi);
+    *x = n.x;
+    *y = n.y;
 }
 
 PlannedMotion::State PlannedMotion::at(double t) const {
@@ -43,7 +43,7 @@ PlannedMotion::State PlannedMotion::at(double t) const {
         st.chidot = -(a / b) * std::copysign(rate, turn);
         return st;
     }
-    PathNode n = piece.table->at(loc.u);
+    PathNode n = piece.table->interpolatedAt(loc.panel, loc.xi);
     st.x = n.x;
     st.y = n.y;
     st.phi = n.phi + piece.phiOffset;

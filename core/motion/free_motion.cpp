@@ -4,15 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace chaplygin {
 namespace {
 
 constexpr double kTailTau = 40.0; // sech(40) < 1e-17
-
-double sech(double tau) {
-    return 1.0 / std::cosh(tau);
-}
 
 // sinh(x)/cosh(c + x) without overflow for any x and without cancellation for small x
 double sinhOverCosh(double x, double c) {
@@ -86,9 +83,12 @@ void FreeMotion::velocities(double t, double* sdot, double* phidot, double* phi)
         *phi = m_init.phi + m_init.phidot * t;
         return;
     case Case::General: {
-        double tau = m_k * t + m_c;
-        *sdot = m_v * std::tanh(tau);
-        *phidot = m_sigma * (m_v / b) * sech(tau);
+        // tanh and sech from one expm1: e = exp(-|tau|) = 1 + em, tanh|tau| = (1 - e^2)/(1 + e^2),
+        // sech tau = 2e/(1 + e^2); the heading from turn(t), which does not cancel
+        const double tau = m_k * t + m_c, em = std::expm1(-std::fabs(tau)), e = 1 + em;
+        const double inv = 1 / (1 + e * e), sign = tau < 0 ? -1.0 : 1.0;
+        *sdot = sign * m_v * (-em * (2 + em)) * inv;
+        *phidot = m_sigma * (m_v / b) * (2 * e * inv);
         *phi = m_init.phi + turn(t);
         return;
     }
