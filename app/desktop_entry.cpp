@@ -14,6 +14,7 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QDockWidget>
 #include <QFile>
 #include <QImage>
 #include <QPixmap>
@@ -50,6 +51,7 @@ struct ScreenshotOptions {
     bool showParameters =
         false;                ///< --panel parameters: raise the parameters dock over the path dock
     bool showMethods = false; ///< --panel methods: compute and show the work-precision diagram
+    std::string dock;         ///< --panel notes|equations: raise that dock
     Scene scene;
 };
 
@@ -71,9 +73,13 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
                 throw InputError("--at", "the time must be >= 0");
         } else if (arg == "--panel") {
             std::string panel = value(i, arg);
-            if (panel != "path" && panel != "parameters" && panel != "methods")
-                throw InputError("--panel",
-                                 "expected path, parameters or methods, got '" + panel + "'");
+            if (panel != "path" && panel != "parameters" && panel != "methods" &&
+                panel != "notes" && panel != "equations")
+                throw InputError("--panel", "expected path, parameters, methods, notes or "
+                                            "equations, got '" +
+                                                panel + "'");
+            if (panel == "notes" || panel == "equations")
+                o.dock = panel + "Dock";
             o.showParameters = panel == "parameters";
             o.showMethods = panel == "methods";
         } else if (arg == "--size") {
@@ -118,6 +124,11 @@ int renderScreenshot(const ScreenshotOptions& o) {
         window.showMethodsDock();
         window.methodsPanel()->start();
         window.methodsPanel()->waitForFinished();
+    }
+    if (auto* dock = window.findChild<QDockWidget*>(QString::fromStdString(o.dock));
+        dock && !o.dock.empty()) {
+        dock->show();
+        dock->raise();
     }
     QCoreApplication::processEvents();
     window.canvas()->fitScene();

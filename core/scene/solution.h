@@ -54,6 +54,7 @@ class Solution {
     MotionSample at(double t) const;
     /// The free motion alone at t (cheaper than at(t) when the controlled state is not needed).
     FreeState freeAt(double t) const { return m_free.at(t); }
+    const FreeMotion& freeMotion() const { return m_free; }
     /// count samples evenly spaced on [0, tEnd] (count >= 2).
     std::vector<MotionSample> sample(int count) const;
     std::vector<MotionSample> sampleAt(const std::vector<double>& times) const;

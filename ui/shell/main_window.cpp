@@ -3,6 +3,7 @@
 #include "canvas/scene_canvas.h"
 #include "common/atomic_file.h"
 #include "common/input_error.h"
+#include "document/pin_set.h"
 #include "document/scene_command.h"
 #include "document/scene_document.h"
 #include "document/scene_files.h"
@@ -16,6 +17,7 @@
 #include "scene/presets.h"
 #include "scene/scene_json.h"
 #include "shell/gallery_menu.h"
+#include "shell/instruments.h"
 #include "shell/playback.h"
 #include "shell/timeline_bar.h"
 
@@ -130,6 +132,7 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
                 setPath(s, tr("Edit the drawn path"), false);
             });
     connect(m_parameters, &ParametersPanel::sceneEdited, this, &MainWindow::onParametersEdited);
+    installInstruments(this);
 
     bool restored = false;
     if (m_useSettings) {
@@ -185,6 +188,7 @@ void MainWindow::buildMenus() {
     edit->addAction(redo);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->setObjectName(QStringLiteral("viewMenu"));
     view->addAction(m_pathDock->toggleViewAction());
     view->addAction(m_parametersDock->toggleViewAction());
     view->addAction(m_plotsDock->toggleViewAction());
@@ -278,6 +282,7 @@ void MainWindow::applyScene(const Scene& scene) {
 
 void MainWindow::loadScene(const Scene& scene) {
     m_document->check(scene); // a scene that does not solve never replaces the current one
+    PinSet::check(*m_document, scene);
     m_undo->clear();
     applyScene(scene);
     m_document->flush();
@@ -366,7 +371,7 @@ void MainWindow::showMethodsDock() {
 bool MainWindow::loadGalleryEntry(const QString& name) {
     const GalleryEntry& entry = galleryEntry(name.toStdString());
     const QString title = QString::fromStdString(entry.title);
-    const QString explanation = QString::fromStdString(entry.explanation);
+    const QString explanation = QString::fromStdString(entry.scene.note);
     m_accuracyDock->show();
     m_accuracyDock->raise();
     try {
