@@ -2,6 +2,7 @@
 // Equations panel, driven through the real window under the offscreen platform.
 #include "canvas/scene_canvas.h"
 #include "canvas/vector_painter.h"
+#include "desktop_entry.h"
 #include "document/pin_set.h"
 #include "document/scene_document.h"
 #include "gui_test_support.h"
@@ -77,6 +78,7 @@ class TestInstruments : public QObject {
     void notesEditedSavedLoadedAndShown();
     void galleryNoteShown();
     void equationsFollowTimeSystemAndMode();
+    void screenshotShowsArrowsAndEquations();
 
   private:
     void showVector(VectorKind kind, bool on = true);
@@ -445,6 +447,33 @@ void TestInstruments::equationsFollowTimeSystemAndMode() {
     dock->show();
     dock->raise();
     QVERIFY(panel->view()->toPlainText().contains(QStringLiteral("Rolling disk")));
+}
+
+void TestInstruments::screenshotShowsArrowsAndEquations() {
+    // a scene file with the knife's reaction shown, rendered by the screenshot mode
+    Scene s = presetScene("catenary");
+    s.vectors.lateralReaction.shown = true;
+    QString scene = m_dir.filePath(QStringLiteral("arrows.json"));
+    QFile f(scene);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(QByteArray::fromStdString(sceneToJson(s)));
+    f.close();
+    QString shot = m_dir.filePath(QStringLiteral("arrows.png"));
+    QByteArray sceneArg = scene.toUtf8(), shotArg = shot.toUtf8();
+    const char* args[] = {
+        "chaplygin-lab", "--screenshot", shotArg.constData(), "--scene",  sceneArg.constData(),
+        "--at",          "0.8",          "--panel",           "equations"};
+    QCOMPARE(runScreenshot(9, const_cast<char**>(args)), 0);
+    QImage image(shot);
+    QVERIFY(!image.isNull());
+    int magenta = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            magenta += near(image.pixelColor(x, y), vectorColor(VectorKind::LateralReaction), 30);
+    QVERIFY2(magenta > 40, qPrintable(QString::number(magenta))); // the arrow and its scale bar
+    const char* bad[] = {"chaplygin-lab", "--screenshot", shotArg.constData(), "--preset", "line",
+                         "--panel",       "sweep"};
+    QCOMPARE(runScreenshot(7, const_cast<char**>(bad)), 2);
 }
 
 QTEST_MAIN(TestInstruments)
