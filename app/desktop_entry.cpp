@@ -18,6 +18,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QDockWidget>
 #include <QFile>
 #include <QIcon>
 #include <QImage>
@@ -62,6 +63,7 @@ struct ScreenshotOptions {
     bool showMethods = false; ///< --panel methods: compute and show the work-precision diagram
     bool showSweep = false;   ///< --panel sweep: show the Sweep dock, run --sweep if given
     std::optional<SweepSpec> sweep;
+    std::string dock;         ///< --panel notes|equations: raise that dock
     Scene scene;
 };
 
@@ -83,10 +85,14 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
                 throw InputError("--at", "the time must be >= 0");
         } else if (arg == "--panel") {
             std::string panel = value(i, arg);
-            if (panel != "path" && panel != "parameters" && panel != "methods" && panel != "sweep")
-                throw InputError("--panel", "expected path, parameters, methods or sweep, got '" +
+            if (panel != "path" && panel != "parameters" && panel != "methods" &&
+                panel != "sweep" && panel != "notes" && panel != "equations")
+                throw InputError("--panel", "expected path, parameters, methods, sweep, notes or "
+                                            "equations, got '" +
                                                 panel + "'");
             o.showSweep = panel == "sweep";
+            if (panel == "notes" || panel == "equations")
+                o.dock = panel + "Dock";
             o.showParameters = panel == "parameters";
             o.showMethods = panel == "methods";
         } else if (arg == "--size") {
@@ -144,6 +150,11 @@ int renderScreenshot(const ScreenshotOptions& o) {
             sweep->start();
             sweep->waitForFinished();
         }
+    }
+    if (auto* dock = window.findChild<QDockWidget*>(QString::fromStdString(o.dock));
+        dock && !o.dock.empty()) {
+        dock->show();
+        dock->raise();
     }
     QCoreApplication::processEvents();
     window.canvas()->fitScene();

@@ -11,8 +11,8 @@
 namespace chaplygin {
 namespace {
 
-// resources/scenes/gallery/NAME.json: a scene file with a "gallery" object (title, explanation,
-// rejected, message)
+// resources/scenes/gallery/NAME.json: a scene file whose note explains the entry, with a "gallery"
+// object (title, rejected, message)
 std::vector<GalleryEntry> build() {
     std::vector<GalleryEntry> g;
     const std::string_view folder = "gallery/", suffix = ".json";
@@ -27,7 +27,6 @@ std::vector<GalleryEntry> build() {
             e.scene = sceneFromJson(text);
             const nlohmann::json about = nlohmann::json::parse(text).at("gallery");
             e.title = about.at("title").get<std::string>();
-            e.explanation = about.at("explanation").get<std::string>();
             e.rejected = about.value("rejected", false);
             e.message = about.value("message", std::string());
         } catch (const std::exception& err) {

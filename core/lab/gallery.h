@@ -8,12 +8,11 @@ namespace chaplygin {
 
 /// A scene where a method or a model fails, with what a lecturer should say about it
 /// ("where methods fail"), read from resources/scenes/gallery. Each has a test that the failure
-/// is detected or handled.
+/// is detected or handled. What the lecturer says is the scene's note (Markdown).
 struct GalleryEntry {
-    std::string name;        ///< short id, e.g. "cusp"
-    std::string title;       ///< one line for menus
-    std::string explanation; ///< one paragraph
-    Scene scene;
+    std::string name;      ///< short id, e.g. "cusp"
+    std::string title;     ///< one line for menus
+    Scene scene;           ///< scene.note explains the entry (one paragraph)
     bool rejected = false; ///< the app refuses this scene with a message (the failure detected)
     std::string message;   ///< words the refusal contains
 };

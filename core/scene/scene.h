@@ -5,8 +5,46 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace chaplygin {
+
+/// One arrow on the canvas: whether it is drawn and its length per unit of the quantity
+/// ([m per m/s], [m per N] or, for the couple, [rad of arc per N m]); 0 scales automatically.
+struct VectorToggle {
+    bool shown = false;
+    double scale = 0;
+
+    bool operator==(const VectorToggle&) const = default;
+};
+
+/// Which arrows the canvas draws on the bodies (View > Vectors); a view setting saved with the
+/// scene. The quantities are the Solution's: sdot, phidot, force_axial, force_lateral (N at P)
+/// and control_couple.
+struct VectorOverlay {
+    VectorToggle knifeVelocity;   ///< velocity of the knife point P, sdot s-hat
+    VectorToggle axialForce;      ///< control force f_s along the axis, at the centre of mass
+    VectorToggle lateralReaction; ///< knife's lateral reaction N n-hat, at P
+    VectorToggle controlCouple;   ///< control couple tau, a curved arrow about the centre of mass
+    VectorToggle cmVelocity;      ///< velocity of the centre of mass, sdot s-hat + a phidot n-hat
+
+    bool operator==(const VectorOverlay&) const = default;
+};
+
+/// A run kept for comparison ("Pin this run"): the parameters that define its motion. It is
+/// recomputed from these when the scene is loaded.
+struct PinnedRun {
+    PathSource path;
+    SystemSpec system;
+    SpeedMode mode = SpeedMode::Energy;
+    double speed = 1.0;
+    std::optional<double> tEnd;
+
+    bool operator==(const PinnedRun&) const = default;
+};
+
+/// At most this many pinned runs per scene.
+constexpr std::size_t kMaxPinnedRuns = 5;
 
 /// Everything that defines a scene: plain data with defaults, saved and loaded as JSON,
 /// shared by the GUI, the CLI and the tests.
@@ -17,6 +55,10 @@ struct Scene {
     SpeedMode mode = SpeedMode::Energy;
     double speed = 1.0;         ///< v_T (Energy) or v_s (Speed) [m/s]
     std::optional<double> tEnd; ///< horizon [s]; default: the time to traverse the path
+
+    VectorOverlay vectors;       ///< arrows drawn on the bodies (view only)
+    std::string note;            ///< the lecturer's Markdown note (view only)
+    std::vector<PinnedRun> pins; ///< runs kept for comparison, oldest first (view only)
 
     bool operator==(const Scene&) const = default;
 };

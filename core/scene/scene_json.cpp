@@ -1,6 +1,7 @@
 #include "scene/scene_json.h"
 
 #include "common/input_error.h"
+#include "scene/pinned_runs.h"
 
 #include <nlohmann/json.hpp>
 
@@ -94,51 +95,152 @@ void checkShape(const std::string& text) {
     }
 }
 
-PathSource readPath(const json& p) {
-    object(p, "/path");
+PathSource readPath(const json& p, const std::string& at) {
+    object(p, at);
     PathSource src;
-    std::string kind = string(member(p, "/path", "kind"), "/path/kind");
+    std::string kind = string(member(p, at, "kind"), at + "/kind");
     auto range = [&]() {
-        const json& r = member(p, "/path", "range");
+        const json& r = member(p, at, "range");
         if (!r.is_array() || r.size() != 2)
-            bad("/path/range", "must be an array of two numbers [from, to]");
-        src.from = number(r[0], "/path/range/0");
-        src.to = number(r[1], "/path/range/1");
+            bad(at + "/range", "must be an array of two numbers [from, to]");
+        src.from = number(r[0], at + "/range/0");
+        src.to = number(r[1], at + "/range/1");
     };
     if (kind == "graph") {
         src.kind = PathKind::Graph;
-        src.y = string(member(p, "/path", "y"), "/path/y");
+        src.y = string(member(p, at, "y"), at + "/y");
         range();
     } else if (kind == "parametric") {
         src.kind = PathKind::Parametric;
-        src.xOfU = string(member(p, "/path", "x"), "/path/x");
-        src.yOfU = string(member(p, "/path", "y"), "/path/y");
+        src.xOfU = string(member(p, at, "x"), at + "/x");
+        src.yOfU = string(member(p, at, "y"), at + "/y");
         range();
     } else if (kind == "polyline") {
         src.kind = PathKind::Polyline;
-        const json& pts = member(p, "/path", "points");
+        const json& pts = member(p, at, "points");
         if (!pts.is_array())
-            bad("/path/points", "must be an array of [x, y] pairs");
+            bad(at + "/points", "must be an array of [x, y] pairs");
         for (std::size_t i = 0; i < pts.size(); ++i) {
-            std::string ptr = "/path/points/" + std::to_string(i);
+            std::string ptr = at + "/points/" + std::to_string(i);
             if (!pts[i].is_array() || pts[i].size() != 2)
                 bad(ptr, "must be an [x, y] pair");
             src.points.emplace_back(number(pts[i][0], ptr + "/0"), number(pts[i][1], ptr + "/1"));
         }
         if (auto it = p.find("corners"); it != p.end()) {
-            std::string c = string(*it, "/path/corners");
+            std::string c = string(*it, at + "/corners");
             if (c != "pivot" && c != "smooth")
-                bad("/path/corners", "must be \"pivot\" or \"smooth\", got \"" + c + "\"");
+                bad(at + "/corners", "must be \"pivot\" or \"smooth\", got \"" + c + "\"");
             src.corners = cornerModeFromName(c);
         }
         if (auto it = p.find("smoothing"); it != p.end())
-            src.smoothing = number(*it, "/path/smoothing");
+            src.smoothing = number(*it, at + "/smoothing");
     } else {
-        bad("/path/kind",
+        bad(at + "/kind",
             "must be \"graph\", \"parametric\" or \"polyline\", got \"" + kind + "\"");
     }
     return src;
 }
+
+// the fields that define a run, at the top level (at = "") or in a pin (at = "/pins/N")
+PinnedRun readRun(const json& j, const std::string& at) {
+    PinnedRun r;
+    r.path = readPath(member(j, at, "path"), at + "/path");
+    const json& sys = object(member(j, at, "system"), at + "/system");
+    try {
+        r.system.kind =
+            systemKindFromName(string(member(sys, at + "/system", "kind"), at + "/system/kind"));
+    } catch (const InputError& e) {
+        bad(at + "/system/kind", e.what());
+    }
+    const json& params = object(member(sys, at + "/system", "params"), at + "/system/params");
+    r.system.params.clear();
+    for (auto it = params.begin(); it != params.end(); ++it)
+        r.system.params[it.key()] = number(it.value(), at + "/system/params/" + it.key());
+    std::string mode = string(member(j, at, "mode"), at + "/mode");
+    if (mode != "energy" && mode != "speed")
+        bad(at + "/mode", "must be \"energy\" or \"speed\", got \"" + mode + "\"");
+    r.mode = speedModeFromName(mode);
+    r.speed = number(member(j, at, "speed"), at + "/speed");
+    if (auto it = j.find("t_end"); it != j.end() && !it->is_null())
+        r.tEnd = number(*it, at + "/t_end");
+    return r;
+}
+
+json writePath(const PathSource& path) {
+    json p;
+    p["kind"] = kindName(path.kind);
+    switch (path.kind) {
+    case PathKind::Graph:
+        p["y"] = path.y;
+        p["range"] = {path.from, path.to};
+        break;
+    case PathKind::Parametric:
+        p["x"] = path.xOfU;
+        p["y"] = path.yOfU;
+        p["range"] = {path.from, path.to};
+        break;
+    case PathKind::Polyline:
+        p["points"] = json::array();
+        for (auto [x, y] : path.points)
+            p["points"].push_back({x, y});
+        p["corners"] = cornerModeName(path.corners);
+        p["smoothing"] = path.smoothing;
+        break;
+    }
+    return p;
+}
+
+void writeRun(json& j, const PinnedRun& r) {
+    j["path"] = writePath(r.path);
+    j["system"] = {{"kind", systemKindName(r.system.kind)}, {"params", r.system.params}};
+    j["mode"] = speedModeName(r.mode);
+    j["speed"] = r.speed;
+    if (r.tEnd)
+        j["t_end"] = *r.tEnd;
+}
+
+// the vector overlay's keys in the file, in the order of View > Vectors
+struct VectorKey {
+    const char* key;
+    VectorToggle VectorOverlay::*toggle;
+};
+constexpr VectorKey kVectorKeys[] = {
+    {"knife_velocity", &VectorOverlay::knifeVelocity},
+    {"axial_force", &VectorOverlay::axialForce},
+    {"lateral_reaction", &VectorOverlay::lateralReaction},
+    {"control_couple", &VectorOverlay::controlCouple},
+    {"cm_velocity", &VectorOverlay::cmVelocity},
+};
+
+VectorOverlay readVectors(const json& v) {
+    object(v, "/vectors");
+    VectorOverlay o;
+    for (auto it = v.begin(); it != v.end(); ++it) {
+        const std::string at = "/vectors/" + it.key();
+        const VectorKey* k = nullptr;
+        for (const VectorKey& c : kVectorKeys)
+            if (it.key() == c.key)
+                k = &c;
+        if (!k)
+            bad(at, "unknown arrow (use knife_velocity, axial_force, lateral_reaction, "
+                    "control_couple or cm_velocity)");
+        object(it.value(), at);
+        VectorToggle& t = o.*(k->toggle);
+        if (auto s = it->find("shown"); s != it->end()) {
+            if (!s->is_boolean())
+                bad(at + "/shown", std::string("must be true or false, got ") + s->type_name());
+            t.shown = s->get<bool>();
+        }
+        if (auto s = it->find("scale"); s != it->end()) {
+            t.scale = number(*s, at + "/scale");
+            if (!(t.scale >= 0))
+                bad(at + "/scale", "must be >= 0 (0 scales automatically)");
+        }
+    }
+    return o;
+}
+
+constexpr std::size_t kMaxNoteBytes = 100000;
 
 } // namespace
 
@@ -148,33 +250,27 @@ std::string sceneToJson(const Scene& scene) {
     j["version"] = kSceneFormatVersion;
     if (!scene.preset.empty())
         j["preset"] = scene.preset;
-    json p;
-    p["kind"] = kindName(scene.path.kind);
-    switch (scene.path.kind) {
-    case PathKind::Graph:
-        p["y"] = scene.path.y;
-        p["range"] = {scene.path.from, scene.path.to};
-        break;
-    case PathKind::Parametric:
-        p["x"] = scene.path.xOfU;
-        p["y"] = scene.path.yOfU;
-        p["range"] = {scene.path.from, scene.path.to};
-        break;
-    case PathKind::Polyline:
-        p["points"] = json::array();
-        for (auto [x, y] : scene.path.points)
-            p["points"].push_back({x, y});
-        p["corners"] = cornerModeName(scene.path.corners);
-        p["smoothing"] = scene.path.smoothing;
-        break;
+    writeRun(j, pinOf(scene));
+    if (scene.vectors != VectorOverlay{}) {
+        json v = json::object();
+        for (const VectorKey& k : kVectorKeys) {
+            const VectorToggle& t = scene.vectors.*(k.toggle);
+            if (t != VectorToggle{})
+                v[k.key] = {{"shown", t.shown}, {"scale", t.scale}};
+        }
+        j["vectors"] = v;
     }
-    j["path"] = p;
-    j["system"] = {{"kind", systemKindName(scene.system.kind)}, {"params", scene.system.params}};
-    j["mode"] = speedModeName(scene.mode);
-    j["speed"] = scene.speed;
-    if (scene.tEnd)
-        j["t_end"] = *scene.tEnd;
-    return j.dump(2) + "\n";
+    if (!scene.note.empty())
+        j["note"] = scene.note;
+    if (!scene.pins.empty()) {
+        j["pins"] = json::array();
+        for (const PinnedRun& pin : scene.pins) {
+            json p;
+            writeRun(p, pin);
+            j["pins"].push_back(p);
+        }
+    }
+    return j.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 Scene sceneFromJson(const std::string& text) {
@@ -214,24 +310,31 @@ Scene sceneFromJson(const std::string& text) {
     Scene s;
     if (auto it = j.find("preset"); it != j.end())
         s.preset = string(*it, "/preset");
-    s.path = readPath(member(j, "", "path"));
-    const json& sys = object(member(j, "", "system"), "/system");
-    try {
-        s.system.kind = systemKindFromName(string(member(sys, "/system", "kind"), "/system/kind"));
-    } catch (const InputError& e) {
-        bad("/system/kind", e.what());
+    PinnedRun run = readRun(j, "");
+    s.path = run.path;
+    s.system = run.system;
+    s.mode = run.mode;
+    s.speed = run.speed;
+    s.tEnd = run.tEnd;
+    if (auto it = j.find("vectors"); it != j.end())
+        s.vectors = readVectors(*it);
+    if (auto it = j.find("note"); it != j.end()) {
+        s.note = string(*it, "/note");
+        if (s.note.size() > kMaxNoteBytes)
+            bad("/note", "is " + std::to_string(s.note.size()) + " bytes; a note is at most " +
+                             std::to_string(kMaxNoteBytes) + " bytes");
     }
-    const json& params = object(member(sys, "/system", "params"), "/system/params");
-    s.system.params.clear();
-    for (auto it = params.begin(); it != params.end(); ++it)
-        s.system.params[it.key()] = number(it.value(), "/system/params/" + it.key());
-    std::string mode = string(member(j, "", "mode"), "/mode");
-    if (mode != "energy" && mode != "speed")
-        bad("/mode", "must be \"energy\" or \"speed\", got \"" + mode + "\"");
-    s.mode = speedModeFromName(mode);
-    s.speed = number(member(j, "", "speed"), "/speed");
-    if (auto it = j.find("t_end"); it != j.end() && !it->is_null())
-        s.tEnd = number(*it, "/t_end");
+    if (auto it = j.find("pins"); it != j.end()) {
+        if (!it->is_array())
+            bad("/pins", std::string("must be an array, got ") + it->type_name());
+        if (it->size() > kMaxPinnedRuns)
+            bad("/pins", "has " + std::to_string(it->size()) + " pinned runs; at most " +
+                             std::to_string(kMaxPinnedRuns) + " are kept");
+        for (std::size_t i = 0; i < it->size(); ++i) {
+            std::string at = "/pins/" + std::to_string(i);
+            s.pins.push_back(readRun(object((*it)[i], at), at));
+        }
+    }
     return s;
 }
 

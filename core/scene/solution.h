@@ -59,6 +59,7 @@ class Solution {
     FreeState freeAt(double t) const { return m_free.at(t); }
     /// The genuine vakonomic body alone at t.
     VakonomicState vakonomicAt(double t) const { return m_vak.at(t); }
+    const FreeMotion& freeMotion() const { return m_free; }
     /// count samples evenly spaced on [0, tEnd] (count >= 2).
     std::vector<MotionSample> sample(int count) const;
     std::vector<MotionSample> sampleAt(const std::vector<double>& times) const;

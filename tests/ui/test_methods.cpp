@@ -209,8 +209,7 @@ void TestMethods::galleryAcceptedEntryShowsExplanation() {
     QVERIFY(m_window->document()->error().isEmpty());
     const QString note = m_window->accuracyReadout()->noteText();
     QVERIFY(note.contains(QString::fromStdString(entry->title).toHtmlEscaped()));
-    QVERIFY(
-        note.contains(QString::fromStdString(entry->explanation.substr(0, 40)).toHtmlEscaped()));
+    QVERIFY(note.contains(QString::fromStdString(entry->scene.note.substr(0, 40)).toHtmlEscaped()));
     QVERIFY(!note.contains(QLatin1String("Refused")));
     // loaded through the undo stack: undo brings the previous scene back and drops the note
     m_window->undoStack()->undo();

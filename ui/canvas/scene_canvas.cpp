@@ -1,6 +1,8 @@
 #include "canvas/scene_canvas.h"
 
 #include "canvas/body_painter.h"
+#include "canvas/pin_painter.h"
+#include "document/pin_set.h"
 #include "document/scene_document.h"
 
 #include <QKeyEvent>
@@ -301,6 +303,7 @@ void SceneCanvas::paintEvent(QPaintEvent*) {
     if (solution) {
         MotionSample now = solution->at(m_time);
         paintTrails(p, now);
+        paintPinnedRuns(p, *PinSet::of(m_document), worldTransform(), m_time, QPointF(10, 42));
         const SystemSpec& spec = solution->scene().system;
         p.save();
         p.setTransform(worldTransform());
@@ -308,6 +311,8 @@ void SceneCanvas::paintEvent(QPaintEvent*) {
         paintBody(p, spec, solution->system(), {now.x, now.y, now.phi}, kControlled, false);
         paintBody(p, spec, solution->system(), {now.free.x, now.free.y, now.free.phi}, kFree, true);
         p.restore();
+        m_vectors.paint(p, solution, m_document->scene().vectors, now, worldTransform(), m_scale,
+                        rect());
         QFont f = font();
         f.setPointSizeF(9);
         p.setFont(f);

@@ -1,4 +1,5 @@
 #pragma once
+#include "canvas/vector_layer.h"
 #include "paths/path_source.h"
 #include "scene/solution.h"
 
@@ -33,6 +34,8 @@ class SceneCanvas : public QWidget {
     QPointF toWorld(QPointF pixel) const;
 
     QSize sizeHint() const override { return {800, 500}; }
+    /// The arrows of View > Vectors as last painted.
+    const VectorLayer& vectorLayer() const { return m_vectors; }
 
   public slots:
     void setTime(double t);
@@ -96,6 +99,7 @@ class SceneCanvas : public QWidget {
     };
     BackgroundKey m_backgroundKey;
     QPixmap m_background; // grid, path and legend
+    VectorLayer m_vectors;
 };
 
 } // namespace chaplygin::ui

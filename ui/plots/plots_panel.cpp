@@ -1,6 +1,8 @@
 #include "plots/plots_panel.h"
 
+#include "document/pin_set.h"
 #include "document/scene_document.h"
+#include "plots/pinned_plots.h"
 
 #include <QGridLayout>
 #include <QPalette>
@@ -63,6 +65,7 @@ void PlotsPanel::resizeEvent(QResizeEvent* e) {
 void PlotsPanel::refresh() {
     for (int i = 0; i < 4; ++i) {
         drawPlot(*m_plots[i], kKinds[i], m_document->series());
+        addPinnedSeries(*m_plots[i], kKinds[i], *PinSet::of(m_document));
         m_plots[i]->replot(QCustomPlot::rpQueuedReplot);
     }
 }

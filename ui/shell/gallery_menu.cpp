@@ -13,8 +13,8 @@ GalleryMenu::GalleryMenu(QWidget* parent) : QMenu(tr("&Gallery"), parent) {
             title += tr(" (refused)");
         QAction* action = addAction(title, this, [this, name] { emit entryChosen(name); });
         action->setObjectName(QStringLiteral("gallery-") + name);
-        action->setStatusTip(QString::fromStdString(e.explanation));
-        action->setToolTip(QString::fromStdString(e.explanation));
+        action->setStatusTip(QString::fromStdString(e.scene.note));
+        action->setToolTip(QString::fromStdString(e.scene.note));
     }
 }
 

@@ -5,7 +5,7 @@
 namespace chaplygin::ui {
 
 /// The Gallery menu ("where methods fail"): one action per galleryEntries() entry,
-/// by title, in the core's order; the explanation is the status tip.
+/// by title, in the core's order; the scene's note is the status tip.
 class GalleryMenu : public QMenu {
     Q_OBJECT
   public:

@@ -3,6 +3,7 @@
 #include "canvas/scene_canvas.h"
 #include "common/atomic_file.h"
 #include "common/input_error.h"
+#include "document/pin_set.h"
 #include "document/scene_command.h"
 #include "document/scene_document.h"
 #include "document/scene_files.h"
@@ -18,6 +19,7 @@
 #include "scene/scene_json.h"
 #include "shell/animation_dialog.h"
 #include "shell/gallery_menu.h"
+#include "shell/instruments.h"
 #include "shell/playback.h"
 #include "shell/timeline_bar.h"
 
@@ -139,6 +141,7 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
             });
     connect(m_parameters, &ParametersPanel::sceneEdited, this, &MainWindow::onParametersEdited);
     connect(m_sweep, &SweepPanel::sceneEdited, this, &MainWindow::onParametersEdited);
+    installInstruments(this);
 
     bool restored = false;
     if (m_useSettings) {
@@ -195,6 +198,7 @@ void MainWindow::buildMenus() {
     edit->addAction(redo);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->setObjectName(QStringLiteral("viewMenu"));
     view->addAction(m_pathDock->toggleViewAction());
     view->addAction(m_parametersDock->toggleViewAction());
     view->addAction(m_plotsDock->toggleViewAction());
@@ -289,6 +293,7 @@ void MainWindow::applyScene(const Scene& scene) {
 
 void MainWindow::loadScene(const Scene& scene) {
     m_document->check(scene); // a scene that does not solve never replaces the current one
+    PinSet::check(*m_document, scene);
     m_undo->clear();
     applyScene(scene);
     m_document->flush();
@@ -377,7 +382,7 @@ void MainWindow::showMethodsDock() {
 bool MainWindow::loadGalleryEntry(const QString& name) {
     const GalleryEntry& entry = galleryEntry(name.toStdString());
     const QString title = QString::fromStdString(entry.title);
-    const QString explanation = QString::fromStdString(entry.explanation);
+    const QString explanation = QString::fromStdString(entry.scene.note);
     m_accuracyDock->show();
     m_accuracyDock->raise();
     try {

@@ -18,7 +18,7 @@ using namespace chaplygin;
 TEST(GalleryScenes, EveryEntryIsExplainedAndBehavesAsDescribed) {
     ASSERT_GE(galleryEntries().size(), 8u);
     for (const GalleryEntry& e : galleryEntries()) {
-        EXPECT_GT(e.explanation.size(), 200u) << e.name;
+        EXPECT_GT(e.scene.note.size(), 200u) << e.name;
         if (e.rejected) {
             try {
                 Solution::compute(e.scene);

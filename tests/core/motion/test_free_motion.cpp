@@ -234,4 +234,20 @@ TEST(FreeMotion, LongHorizonWithLargeRatioStaysFinite) {
     FreeState far = free.at(3000);
     EXPECT_TRUE(std::isfinite(far.phi) && std::isfinite(far.x));
     EXPECT_NEAR(far.phi, free.totalTurn(), 1e-14);
+TEST(FreeMotion, ConstantsAreThoseOfTheClosedForm) {
+    // the Equations panel shows V, k and c: they reproduce the motion's velocities
+    DerivedSystem sys{1.0, 0.5, 1.0};
+    FreeInitial init{0, 0, 0.3, 0.8, -0.6};
+    FreeMotion free(sys, init, 10);
+    FreeMotion::Constants k = free.constants();
+    ASSERT_TRUE(k.general);
+    EXPECT_NEAR(k.v, std::hypot(0.8, 1.0 * 0.6), 1e-15);
+    EXPECT_NEAR(k.k, 0.5 * k.v, 1e-15);
+    EXPECT_EQ(k.sigma, -1.0);
+    for (double t : {0.0, 1.5, 7.0}) {
+        FreeState f = free.at(t);
+        EXPECT_NEAR(f.sdot, k.v * std::tanh(k.k * t + k.c), 1e-13) << t;
+        EXPECT_NEAR(f.phidot, k.sigma * (k.v / sys.b) / std::cosh(k.k * t + k.c), 1e-13) << t;
+    }
+    EXPECT_FALSE(FreeMotion({1.0, 0.0, 1.0}, init, 10).constants().general); // a = 0: a circle
 }

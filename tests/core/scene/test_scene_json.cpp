@@ -1,6 +1,7 @@
 // Scene files: round trip, and rejection of broken files with the JSON path named.
 #include "common/atomic_file.h"
 #include "common/input_error.h"
+#include "scene/pinned_runs.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
 
@@ -103,4 +104,95 @@ TEST(SceneJson, AtomicWriteKeepsTheOldFileOnFailure) {
         EXPECT_EQ(entry.path().filename().string().find(".tmp-"), std::string::npos)
             << entry.path();
     fs::remove_all(dir);
+}
+
+namespace {
+
+Scene instrumentedScene() {
+    Scene s = presetScene("catenary");
+    s.vectors.knifeVelocity = {true, 0};
+    s.vectors.controlCouple = {true, 0.25};
+    s.vectors.lateralReaction = {false, 2.0}; // a scale kept while hidden
+    s.note = "## The catenary\n\nThe sleigh turns *clockwise*: \u03ba < 0.\n";
+    PinnedRun pin = pinOf(s);
+    pin.system.params["b"] = 0.5;
+    s.pins.push_back(pin);
+    pin.mode = SpeedMode::Speed;
+    pin.tEnd = 1.5;
+    s.pins.push_back(pin);
+    return s;
+}
+
+} // namespace
+
+TEST(SceneJson, VectorsNotesAndPinsRoundTrip) {
+    Scene s = instrumentedScene();
+    Scene back = sceneFromJson(sceneToJson(s));
+    EXPECT_EQ(back, s);
+    EXPECT_EQ(back.pins.size(), 2u);
+    EXPECT_EQ(back.pins[0].system.params.at("b"), 0.5);
+    EXPECT_TRUE(back.vectors.knifeVelocity.shown);
+    EXPECT_EQ(back.vectors.controlCouple.scale, 0.25);
+    EXPECT_EQ(back.note, s.note);
+    // a plain scene writes none of the new keys, so older readers see the same file
+    std::string plain = sceneToJson(presetScene("catenary"));
+    for (const char* key : {"\"vectors\"", "\"note\"", "\"pins\""})
+        EXPECT_EQ(plain.find(key), std::string::npos) << key;
+}
+
+TEST(SceneJson, BadVectorsNotesAndPinsNameTheirPlace) {
+    const std::string good = sceneToJson(instrumentedScene());
+    auto withReplaced = [&](const std::string& from, const std::string& to) {
+        std::string s = good;
+        auto at = s.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        return at == std::string::npos ? s : s.replace(at, from.size(), to);
+    };
+    auto expectError = [&](const std::string& text, const std::string& words) {
+        std::string e = errorOf(text);
+        EXPECT_NE(e.find(words), std::string::npos) << "got: " << e;
+    };
+    expectError(withReplaced("\"shown\": true", "\"shown\": 1"),
+                "scene file /vectors/control_couple/shown: must be true or false");
+    expectError(withReplaced("\"scale\": 0.25", "\"scale\": -1"),
+                "scene file /vectors/control_couple/scale: must be >= 0");
+    expectError(withReplaced("\"control_couple\"", "\"torque\""),
+                "scene file /vectors/torque: unknown arrow");
+    expectError(withReplaced("\"note\": \"##", "\"note\": [\"##\"], \"x\": \""),
+                "scene file /note: must be a string");
+    expectError(withReplaced("\"b\": 0.5", "\"b\": \"half\""),
+                "scene file /pins/0/system/params/b: must be a number");
+    expectError(withReplaced("\"mode\": \"speed\"", "\"mode\": \"fast\""),
+                "scene file /pins/1/mode: must be \"energy\" or \"speed\"");
+    expectError(withReplaced("\"pins\": [", "\"pins\": [1, "),
+                "scene file /pins/0: must be an object");
+    // more than five pins
+    Scene many = instrumentedScene();
+    while (many.pins.size() <= kMaxPinnedRuns)
+        many.pins.push_back(many.pins.front());
+    expectError(sceneToJson(many), "scene file /pins: has 6 pinned runs; at most 5");
+    // an oversized note
+    Scene longNote = instrumentedScene();
+    longNote.note = std::string(200000, 'x');
+    expectError(sceneToJson(longNote), "scene file /note: is 200000 bytes");
+}
+
+TEST(PinnedRuns, LabelNamesWhatDiffers) {
+    Scene current = presetScene("sinusoid");
+    PinnedRun pin = pinOf(current);
+    EXPECT_EQ(pinLabel(pin, current), "same parameters");
+    pin.system.params["b"] = 0.5;
+    EXPECT_EQ(pinLabel(pin, current), "b = 0.5 m");
+    pin.speed = 2;
+    EXPECT_EQ(pinLabel(pin, current), "b = 0.5 m, v_T = 2 m/s");
+    pin = pinOf(current);
+    pin.mode = SpeedMode::Speed;
+    EXPECT_EQ(pinLabel(pin, current), "constant speed, v_s = 1 m/s");
+    pin = pinOf(current);
+    pin.path.y = "-2*sin(x)";
+    EXPECT_EQ(pinLabel(pin, current), "another path");
+    Scene back = sceneOf(pinOf(current));
+    EXPECT_EQ(back.path, current.path);
+    EXPECT_EQ(back.system, current.system);
+    EXPECT_TRUE(back.pins.empty());
 }

@@ -1,0 +1,83 @@
+#include "canvas/pin_painter.h"
+
+#include "canvas/body_painter.h"
+#include "document/pin_set.h"
+
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace chaplygin::ui {
+
+namespace {
+constexpr double kMinStepPx = 1.0;
+} // namespace
+
+void paintPinnedRuns(QPainter& p, PinSet& pins, const QTransform& world, double t,
+                     QPointF topLeft) {
+    const int n = pins.count();
+    if (n == 0)
+        return;
+    p.save();
+    // where each run is at t (clamped to its own end), computed once per paint
+    std::vector<MotionSample> now(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i)
+        if (const PinSet::Run& run = pins.run(i); run.solution)
+            now[std::size_t(i)] = run.solution->at(std::clamp(t, 0.0, run.solution->tEnd()));
+    // trails and faint bodies first, then every dot on top, so that no pin hides another's dot
+    for (int i = 0; i < n; ++i) {
+        const PinSet::Run& run = pins.run(i);
+        if (!run.solution)
+            continue;
+        const MotionSample& m = now[std::size_t(i)];
+        QColor c = PinSet::color(i);
+        c.setAlpha(150);
+        QPen pen(c, 2.5);
+        pen.setCosmetic(true);
+        pen.setCapStyle(Qt::RoundCap);
+        pen.setJoinStyle(Qt::RoundJoin);
+        p.setPen(pen);
+        // the trail up to t, like the live body's: the lengths show which run is ahead. Points
+        // closer than a pixel to the last one kept add nothing but drawing time.
+        QPolygonF line;
+        for (int k = 0; k < run.series.x.size() && run.series.t[k] <= t; ++k) {
+            QPointF q = world.map(QPointF(run.series.x[k], run.series.y[k]));
+            if (line.isEmpty() ||
+                std::fabs(q.x() - line.back().x()) + std::fabs(q.y() - line.back().y()) >=
+                    kMinStepPx)
+                line << q;
+        }
+        line << world.map(QPointF(m.x, m.y));
+        p.drawPolyline(line);
+        p.save();
+        p.setTransform(world, true);
+        paintBody(p, run.solution->scene().system, run.solution->system(), {m.x, m.y, m.phi},
+                  PinSet::color(i), true);
+        p.restore();
+    }
+    for (int i = 0; i < n; ++i) {
+        if (!pins.run(i).solution)
+            continue;
+        const MotionSample& m = now[std::size_t(i)];
+        QColor c = PinSet::color(i);
+        p.setPen(QPen(c.darker(130), 1));
+        p.setBrush(c);
+        p.drawEllipse(world.map(QPointF(m.x, m.y)), 4.5, 4.5);
+    }
+    QFont f = p.font();
+    f.setPointSizeF(9);
+    p.setFont(f);
+    for (int i = 0; i < n; ++i) {
+        QPointF row = topLeft + QPointF(0, 16.0 * i);
+        QColor c = PinSet::color(i);
+        p.setPen(QPen(c, 3));
+        p.drawLine(row + QPointF(0, -4), row + QPointF(22, -4));
+        p.setPen(Qt::black);
+        p.drawText(row + QPointF(28, 0), QObject::tr("pin %1: %2").arg(i + 1).arg(pins.label(i)));
+    }
+    p.restore();
+}
+
+} // namespace chaplygin::ui

@@ -1,0 +1,35 @@
+#pragma once
+#include "canvas/vector_painter.h"
+#include "scene/solution.h"
+
+#include <QRectF>
+
+#include <memory>
+
+namespace chaplygin::ui {
+
+/// The canvas's View > Vectors layer: the shown arrows on the controlled body and on the free
+/// ghost, and their scale bars. A quantity without its own scale in the scene is scaled so
+/// that its largest value over the run is about the body's size (velocities share one scale,
+/// and so do the forces, so that they compare).
+class VectorLayer {
+  public:
+    void paint(QPainter& painter, const std::shared_ptr<const Solution>& solution,
+               const VectorOverlay& overlay, const MotionSample& now, const QTransform& world,
+               double pixelsPerMetre, const QRectF& area);
+
+    /// The effective scales (the scene's, else automatic) for a solution.
+    VectorScales scales(const std::shared_ptr<const Solution>& solution,
+                        const VectorOverlay& overlay) const;
+
+    /// The shapes of the last paint (empty when nothing is shown).
+    const VectorShapes& controlledShapes() const { return m_controlled; }
+    const VectorShapes& freeShapes() const { return m_free; }
+
+  private:
+    mutable std::shared_ptr<const Solution> m_solution; // the one m_auto was computed for
+    mutable VectorScales m_auto{};
+    VectorShapes m_controlled, m_free;
+};
+
+} // namespace chaplygin::ui

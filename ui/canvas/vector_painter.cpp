@@ -1,0 +1,278 @@
+#include "canvas/vector_painter.h"
+
+#include <QCoreApplication>
+#include <QPainter>
+#include <QPainterPath>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace chaplygin::ui {
+
+namespace {
+
+constexpr double kHeadPx = 9;       // arrowhead length
+constexpr double kMinArrowPx = 1.5; // shorter arrows are not drawn
+constexpr double kMaxSpanDeg = 340; // the couple's arc never closes
+constexpr double kDeg = 180 / std::numbers::pi;
+
+QString tr(const char* text) {
+    return QCoreApplication::translate("VectorPainter", text);
+}
+
+QPen pen(const QColor& c, double width, bool ghost) {
+    QPen p(c, width, ghost ? Qt::DashLine : Qt::SolidLine);
+    p.setCosmetic(true);
+    p.setCapStyle(Qt::RoundCap);
+    p.setJoinStyle(Qt::RoundJoin);
+    return p;
+}
+
+QColor inkOf(VectorKind kind, bool ghost) {
+    QColor c = vectorColor(kind);
+    if (ghost)
+        c.setAlpha(120);
+    return c;
+}
+
+void arrowHead(QPainter& p, QPointF tip, QPointF direction, const QColor& c) {
+    double len = std::hypot(direction.x(), direction.y());
+    if (len <= 0)
+        return;
+    QPointF u = direction / len, n(-u.y(), u.x());
+    QPolygonF head;
+    head << tip << tip - kHeadPx * u + 0.45 * kHeadPx * n << tip - kHeadPx * u - 0.45 * kHeadPx * n;
+    p.setBrush(c);
+    p.setPen(Qt::NoPen);
+    p.drawPolygon(head);
+}
+
+} // namespace
+
+VectorToggle VectorOverlay::*vectorToggle(VectorKind kind) {
+    switch (kind) {
+    case VectorKind::KnifeVelocity:
+        return &VectorOverlay::knifeVelocity;
+    case VectorKind::AxialForce:
+        return &VectorOverlay::axialForce;
+    case VectorKind::LateralReaction:
+        return &VectorOverlay::lateralReaction;
+    case VectorKind::ControlCouple:
+        return &VectorOverlay::controlCouple;
+    case VectorKind::CmVelocity:
+        return &VectorOverlay::cmVelocity;
+    }
+    return &VectorOverlay::knifeVelocity;
+}
+
+QString vectorName(VectorKind kind) {
+    switch (kind) {
+    case VectorKind::KnifeVelocity:
+        return tr("Knife point velocity v_P");
+    case VectorKind::AxialForce:
+        return tr("Control force along the axis f_s");
+    case VectorKind::LateralReaction:
+        return tr("Knife's lateral reaction N (at P)");
+    case VectorKind::ControlCouple:
+        return tr("Control couple \u03c4");
+    case VectorKind::CmVelocity:
+        return tr("Centre of mass velocity v_C");
+    }
+    return {};
+}
+
+QString vectorSymbol(VectorKind kind) {
+    switch (kind) {
+    case VectorKind::KnifeVelocity:
+        return QStringLiteral("v_P");
+    case VectorKind::AxialForce:
+        return QStringLiteral("f_s");
+    case VectorKind::LateralReaction:
+        return QStringLiteral("N");
+    case VectorKind::ControlCouple:
+        return QStringLiteral("\u03c4");
+    case VectorKind::CmVelocity:
+        return QStringLiteral("v_C");
+    }
+    return {};
+}
+
+QString vectorUnit(VectorKind kind) {
+    switch (kind) {
+    case VectorKind::KnifeVelocity:
+    case VectorKind::CmVelocity:
+        return QStringLiteral("m/s");
+    case VectorKind::AxialForce:
+    case VectorKind::LateralReaction:
+        return QStringLiteral("N");
+    case VectorKind::ControlCouple:
+        return QStringLiteral("N m");
+    }
+    return {};
+}
+
+QColor vectorColor(VectorKind kind) {
+    switch (kind) {
+    case VectorKind::KnifeVelocity:
+        return {0, 120, 60};
+    case VectorKind::AxialForce:
+        return {215, 95, 0};
+    case VectorKind::LateralReaction:
+        return {185, 0, 135};
+    case VectorKind::ControlCouple:
+        return {140, 100, 0};
+    case VectorKind::CmVelocity:
+        return {0, 130, 160};
+    }
+    return Qt::black;
+}
+
+double roundValue(double target) {
+    if (!(target > 0) || !std::isfinite(target))
+        return 1;
+    double decade = std::pow(10.0, std::floor(std::log10(target)));
+    double best = decade;
+    for (double f : {1.0, 2.0, 5.0, 10.0})
+        if (std::fabs(std::log(f * decade / target)) < std::fabs(std::log(best / target)))
+            best = f * decade;
+    return best;
+}
+
+VectorShapes vectorShapes(const DerivedSystem& system, const BodyState& body,
+                          const VectorOverlay& overlay, const VectorScales& scales,
+                          const QTransform& world, double coupleRadius, bool ghost) {
+    VectorShapes out;
+    const BodyVectors v = bodyVectors(system, body);
+    auto arrow = [&](VectorKind kind, const AttachedVector& a) {
+        if (!(overlay.*vectorToggle(kind)).shown || body.pivot)
+            return; // a pivoting body shows the couple alone
+        double k = scales[std::size_t(kind)];
+        QPointF tail = world.map(QPointF(a.x, a.y));
+        QPointF head = world.map(QPointF(a.x + k * a.vx, a.y + k * a.vy));
+        out.arrows.push_back({kind, tail, head, std::hypot(a.vx, a.vy), ghost});
+    };
+    arrow(VectorKind::KnifeVelocity, v.knifeVelocity);
+    arrow(VectorKind::CmVelocity, v.cmVelocity);
+    arrow(VectorKind::AxialForce, v.axialForce);
+    arrow(VectorKind::LateralReaction, v.lateralReaction);
+    if (overlay.controlCouple.shown) {
+        CoupleShape c;
+        c.centre = world.map(QPointF(v.cx, v.cy));
+        QPointF rim = world.map(QPointF(v.cx + coupleRadius, v.cy));
+        c.radius = std::hypot(rim.x() - c.centre.x(), rim.y() - c.centre.y());
+        // the arc starts behind the body (opposite to s-hat) and turns with the sign of tau
+        QPointF ahead = world.map(QPointF(v.cx + std::cos(body.phi), v.cy + std::sin(body.phi)));
+        double heading = std::atan2(-(ahead.y() - c.centre.y()), ahead.x() - c.centre.x()) * kDeg;
+        c.startDeg = heading + 180;
+        double span = body.controlCouple * scales[std::size_t(VectorKind::ControlCouple)] * kDeg;
+        c.spanDeg = std::clamp(span, -kMaxSpanDeg, kMaxSpanDeg);
+        c.value = body.controlCouple;
+        c.pivot = body.pivot;
+        c.ghost = ghost;
+        out.couples.push_back(c);
+    }
+    return out;
+}
+
+void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels) {
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    QFont f = p.font();
+    f.setPointSizeF(9);
+    f.setBold(true);
+    p.setFont(f);
+    for (const CoupleShape& c : shapes.couples) {
+        QColor ink = inkOf(VectorKind::ControlCouple, c.ghost);
+        QRectF box(c.centre.x() - c.radius, c.centre.y() - c.radius, 2 * c.radius, 2 * c.radius);
+        if (std::fabs(c.spanDeg) * std::numbers::pi / 180 * c.radius < kMinArrowPx) {
+            if (c.pivot && labels) {
+                // tau = 0 while the body turns in place; the control acts in impulses at the
+                // start and the end of the turn (physics.md sec. 2.8)
+                p.setPen(pen(ink, 1, true));
+                p.setBrush(Qt::NoBrush);
+                p.drawEllipse(box);
+                p.setPen(ink);
+                p.drawText(QRectF(c.centre.x() - 150, c.centre.y() + c.radius + 2, 300, 18),
+                           Qt::AlignHCenter | Qt::AlignTop,
+                           tr("\u03c4 = 0 while turning in place"));
+            }
+            continue;
+        }
+        p.setPen(pen(ink, 2.5, c.ghost));
+        p.setBrush(Qt::NoBrush);
+        p.drawArc(box, int(std::lround(c.startDeg * 16)), int(std::lround(c.spanDeg * 16)));
+        double end = (c.startDeg + c.spanDeg) * std::numbers::pi / 180;
+        QPointF tip = c.centre + c.radius * QPointF(std::cos(end), -std::sin(end));
+        double sign = c.spanDeg > 0 ? 1 : -1;
+        QPointF tangent = sign * QPointF(-std::sin(end), -std::cos(end));
+        arrowHead(p, tip + 0.5 * kHeadPx * tangent, tangent, ink);
+        if (labels) {
+            p.setPen(ink);
+            p.drawText(tip + QPointF(6, -6), vectorSymbol(VectorKind::ControlCouple));
+        }
+    }
+    for (const ArrowShape& a : shapes.arrows) {
+        QPointF d = a.head - a.tail;
+        double len = std::hypot(d.x(), d.y());
+        if (len < kMinArrowPx)
+            continue;
+        QColor ink = inkOf(a.kind, a.ghost);
+        p.setPen(pen(ink, 2.5, a.ghost));
+        // the shaft stops where the head begins, so the tip stays sharp
+        QPointF shaftEnd = len > kHeadPx ? a.head - d * (kHeadPx * 0.8 / len) : a.tail;
+        p.drawLine(a.tail, shaftEnd);
+        arrowHead(p, a.head, d, ink);
+        if (labels) {
+            p.setPen(ink);
+            p.drawText(a.head + d * (6 / len) + QPointF(-6, 5), vectorSymbol(a.kind));
+        }
+    }
+    p.restore();
+}
+
+void paintScaleBars(QPainter& p, const VectorOverlay& overlay, const VectorScales& scales,
+                    double pixelsPerMetre, QPointF bottomRight) {
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, true);
+    QFont f = p.font();
+    f.setPointSizeF(8.5);
+    p.setFont(f);
+    QPointF row = bottomRight;
+    for (int i = kVectorKinds - 1; i >= 0; --i) {
+        auto kind = VectorKind(i);
+        if (!(overlay.*vectorToggle(kind)).shown)
+            continue;
+        double k = scales[std::size_t(i)];
+        QColor ink = vectorColor(kind);
+        QString text;
+        p.setPen(pen(ink, 2.5, false));
+        p.setBrush(Qt::NoBrush);
+        if (kind == VectorKind::ControlCouple) {
+            // an arc of radius 9 px: a round couple turning it by about a quarter
+            double value = roundValue((std::numbers::pi / 2) / k);
+            double span = std::min(value * k * kDeg, kMaxSpanDeg);
+            QPointF c = row + QPointF(-150, -5);
+            p.drawArc(QRectF(c.x() - 9, c.y() - 9, 18, 18), 180 * 16, int(-span * 16));
+            text = QStringLiteral("%1 %2 = %3\u00b0")
+                       .arg(value)
+                       .arg(vectorUnit(kind))
+                       .arg(span, 0, 'f', 0);
+        } else {
+            double value = roundValue(80 / (k * pixelsPerMetre));
+            double len = value * k * pixelsPerMetre;
+            QPointF right = row + QPointF(-110, -5), left = right - QPointF(len, 0);
+            p.drawLine(left, right);
+            p.drawLine(left + QPointF(0, -3), left + QPointF(0, 3));
+            p.drawLine(right + QPointF(0, -3), right + QPointF(0, 3));
+            text = QStringLiteral("%1 %2").arg(value).arg(vectorUnit(kind));
+        }
+        p.setPen(Qt::black);
+        p.drawText(QRectF(row.x() - 104, row.y() - 14, 104, 16), Qt::AlignLeft | Qt::AlignVCenter,
+                   vectorSymbol(kind) + QStringLiteral(": ") + text);
+        row -= QPointF(0, 18);
+    }
+    p.restore();
+}
+
+} // namespace chaplygin::ui

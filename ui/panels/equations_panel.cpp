@@ -1,0 +1,51 @@
+#include "panels/equations_panel.h"
+
+#include "document/scene_document.h"
+#include "panels/equations_html.h"
+
+#include <QScrollBar>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+namespace chaplygin::ui {
+
+EquationsPanel::EquationsPanel(SceneDocument* document, QWidget* parent)
+    : QWidget(parent), m_document(document) {
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(2, 2, 2, 2);
+    m_view = new QTextBrowser;
+    m_view->setObjectName(QStringLiteral("equationsView"));
+    layout->addWidget(m_view);
+    connect(document, &SceneDocument::solutionChanged, this, &EquationsPanel::refresh);
+}
+
+void EquationsPanel::setTime(double t) {
+    m_time = t;
+    refresh();
+}
+
+void EquationsPanel::refresh() {
+    m_stale = true;
+    // while hidden (a closed dock, a background tab) the page waits until it is shown
+    if (isVisible())
+        html();
+}
+
+QString EquationsPanel::html() {
+    if (!m_stale)
+        return m_html;
+    m_stale = false;
+    const auto& solution = m_document->solution();
+    m_html = solution ? equationsHtml(*solution, m_time) : QString();
+    int scroll = m_view->verticalScrollBar()->value();
+    m_view->setHtml(m_html);
+    m_view->verticalScrollBar()->setValue(scroll);
+    return m_html;
+}
+
+void EquationsPanel::showEvent(QShowEvent* e) {
+    QWidget::showEvent(e);
+    html();
+}
+
+} // namespace chaplygin::ui
