@@ -6,18 +6,25 @@
 #include "headless_options.h"
 #include "panels/accuracy_readout.h"
 #include "panels/methods_panel.h"
+#include "panels/sweep_panel.h"
 #include "plots/plots_panel.h"
 #include "runtime_directory.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
+#include "translations.h"
 #include "version.h"
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QDockWidget>
 #include <QFile>
+#include <QIcon>
 #include <QImage>
+#include <QLocale>
 #include <QPixmap>
+#include <QSpinBox>
 
 #include <cstdio>
 #include <exception>
@@ -34,6 +41,9 @@ void describeApplication() {
     QCoreApplication::setOrganizationName(QStringLiteral("ChaplyginLab"));
     QCoreApplication::setApplicationName(QStringLiteral("Chaplygin Lab"));
     QCoreApplication::setApplicationVersion(QStringLiteral(CHAPLYGIN_LAB_VERSION));
+    // resources/chaplygin-lab.qrc, compiled into the executable
+    QGuiApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/chaplygin-lab.svg")));
+    QGuiApplication::setDesktopFileName(QStringLiteral("io.github.chaplyginlab.ChaplyginLab"));
 }
 
 // the offscreen platform warns about window hints it cannot honour; that is not news to the user
@@ -51,6 +61,8 @@ struct ScreenshotOptions {
     bool showParameters =
         false;                ///< --panel parameters: raise the parameters dock over the path dock
     bool showMethods = false; ///< --panel methods: compute and show the work-precision diagram
+    bool showSweep = false;   ///< --panel sweep: show the Sweep dock, run --sweep if given
+    std::optional<SweepSpec> sweep;
     std::string dock;         ///< --panel notes|equations: raise that dock
     Scene scene;
 };
@@ -74,10 +86,11 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
         } else if (arg == "--panel") {
             std::string panel = value(i, arg);
             if (panel != "path" && panel != "parameters" && panel != "methods" &&
-                panel != "notes" && panel != "equations")
-                throw InputError("--panel", "expected path, parameters, methods, notes or "
+                panel != "sweep" && panel != "notes" && panel != "equations")
+                throw InputError("--panel", "expected path, parameters, methods, sweep, notes or "
                                             "equations, got '" +
                                                 panel + "'");
+            o.showSweep = panel == "sweep";
             if (panel == "notes" || panel == "equations")
                 o.dock = panel + "Dock";
             o.showParameters = panel == "parameters";
@@ -102,6 +115,7 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
         throw InputError("--screenshot", "needs the output file name");
     HeadlessOptions scene = parseHeadlessOptions(rest);
     o.scene = scene.scene;
+    o.sweep = scene.sweep;
     return o;
 }
 
@@ -124,6 +138,18 @@ int renderScreenshot(const ScreenshotOptions& o) {
         window.showMethodsDock();
         window.methodsPanel()->start();
         window.methodsPanel()->waitForFinished();
+    }
+    if (o.showSweep) {
+        window.showSweepDock();
+        if (o.sweep) {
+            SweepPanel* sweep = window.sweepPanel();
+            sweep->parameterBox()->setCurrentText(QString::fromStdString(o.sweep->parameter));
+            sweep->fromBox()->setValue(o.sweep->from);
+            sweep->toBox()->setValue(o.sweep->to);
+            sweep->countBox()->setValue(o.sweep->count);
+            sweep->start();
+            sweep->waitForFinished();
+        }
     }
     if (auto* dock = window.findChild<QDockWidget*>(QString::fromStdString(o.dock));
         dock && !o.dock.empty()) {
@@ -152,6 +178,7 @@ int runDesktop(int argc, char** argv) {
         Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
     QApplication app(argc, argv);
     describeApplication();
+    app::installTranslations(app, QLocale::system());
     // QApplication has taken its own options out; what is left is a scene file or scene options
     QStringList args = QCoreApplication::arguments().mid(1);
     MainWindow window;

@@ -89,6 +89,25 @@ double parseNumber(const std::string& text, const std::string& where) {
     return v;
 }
 
+SweepSpec parseSweepSpec(const std::string& text) {
+    auto eq = text.find('=');
+    auto parts =
+        eq == std::string::npos ? std::vector<std::string>{} : split(text.substr(eq + 1), ':');
+    if (eq == std::string::npos || eq == 0 || parts.size() != 3)
+        throw InputError("--sweep",
+                         "expects NAME=FROM:TO:COUNT, e.g. b=0.6:2.4:8, got '" + text + "'");
+    SweepSpec spec;
+    spec.parameter = trim(text.substr(0, eq));
+    spec.from = parseNumber(trim(parts[0]), "--sweep FROM");
+    spec.to = parseNumber(trim(parts[1]), "--sweep TO");
+    double count = parseNumber(trim(parts[2]), "--sweep COUNT");
+    if (count != std::floor(count) || count < 1 || count > 100000)
+        throw InputError("--sweep COUNT",
+                         "must be a whole number from 1 to 100000, got " + trim(parts[2]));
+    spec.count = static_cast<int>(count);
+    return spec;
+}
+
 HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args) {
     HeadlessOptions o;
     std::optional<std::string> preset, pathExpr, points, corners, scenePath, vT, vS;
@@ -185,6 +204,35 @@ HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args) {
         } else if (opt == "--plots") {
             once();
             o.plotsDir = value();
+        } else if (opt == "--sweep") {
+            once();
+            o.sweep = parseSweepSpec(value());
+        } else if (opt == "--animation") {
+            once();
+            o.animationPath = value();
+        } else if (opt == "--with-plots") {
+            once();
+            o.withPlots = true;
+        } else if (opt == "--fps") {
+            once();
+            double fps = parseNumber(value(), opt);
+            if (fps != std::floor(fps) || fps < 1 || fps > 120)
+                throw InputError(opt, "must be a whole number from 1 to 120");
+            o.fps = static_cast<int>(fps);
+        } else if (opt == "--size") {
+            once();
+            std::string size = value();
+            auto x = size.find('x');
+            if (x == std::string::npos)
+                throw InputError(opt, "expected WxH, e.g. 1280x720, got '" + size + "'");
+            double w = parseNumber(size.substr(0, x), opt),
+                   h = parseNumber(size.substr(x + 1), opt);
+            if (w < 64 || h < 64 || w > 7680 || h > 4320 || w != std::floor(w) ||
+                h != std::floor(h))
+                throw InputError(opt,
+                                 "width and height must be whole numbers in 64x64 ... 7680x4320");
+            o.width = static_cast<int>(w);
+            o.height = static_cast<int>(h);
         } else if (opt == "--format") {
             once();
             o.formats.clear();
@@ -274,6 +322,24 @@ HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args) {
         s.tEnd = *tEnd;
     if (o.times && o.scene.tEnd)
         throw InputError("--times", "give --times or --t-end, not both");
+    if (o.sweep && (o.workPrecision || !o.animationPath.empty()))
+        throw InputError("--sweep", "give one of --sweep, --work-precision and --animation");
+    if (o.sweep && (o.times || o.scene.tEnd))
+        throw InputError("--sweep",
+                         "runs each value over the whole path; drop --times and --t-end");
+    if (o.sweep && !o.summaryPath.empty())
+        throw InputError("--summary", "does not apply to --sweep (its rows go to --csv)");
+    if (!o.animationPath.empty() &&
+        (o.workPrecision || !o.csvPath.empty() || !o.summaryPath.empty() || !o.plotsDir.empty()))
+        throw InputError("--animation", "writes the animation alone; run --csv, --summary and "
+                                        "--plots separately");
+    if (o.animationPath.empty() && (seen.count("--fps") || seen.count("--size") || o.withPlots))
+        throw InputError(seen.count("--fps")    ? "--fps"
+                         : seen.count("--size") ? "--size"
+                                                : "--with-plots",
+                         "applies only to --animation");
+    if (o.sweep)
+        validateSweep(o.scene, *o.sweep);
     return o;
 }
 
@@ -301,6 +367,16 @@ Output:
   --work-precision                            the speed-against-accuracy sweep of every method:
                                               CSV problem,method,tolerance,error,seconds,rhs_evals,chosen;
                                               --summary names the references, --plots draws the diagram
+  --sweep NAME=FROM:TO:COUNT                  one CSV row per value of a parameter (m, a, b, I, vT,
+                                              vs, or the disk's or carriage's): NAME,duration,
+                                              max_abs_lambda,max_abs_control_couple,
+                                              max_abs_force_lateral,max_abs_control_power,
+                                              final_separation; --plots draws each column
+  --animation FILE [--fps N] [--size WxH]     the canvas from 0 to t_end in real time: FILE.gif or
+                                              FILE.mp4 (needs the ffmpeg program), or a folder of
+                                              PNG frames (FILE ending in / or without extension);
+                                              default 30 fps, 1280x720; --with-plots puts
+                                              the plots beside the canvas
 Expressions: + - * / ^ ( ), sin cos tan asin acos atan sinh cosh tanh exp sqrt abs ln log, pi, e.
 Exit status: 0 success, 2 bad input (the message names the option or the place), 1 internal failure.
 )";

@@ -1,4 +1,5 @@
 #pragma once
+#include "lab/parameter_sweep.h"
 #include "scene/scene.h"
 
 #include <optional>
@@ -7,7 +8,7 @@
 
 namespace chaplygin {
 
-/// The parsed headless command line (design.md sec. 3).
+/// The parsed headless command line (chaplygin-lab --headless --help).
 struct HeadlessOptions {
     Scene scene;
     std::optional<std::vector<double>> times; ///< --times: rows exactly at these times
@@ -15,7 +16,12 @@ struct HeadlessOptions {
     std::string csvPath, summaryPath, plotsDir;
     std::vector<std::string> formats{"png"};
     bool help = false;
-    bool workPrecision = false; ///< --work-precision: the speed-against-accuracy sweep (issue #4)
+    bool workPrecision = false;     ///< --work-precision: the speed-against-accuracy sweep
+    std::optional<SweepSpec> sweep; ///< --sweep NAME=FROM:TO:COUNT
+    std::string animationPath;      ///< --animation FILE: GIF, MP4 or a folder of PNG frames
+    int fps = 30;                   ///< --fps
+    int width = 1280, height = 720; ///< --size WxH of the animation
+    bool withPlots = false;         ///< --with-plots: the plots beside the canvas
 };
 
 /// Parses the arguments after --headless (and the scene options the screenshot mode shares).
@@ -24,6 +30,9 @@ HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args);
 
 /// Parses a whole string as a finite double; throws InputError(where) otherwise.
 double parseNumber(const std::string& text, const std::string& where);
+
+/// Parses --sweep NAME=FROM:TO:COUNT; throws InputError("--sweep").
+SweepSpec parseSweepSpec(const std::string& text);
 
 /// The usage text printed by --help.
 std::string headlessUsage();

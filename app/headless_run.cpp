@@ -2,14 +2,18 @@
 
 #include "common/atomic_file.h"
 #include "common/input_error.h"
+#include "document/scene_document.h"
 #include "headless_options.h"
+#include "lab/parameter_sweep.h"
 #include "lab/work_precision.h"
 #include "plots/plot_export.h"
+#include "plots/sweep_plot.h"
 #include "plots/work_precision_plot.h"
 #include "runtime_directory.h"
 #include "scene/csv_writer.h"
 #include "scene/solution.h"
 #include "scene/summary_json.h"
+#include "shell/animation_export.h"
 
 #include <QApplication>
 #include <QDir>
@@ -62,7 +66,8 @@ int solveScene(const HeadlessOptions& o, int argc, char** argv) {
     return 0;
 }
 
-// issue #4: the speed-against-accuracy sweep as CSV, its references as JSON, and the diagram
+// --work-precision: the speed-against-accuracy sweep as CSV, its references as JSON, and the
+// diagram
 int runWorkPrecisionLab(const HeadlessOptions& o, int argc, char** argv) {
     // bad input is reported as for a plain run; the sweep's horizon may pass the path's end
     Scene check = o.scene;
@@ -83,6 +88,42 @@ int runWorkPrecisionLab(const HeadlessOptions& o, int argc, char** argv) {
     return 0;
 }
 
+// one CSV row per value of a parameter; --plots draws each column against it
+int runSweep(const HeadlessOptions& o, int argc, char** argv) {
+    SweepReport report = runParameterSweep(o.scene, *o.sweep);
+    writeFileAtomically(o.csvPath.empty() ? "-" : o.csvPath, formatSweepCsv(report));
+    if (!o.plotsDir.empty()) {
+        prepareOffscreen();
+        QApplication app(argc, argv);
+        QString caption = (o.scene.preset.empty() ? QStringLiteral("typed scene")
+                                                  : QStringLiteral("preset ") +
+                                                        QString::fromStdString(o.scene.preset)) +
+                          QStringLiteral(", %1, %2 mode, speed %3 m/s")
+                              .arg(QString::fromStdString(systemKindName(o.scene.system.kind)),
+                                   QString::fromStdString(speedModeName(o.scene.mode)))
+                              .arg(o.scene.speed);
+        ui::exportSweep(report, caption, QString::fromStdString(o.plotsDir), formatList(o));
+    }
+    return 0;
+}
+
+// the canvas from 0 to t_end, rendered offscreen frame by frame
+int runAnimation(const HeadlessOptions& o, int argc, char** argv) {
+    Solution::compute(o.scene); // bad input is reported as for a plain run
+    prepareOffscreen();
+    QApplication app(argc, argv);
+    ui::SceneDocument document;
+    document.setSceneNow(o.scene);
+    ui::AnimationSettings settings;
+    settings.file = QString::fromStdString(o.animationPath);
+    settings.fps = o.fps;
+    settings.size = QSize(o.width, o.height);
+    settings.withPlots = o.withPlots;
+    ui::AnimationExporter exporter(&document, settings);
+    exporter.run();
+    return 0;
+}
+
 } // namespace
 
 int runHeadless(int argc, char** argv) {
@@ -93,6 +134,10 @@ int runHeadless(int argc, char** argv) {
             std::fputs(headlessUsage().c_str(), stdout);
             return 0;
         }
+        if (o.sweep)
+            return runSweep(o, argc, argv);
+        if (!o.animationPath.empty())
+            return runAnimation(o, argc, argv);
         return o.workPrecision ? runWorkPrecisionLab(o, argc, argv) : solveScene(o, argc, argv);
     } catch (const InputError& e) {
         std::fprintf(stderr, "chaplygin-lab: %s\n", e.what());

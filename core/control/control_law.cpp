@@ -24,9 +24,10 @@ namespace {
 void addForces(const ControlParams& p, ControlState& c) {
     const DerivedSystem& sys = p.system;
     const double m = sys.mass, a = sys.a;
-    // physics.md sec. 2.7, eqs. (69)-(70)
+    // docs/physics.md §2, paper (69)-(70). The lateral reaction is carried by the mass that
+    // translates (the disk's m, the carriage's M + 2m); for the sleigh it is m_eff = m.
     c.forceAxial = m * (c.sddot - a * c.phidot * c.phidot);
-    c.forceLateral = m * (c.sdot * c.phidot + a * c.phiddot);
+    c.forceLateral = sys.translatingMass * c.sdot * c.phidot + m * a * c.phiddot;
     c.torque = sys.inertia() * c.phiddot;
     c.knifeReaction = c.forceLateral;
     c.controlCouple = c.torque + a * c.knifeReaction;
@@ -52,7 +53,7 @@ ControlState controlOnCurve(const ControlParams& p, double kappa, double dkappa,
     // dPsi/ds = -b kappa_s/(1 + b^2 kappa^2)
     c.psidot = -b * dkappa * c.sdot / (1 + bk * bk);
     if (p.mode == SpeedMode::Energy) {
-        // sec. 2.6: sddot = b phidot Psidot, phiddot = -(sdot/b) Psidot
+        // docs/physics.md §2: sddot = b phidot Psidot, phiddot = -(sdot/b) Psidot
         c.sddot = b * c.phidot * c.psidot;
         c.phiddot = -(c.sdot / b) * c.psidot;
     } else {
@@ -71,7 +72,8 @@ ControlState controlOnCurve(const ControlParams& p, double kappa, double dkappa,
 ControlState controlAtPivot(const ControlParams& p, double phi, double turnSign) {
     const double m = p.system.mass, a = p.system.a, b = p.system.b;
     ControlState c;
-    // kappa -> +-inf: Psi -> 0 (left) or pi (right), sdot = 0, |phidot| = v_T/b (sec. 2.8)
+    // kappa -> +-inf (docs/physics.md §3): Psi -> 0 (left) or pi (right), sdot = 0,
+    // |phidot| = v_T/b
     c.psi = turnSign > 0 ? 0.0 : std::numbers::pi;
     c.sdot = 0;
     c.phidot = (turnSign > 0 ? 1.0 : -1.0) * p.speed / b;

@@ -6,7 +6,7 @@
 namespace chaplygin {
 
 enum class SpeedMode {
-    Energy, ///< constant kinetic energy: v_T = sqrt(2T/m_eff) fixed (sec. 4)
+    Energy, ///< constant kinetic energy: v_T = sqrt(2T/m_eff) fixed (paper sec. 4)
     Speed   ///< constant speed along the path: sdot = v_s fixed (App. C)
 };
 SpeedMode speedModeFromName(const std::string& name);
@@ -19,7 +19,7 @@ struct ControlParams {
     double speed = 1.0; ///< v_T [m/s] in Energy mode, v_s [m/s] in Speed mode
 };
 
-/// The tracking control at one point of the path (physics.md sec. 2). Units: SI.
+/// The tracking control at one point of the path (docs/physics.md §2). Units: SI.
 struct ControlState {
     double sdot = 0, phidot = 0;   ///< [m/s], [rad/s]
     double sddot = 0, phiddot = 0; ///< [m/s^2], [rad/s^2]
@@ -29,9 +29,10 @@ struct ControlState {
     double lambda = 0;             ///< m b chidot [N s/m * m = kg m/s]
     double energy = 0;             ///< kinetic energy T [J]
     double vT = 0;                 ///< sqrt(2T/m) [m/s]
-    double forceAxial = 0;         ///< F_cs = m (sddot - a phidot^2) [N]
-    double forceLateral = 0;       ///< F_cphi = m (sdot phidot + a phiddot) [N]
-    double torque = 0;             ///< S_c = I phiddot about the CM [N m]
+    double forceAxial = 0;         ///< F_cs = m (sddot - a phidot^2) [N]; M_eff sddot (a = 0)
+    double forceLateral = 0;       ///< F_cphi = m_tr sdot phidot + m a phiddot [N] (m_tr: the
+                                   ///< translating mass, docs/physics.md §2)
+    double torque = 0;             ///< S_c = I phiddot about the CM (J phiddot, carriage) [N m]
     double knifeReaction = 0;      ///< N = F_cphi, acting at P [N]
     double controlCouple = 0;      ///< tau = S_c + a N [N m]
 };

@@ -7,8 +7,8 @@
 namespace chaplygin {
 
 /// A scene where a method or a model fails, with what a lecturer should say about it
-/// ("where methods fail"). Each has a test that the failure is detected or handled. What the
-/// lecturer says is the scene's note (Markdown).
+/// ("where methods fail"), read from resources/scenes/gallery. Each has a test that the failure
+/// is detected or handled. What the lecturer says is the scene's note (Markdown).
 struct GalleryEntry {
     std::string name;      ///< short id, e.g. "cusp"
     std::string title;     ///< one line for menus

@@ -21,9 +21,9 @@ void PlannedMotion::position(double t, double* x, double* y) const {
         *y = piece.y;
         return;
     }
-    CurvePoint p = piece.table->curve().eval(loc.u);
-    *x = p.x;
-    *y = p.y;
+    PathNode n = piece.table->interpolatedAt(loc.panel, loc.xi);
+    *x = n.x;
+    *y = n.y;
 }
 
 PlannedMotion::State PlannedMotion::at(double t) const {
@@ -32,7 +32,7 @@ PlannedMotion::State PlannedMotion::at(double t) const {
     const double a = m_params.system.a, b = m_params.system.b;
     State st;
     if (piece.kind == PathPiece::Kind::Pivot) {
-        // pivot about P at |phidot| = v_T/b, Psi = 0 or pi (physics.md sec. 2.8)
+        // pivot about P at |phidot| = v_T/b, Psi = 0 or pi (docs/physics.md §3)
         const double turn = piece.phiTo - piece.phiFrom;
         const double rate = m_params.speed / b;
         st.x = piece.x;
@@ -43,7 +43,7 @@ PlannedMotion::State PlannedMotion::at(double t) const {
         st.chidot = -(a / b) * std::copysign(rate, turn);
         return st;
     }
-    PathNode n = piece.table->at(loc.u);
+    PathNode n = piece.table->interpolatedAt(loc.panel, loc.xi);
     st.x = n.x;
     st.y = n.y;
     st.phi = n.phi + piece.phiOffset;

@@ -17,7 +17,7 @@ class PlannedMotion {
 
     struct State {
         double x = 0, y = 0, phi = 0; ///< knife point P and unwrapped heading
-        double psi = 0;               ///< Psi = atan2(1, b kappa), eq. (45) as physics.md sec. 2.2
+        double psi = 0;               ///< Psi = atan2(1, b kappa), paper (45), docs/physics.md §2
         double chidot = 0;            ///< chidot = Psidot - (a/b) phidot, from eq. (33)
     };
     State at(double t) const;

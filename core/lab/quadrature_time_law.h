@@ -8,7 +8,7 @@
 namespace chaplygin {
 
 /// The time law by adaptive GSL quadrature (QAG, Gauss-Kronrod) of
-/// t(u) = \int |r'(u)| sqrt(1 + b^2 kappa^2)/v_T du (physics.md sec. 2.3, eqs. (52)-(53) corrected)
+/// t(u) = \int |r'(u)| sqrt(1 + b^2 kappa^2)/v_T du (docs/physics.md §2, paper (52)-(53) corrected)
 /// and its inversion by Newton with the exact dt/du. The tolerance bounds the quadrature's
 /// absolute error of t over the whole path; Newton converges to rounding.
 class QuadratureTimeLaw {

@@ -42,7 +42,7 @@ struct WorkPrecisionReport {
     bool cancelled = false;
 };
 
-/// The speed-against-accuracy sweep of issue #4 for one scene.
+/// The speed-against-accuracy sweep for one scene (docs/numerics.md §2).
 WorkPrecisionReport runWorkPrecision(const Scene& scene, const WorkPrecisionOptions& options = {});
 
 /// CSV with the header problem,method,tolerance,error,seconds,rhs_evals,chosen (the tolerance

@@ -4,18 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace chaplygin {
 namespace {
 
 constexpr double kTailTau = 40.0; // sech(40) < 1e-17
 
-// the Gudermannian gd(tau) = 2 atan(tanh(tau/2)) = Psi for the free sleigh
-double gd(double tau) {
-    return 2 * std::atan(std::tanh(0.5 * tau));
-}
-double sech(double tau) {
-    return 1.0 / std::cosh(tau);
+// sinh(x)/cosh(c + x) without overflow for any x and without cancellation for small x
+double sinhOverCosh(double x, double c) {
+    if (x >= 0)
+        return -std::expm1(-2 * x) / (std::exp(c) + std::exp(-c - 2 * x));
+    return std::expm1(2 * x) / (std::exp(c + 2 * x) + std::exp(-c));
 }
 
 } // namespace
@@ -38,11 +38,17 @@ FreeMotion::FreeMotion(const DerivedSystem& system, const FreeInitial& initial, 
     }
     m_case = Case::General;
     m_k = a * m_v / (b * b);
-    m_c = std::atanh(std::clamp(initial.sdot / m_v, -1.0, 1.0));
+    // tanh c = sdot0/V and sech c = b|phidot0|/V, so sinh c = sdot0/(b|phidot0|): well conditioned
+    // even when sdot0/V rounds to 1 (tiny curvature), where atanh(sdot0/V) is not
+    m_c = std::asinh(initial.sdot / (b * std::fabs(initial.phidot)));
     m_sigma = initial.phidot > 0 ? 1.0 : -1.0;
     m_beta = b / a;
-    m_psi0 = gd(m_c);
-    double tauEnd = m_k > 0 ? kTailTau : -kTailTau;
+    // past the tail the heading differs from its limit by |beta| 2 e^-|tau|; the position by
+    // about beta^2 b 2 e^-|tau|
+    double tauEnd =
+        kTailTau + 2 * std::log(std::max(1.0, std::fabs(m_beta))) + std::log(std::max(1.0, b));
+    if (m_k < 0)
+        tauEnd = -tauEnd;
     m_tail = std::max(0.0, (tauEnd - m_c) / m_k);
 
     // panels narrower than both time scales, up to the horizon or the tail
@@ -77,10 +83,13 @@ void FreeMotion::velocities(double t, double* sdot, double* phidot, double* phi)
         *phi = m_init.phi + m_init.phidot * t;
         return;
     case Case::General: {
-        double tau = m_k * t + m_c;
-        *sdot = m_v * std::tanh(tau);
-        *phidot = m_sigma * (m_v / b) * sech(tau);
-        *phi = m_init.phi + m_sigma * m_beta * (gd(tau) - m_psi0);
+        // tanh and sech from one expm1: e = exp(-|tau|) = 1 + em, tanh|tau| = (1 - e^2)/(1 + e^2),
+        // sech tau = 2e/(1 + e^2); the heading from turn(t), which does not cancel
+        const double tau = m_k * t + m_c, em = std::expm1(-std::fabs(tau)), e = 1 + em;
+        const double inv = 1 / (1 + e * e), sign = tau < 0 ? -1.0 : 1.0;
+        *sdot = sign * m_v * (-em * (2 + em)) * inv;
+        *phidot = m_sigma * (m_v / b) * (2 * e * inv);
+        *phi = m_init.phi + turn(t);
         return;
     }
     }
@@ -154,6 +163,36 @@ FreeState FreeMotion::at(double t) const {
     st.x = z.real();
     st.y = z.imag();
     return st;
+}
+
+double FreeMotion::turn(double t) const {
+    switch (m_case) {
+    case Case::Rest:
+    case Case::Line:
+        return 0;
+    case Case::Circle:
+        return m_init.phidot * t;
+    case Case::General:
+        // gd(kt + c) - gd(c) = 2 atan(sinh(kt/2)/cosh(c + kt/2)): no cancellation when beta is
+        // large (tiny a) or c is large (tiny curvature)
+        return m_sigma * m_beta * 2 * std::atan(sinhOverCosh(0.5 * m_k * t, m_c));
+    }
+    return 0;
+}
+
+double FreeMotion::totalTurn() const {
+    switch (m_case) {
+    case Case::Rest:
+    case Case::Line:
+        return 0;
+    case Case::Circle:
+        return m_init.phidot > 0 ? INFINITY : -INFINITY;
+    case Case::General:
+        // beta (+-pi/2 - gd(c)), with pi/2 - gd(c) = 2 atan(e^-c) and pi/2 + gd(c) = 2 atan(e^c)
+        return m_sigma * m_beta *
+               (m_k > 0 ? 2 * std::atan(std::exp(-m_c)) : -2 * std::atan(std::exp(m_c)));
+    }
+    return 0;
 }
 
 std::string FreeMotion::velocityModel() const {

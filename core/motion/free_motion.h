@@ -19,8 +19,9 @@ struct FreeState {
 
 /// The free (Lagrange-d'Alembert / Neimark-Fufaev) sleigh, eqs. (D12)-(D15):
 /// sddot = a phidot^2, phiddot = -a sdot phidot/b^2. Velocities and heading in closed form
-/// (physics.md sec. 1): sdot = V tanh(kt + c), phidot = sigma (V/b) sech(kt + c),
-/// phi = phi0 + sigma (b/a)(gd(kt + c) - gd(c)), k = aV/b^2, c = atanh(sdot0/V).
+/// (docs/physics.md §4): sdot = V tanh(kt + c), phidot = sigma (V/b) sech(kt + c),
+/// phi = phi0 + sigma (b/a)(gd(kt + c) - gd(c)), k = aV/b^2, c = asinh(sdot0/(b|phidot0|)),
+/// with gd(kt + c) - gd(c) = 2 atan(sinh(kt/2)/cosh(c + kt/2)) (no cancellation).
 /// Position: z = x + iy integrates sdot e^{i phi} by 8-point Gauss-Legendre panels narrower than
 /// both time scales (1/k and b/V), so it is exact to rounding; past |kt + c| > 40 the heading is
 /// constant to 1e-17 and the body moves on a straight line, also in closed form.
@@ -29,6 +30,10 @@ class FreeMotion {
     FreeMotion(const DerivedSystem& system, const FreeInitial& initial, double horizon);
     FreeState at(double t) const;
     double horizon() const { return m_horizon; }
+    /// The heading's change phi(t) - phi0 [rad], to full relative precision however small.
+    double turn(double t) const;
+    /// The heading's whole change phi(inf) - phi0 [rad] (+-inf on a uniform circle).
+    double totalTurn() const;
     /// The model used for the velocities and for the position, for the Solution's report.
     std::string velocityModel() const;
     std::string positionModel() const;
@@ -49,7 +54,7 @@ class FreeMotion {
     FreeInitial m_init;
     double m_horizon;
     Case m_case = Case::General;
-    double m_v = 0, m_k = 0, m_c = 0, m_sigma = 1, m_beta = 0, m_psi0 = 0;
+    double m_v = 0, m_k = 0, m_c = 0, m_sigma = 1, m_beta = 0;
     double m_tail = 0; // time after which the heading is constant
     std::vector<double> m_panelT;
     std::vector<std::complex<double>> m_panelZ;

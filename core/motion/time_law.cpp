@@ -3,9 +3,51 @@
 #include "common/input_error.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace chaplygin {
+namespace {
+
+constexpr double kTimeTolerance = 1e-13; // bound on t over a panel, relative to its duration
+
+// t(xi) = tau on a certified panel of duration D: Newton from the cubic Hermite inverse,
+// safeguarded by bisection. Stops once the step is below 1e-9: the error after it is of the
+// order of the step squared (quadratic convergence), below rounding.
+double solveXi(const TimeLaw::TimePanel& p, double tau, double D) {
+    const double th = std::clamp(tau / D, 0.0, 1.0), th2 = th * th, th3 = th2 * th;
+    const double m0 = D / p.rateStart, m1 = D / p.rateEnd;
+    double xi = -(2 * th3 - 3 * th2 + 1) + (-2 * th3 + 3 * th2) + (th3 - 2 * th2 + th) * m0 +
+                (th3 - th2) * m1;
+    double lo = -1, hi = 1;
+    xi = std::clamp(xi, lo, hi);
+    for (int iter = 0; iter < 60; ++iter) {
+        double fr[2];
+        cheb::evaluateMany(p.c, xi, fr);
+        const double f = fr[0] - tau;
+        (f > 0 ? hi : lo) = xi;
+        const double step = f / fr[1];
+        if (std::fabs(step) <= 1e-9)
+            return std::clamp(xi - step, -1.0, 1.0);
+        const double next = xi - step;
+        xi = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
+        if (hi - lo <= 1e-15)
+            break;
+    }
+    return xi;
+}
+
+} // namespace
+
+struct TimeLaw::Lazy {
+    explicit Lazy(std::size_t n) : panels(n), ready(new std::atomic<bool>[n]) {
+        for (std::size_t k = 0; k < n; ++k)
+            ready[k].store(false, std::memory_order_relaxed);
+    }
+    std::vector<TimePanel> panels;
+    std::unique_ptr<std::atomic<bool>[]> ready; // panels[k] is built and will not change
+    std::mutex mutex;
+};
 
 TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
     : m_path(std::move(path)), m_params(params) {
@@ -16,6 +58,9 @@ TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
     const auto& pieces = m_path->pieces();
     m_pieceStart.assign(1, 0.0);
     m_nodeTimes.resize(pieces.size());
+    m_lazy.resize(pieces.size());
+    const double b2 = params.system.b * params.system.b, invSpeed = 1 / params.speed;
+    const bool energy = params.mode == SpeedMode::Energy;
     for (std::size_t k = 0; k < pieces.size(); ++k) {
         const PathPiece& piece = pieces[k];
         double t0 = m_pieceStart.back();
@@ -25,7 +70,7 @@ TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
                     "corner at (" + formatNumber(piece.x) + ", " + formatNumber(piece.y) + ")",
                     "constant-speed mode cannot turn a corner (the kinetic energy would be "
                     "infinite); use --mode energy or --corners smooth");
-            // pivot about P: |phidot| = v_T/b, so it takes b |dphi|/v_T (sec. 2.8)
+            // pivot about P: |phidot| = v_T/b, so it takes b |dphi|/v_T (docs/physics.md §3)
             m_pieceStart.push_back(t0 + params.system.b * std::fabs(piece.phiTo - piece.phiFrom) /
                                             params.speed);
             continue;
@@ -34,22 +79,91 @@ TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
         std::vector<double>& times = m_nodeTimes[k];
         times.resize(table.nodes().size());
         times[0] = t0;
-        if (params.mode == SpeedMode::Speed) {
-            for (std::size_t i = 0; i < times.size(); ++i)
-                times[i] = t0 + table.nodes()[i].s / params.speed;
-        } else {
+        if (energy)
             m_closedForm = m_closedForm && table.uniform();
-            const double b2 = params.system.b * params.system.b;
+        if (!table.chebPanels().empty())
+            m_lazy[k] = std::make_shared<Lazy>(table.panels().size());
+        if (!energy) {
+            for (std::size_t i = 0; i < times.size(); ++i)
+                times[i] = t0 + table.nodes()[i].s * invSpeed;
+        } else {
             for (std::size_t i = 0; i < table.panels().size(); ++i) {
                 const PathTable::GaussPanel& g = table.panels()[i];
                 double dt = 0;
                 for (int j = 0; j < gauss::kPoints; ++j)
                     dt += g.weight[j] * std::sqrt(1 + b2 * g.kappa[j] * g.kappa[j]);
-                times[i + 1] = times[i] + dt / params.speed;
+                times[i + 1] = times[i] + dt * invSpeed;
             }
         }
         m_pieceStart.push_back(times.back());
     }
+}
+
+void TimeLaw::buildPanel(int piece, int k, TimePanel& tp) const {
+    const PathTable::ChebPanel& cp = m_path->pieces()[piece].table->chebPanels()[k];
+    if (!cp.certified)
+        return;
+    const bool energy = m_params.mode == SpeedMode::Energy;
+    const double b2 = m_params.system.b * m_params.system.b, invSpeed = 1 / m_params.speed;
+    // dt/dxi at the Chebyshev points, its interpolant, and the interpolant's integral
+    std::array<double, cheb::kPoints> r, a;
+    for (int j = 0; j < cheb::kPoints; ++j) {
+        const double kappa = cp.kappa[j];
+        r[j] = cp.dsdxi[j] * invSpeed * (energy ? std::sqrt(1 + b2 * kappa * kappa) : 1.0);
+    }
+    cheb::coefficients(r.data(), a.data());
+    std::array<double, cheb::kPoints + 1> F;
+    cheb::integrate(a.data(), cheb::kPoints, F.data());
+    double duration = 0;
+    for (int j = 0; j <= cheb::kPoints; ++j) {
+        tp.c[j][0] = F[j];
+        tp.c[j][1] = j < cheb::kPoints ? a[j] : 0.0;
+        duration += F[j]; // T_k(1) = 1
+    }
+    tp.rateStart = r[cheb::kDegree];
+    tp.rateEnd = r[0];
+    // \int |r - p| dxi <= 2 max |r - p|, estimated as twice the tail; and the integral over the
+    // panel against the Gauss rule on the exact values (the node times)
+    const double gaussDuration = m_nodeTimes[piece][k + 1] - m_nodeTimes[piece][k];
+    const double bound = std::max(4 * cheb::tailEstimate(a.data(), cheb::kPoints),
+                                  std::fabs(duration - gaussDuration));
+    tp.bound = bound;
+    // the node times themselves are rounded to a few ulps of t
+    const double floor = 8 * 2.220446049250313e-16 * std::fabs(m_nodeTimes[piece][k + 1]);
+    tp.certified = bound <= std::max(kTimeTolerance * duration, floor) || cp.noiseLimited;
+}
+
+const TimeLaw::TimePanel& TimeLaw::timePanel(int piece, int k) const {
+    Lazy& lazy = *m_lazy[piece];
+    if (!lazy.ready[k].load(std::memory_order_acquire)) {
+        std::lock_guard<std::mutex> lock(lazy.mutex);
+        if (!lazy.ready[k].load(std::memory_order_relaxed)) {
+            buildPanel(piece, k, lazy.panels[k]);
+            lazy.ready[k].store(true, std::memory_order_release);
+        }
+    }
+    return lazy.panels[k];
+}
+
+double TimeLaw::timeBound() const {
+    double bound = 0;
+    for (std::size_t p = 0; p < m_lazy.size(); ++p)
+        if (m_lazy[p])
+            for (std::size_t k = 0; k < m_lazy[p]->panels.size(); ++k) {
+                const TimePanel& tp = timePanel(static_cast<int>(p), static_cast<int>(k));
+                if (tp.certified)
+                    bound = std::max(bound, tp.bound);
+            }
+    return bound;
+}
+
+int TimeLaw::exactPanels() const {
+    int n = 0;
+    for (std::size_t p = 0; p < m_lazy.size(); ++p)
+        if (m_lazy[p])
+            for (std::size_t k = 0; k < m_lazy[p]->panels.size(); ++k)
+                n += timePanel(static_cast<int>(p), static_cast<int>(k)).certified ? 0 : 1;
+    return n;
 }
 
 double TimeLaw::rate(double speed, double kappa) const {
@@ -59,7 +173,7 @@ double TimeLaw::rate(double speed, double kappa) const {
     return speed * std::sqrt(1 + bk * bk) / m_params.speed;
 }
 
-double TimeLaw::timeAt(int piece, double u) const {
+double TimeLaw::timeAtExact(int piece, double u) const {
     const PathTable& table = *m_path->pieces()[piece].table;
     int k = table.panelOf(u);
     const PathNode& start = table.nodes()[k];
@@ -74,7 +188,80 @@ double TimeLaw::timeAt(int piece, double u) const {
     return t;
 }
 
+double TimeLaw::timeAt(int piece, double u) const {
+    const PathTable& table = *m_path->pieces()[piece].table;
+    int k = table.panelOf(u);
+    if (interpolated(piece)) {
+        const TimePanel& tp = timePanel(piece, k);
+        if (tp.certified) {
+            const double a = table.nodes()[k].u, b = table.nodes()[k + 1].u;
+            double f[2];
+            cheb::evaluateMany(tp.c, (2 * u - (a + b)) / (b - a), f);
+            return m_nodeTimes[piece][k] + f[0];
+        }
+    }
+    return timeAtExact(piece, u);
+}
+
+double TimeLaw::rateAt(int piece, double u) const {
+    const PathTable& table = *m_path->pieces()[piece].table;
+    int k = table.panelOf(u);
+    if (interpolated(piece)) {
+        const TimePanel& tp = timePanel(piece, k);
+        if (tp.certified) {
+            const double a = table.nodes()[k].u, b = table.nodes()[k + 1].u;
+            double f[2];
+            cheb::evaluateMany(tp.c, (2 * u - (a + b)) / (b - a), f);
+            return f[1] * 2 / (b - a);
+        }
+    }
+    if (table.uniform()) {
+        const PathNode& n = table.nodes()[k];
+        return rate(n.speed, n.kappa);
+    }
+    CurveGeometry g = geometryOf(table.curve().eval(u));
+    return rate(g.speed, g.kappa);
+}
+
+PathLocation TimeLaw::curveLocation(int piece, int panel, double u) const {
+    const PathTable& table = *m_path->pieces()[piece].table;
+    const double a = table.nodes()[panel].u, b = table.nodes()[panel + 1].u;
+    PathLocation loc;
+    loc.piece = piece;
+    loc.panel = panel;
+    loc.u = u;
+    loc.xi = std::clamp((2 * u - (a + b)) / (b - a), -1.0, 1.0);
+    return loc;
+}
+
 PathLocation TimeLaw::locate(double t) const {
+    t = std::clamp(t, 0.0, duration());
+    auto it = std::upper_bound(m_pieceStart.begin(), m_pieceStart.end() - 1, t);
+    int piece = std::clamp(static_cast<int>(it - m_pieceStart.begin()) - 1, 0,
+                           static_cast<int>(m_path->pieces().size()) - 1);
+    const PathPiece& pp = m_path->pieces()[piece];
+    if (pp.kind == PathPiece::Kind::Curve) {
+        if (interpolated(piece)) {
+            const std::vector<double>& times = m_nodeTimes[piece];
+            auto nt = std::upper_bound(times.begin(), times.end(), t);
+            int k = std::clamp(static_cast<int>(nt - times.begin()) - 1, 0,
+                               static_cast<int>(times.size()) - 2);
+            const TimePanel& tp = timePanel(piece, k);
+            if (tp.certified) {
+                const PathNode &lo = pp.table->nodes()[k], &hi = pp.table->nodes()[k + 1];
+                PathLocation loc;
+                loc.piece = piece;
+                loc.panel = k;
+                loc.xi = solveXi(tp, t - times[k], times[k + 1] - times[k]);
+                loc.u = 0.5 * (lo.u + hi.u) + 0.5 * (hi.u - lo.u) * loc.xi;
+                return loc;
+            }
+        }
+    }
+    return locateExact(t);
+}
+
+PathLocation TimeLaw::locateExact(double t) const {
     t = std::clamp(t, 0.0, duration());
     auto it = std::upper_bound(m_pieceStart.begin(), m_pieceStart.end() - 1, t);
     int piece = std::clamp(static_cast<int>(it - m_pieceStart.begin()) - 1, 0,
@@ -92,23 +279,20 @@ PathLocation TimeLaw::locate(double t) const {
     int k = std::clamp(static_cast<int>(nt - times.begin()) - 1, 0,
                        static_cast<int>(table.panels().size()) - 1);
     const PathNode &lo = table.nodes()[k], &hi = table.nodes()[k + 1];
-    if (t == times[k] || t == times[k + 1]) {
-        loc.u = t == times[k] ? lo.u : hi.u;
-        return loc;
-    }
-    if (table.uniform()) {
-        loc.u = std::clamp(lo.u + (t - times[k]) / rate(lo.speed, lo.kappa), lo.u, hi.u);
-        return loc;
-    }
+    if (t == times[k] || t == times[k + 1])
+        return curveLocation(piece, k, t == times[k] ? lo.u : hi.u);
+    if (table.uniform())
+        return curveLocation(
+            piece, k, std::clamp(lo.u + (t - times[k]) / rate(lo.speed, lo.kappa), lo.u, hi.u));
     if (m_params.mode == SpeedMode::Speed) {
-        loc.u = table.uAtArcLength((t - m_pieceStart[piece]) * m_params.speed);
-        return loc;
+        double u = table.uAtArcLength((t - m_pieceStart[piece]) * m_params.speed);
+        return curveLocation(piece, table.panelOf(u), u);
     }
     // Newton on t(u) = t with dt/du = |r'| sqrt(1 + b^2 kappa^2)/v_T, safeguarded by bisection
     double a = lo.u, b = hi.u;
     double u = a + (b - a) * (t - times[k]) / (times[k + 1] - times[k]);
     for (int iter = 0; iter < 40; ++iter) {
-        double f = timeAt(piece, u) - t;
+        double f = timeAtExact(piece, u) - t;
         (f > 0 ? b : a) = u;
         CurveGeometry g = geometryOf(table.curve().eval(u));
         double step = f / rate(g.speed, g.kappa);
@@ -118,8 +302,7 @@ PathLocation TimeLaw::locate(double t) const {
         }
         u = (u - step > a && u - step < b) ? u - step : 0.5 * (a + b);
     }
-    loc.u = u;
-    return loc;
+    return curveLocation(piece, k, u);
 }
 
 } // namespace chaplygin

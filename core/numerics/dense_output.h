@@ -8,7 +8,7 @@ namespace chaplygin {
 
 /// The solution of an ODE between its accepted steps, interpolated by quintic Hermite
 /// polynomials through y, y' = f and y'' = (df/dy) f + df/dt at both ends of each step. Integrating
-/// freely and interpolating keeps the step size the method chose (design.md sec. 4): the
+/// freely and interpolating keeps the step size the method chose (docs/numerics.md §1): the
 /// interpolation error is O(h^6), below the local error of every method here at its own step.
 using OdeValue = std::array<double, kMaxOdeDimension>;
 

@@ -6,7 +6,7 @@ namespace chaplygin {
 
 CurveGeometry geometryOf(const CurvePoint& p) {
     CurveGeometry g;
-    // kappa = N / D^{3/2}, N = x'y'' - y'x'', D = x'^2 + y'^2 (physics.md sec. 2.1)
+    // kappa = N / D^{3/2}, N = x'y'' - y'x'', D = x'^2 + y'^2 (docs/physics.md §2)
     double d = p.dx * p.dx + p.dy * p.dy;
     double n = p.dx * p.ddy - p.dy * p.ddx;
     g.speed = std::sqrt(d);

@@ -23,6 +23,9 @@ class Curve {
     virtual std::string parameterName() const = 0;
     /// Parameter values where a derivative may jump (spline knots); tabulation panels end there.
     virtual std::vector<double> breakpoints() const { return {}; }
+    /// True for a straight segment parametrised by arc length (tabulated as one closed-form
+    /// panel).
+    virtual bool straight() const { return false; }
 };
 
 /// Local geometry derived from a CurvePoint.

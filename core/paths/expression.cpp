@@ -126,7 +126,7 @@ std::string toGinacSyntax(const std::string& text) {
             }
             std::string number = text.substr(i, j - i);
             if (number.front() == '.')
-                number.insert(0, "0");
+                number = "0" + number;
             if (number.back() == '.')
                 number += '0';
             if (!fractional)

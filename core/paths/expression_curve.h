@@ -40,6 +40,7 @@ class SegmentCurve final : public Curve {
     double u0() const override { return 0; }
     double u1() const override { return m_length; }
     std::string parameterName() const override { return "s"; }
+    bool straight() const override { return true; }
 
   private:
     double m_x0, m_y0, m_cos, m_sin, m_length;

@@ -8,7 +8,7 @@
 namespace chaplygin {
 
 /// One piece of a path: a smooth tabulated curve, or a corner where the body pivots in place
-/// about the knife point, turning from phiFrom to phiTo (physics.md sec. 2.8).
+/// about the knife point, turning from phiFrom to phiTo (docs/physics.md §3).
 struct PathPiece {
     enum class Kind { Curve, Pivot };
     Kind kind = Kind::Curve;

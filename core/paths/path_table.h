@@ -1,4 +1,5 @@
 #pragma once
+#include "numerics/chebyshev.h"
 #include "numerics/gauss_legendre.h"
 #include "paths/curve.h"
 
@@ -15,9 +16,13 @@ struct PathNode {
 
 /// A smooth curve tabulated once per path change: adaptive panels in u whose ends carry the
 /// full geometry and whose Gauss nodes carry ds/du and kappa, so that any integral of kappa
-/// along the path (arc length, the time law) is a sum over stored numbers. Values between the
-/// panel ends are never interpolated: at(u) evaluates the curve exactly and integrates the
-/// arc length over the partial panel with the same Gauss rule.
+/// along the path (arc length, the time law) is a sum over stored numbers.
+/// Between the panel ends there are two ways to the geometry: at(u) evaluates the curve exactly
+/// (the reference), interpolatedAt(u) reads per-panel Chebyshev interpolants (degree 16) of x, y,
+/// phi, kappa, dkappa/ds and s, each certified at build time to a bound (tail of its
+/// coefficients and a check against the exact values at the panel's 8 Gauss nodes); a panel
+/// that cannot be certified after splitting falls back to exact evaluation. Lines and circles
+/// (uniform()) have closed-form geometry and no interpolants.
 class PathTable {
   public:
     /// Tabulates; throws InputError naming the x or u where the curve is undefined,
@@ -40,6 +45,33 @@ class PathTable {
     int panelOf(double u) const;
     /// Exact geometry at u, with s by Gauss quadrature over the partial panel.
     PathNode at(double u) const;
+    /// Geometry at u from the interpolants (closed form on uniform tables; exact evaluation on a
+    /// panel without certified interpolants).
+    PathNode interpolatedAt(double u) const;
+    /// The same at xi in [-1, 1] of panel k (u = midpoint + half width * xi).
+    PathNode interpolatedAt(int panel, double xi) const;
+
+    /// The panel's interpolants: coefficients c[k][q] of sum c_k T_k(xi) for the quantities
+    /// q = x, y, phi, kappa, dkappa/ds, s - s(panel start), ds/du, and the values of
+    /// ds/dxi = (half width) ds/du and kappa at the Chebyshev points (for the time law).
+    enum Quantity { kX, kY, kPhi, kKappa, kDkappa, kS, kSpeed, kQuantities = 8 };
+    struct ChebPanel {
+        std::array<std::array<double, kQuantities>, cheb::kPoints + 1> c{};
+        std::array<double, cheb::kPoints> dsdxi{}, kappa{};
+        bool certified = false;
+        bool noiseLimited = false; ///< bounds at the rounding noise of the exact evaluation
+        double bound = 0;          ///< the largest ratio of a bound to its tolerance
+    };
+    /// One per panel, or empty on uniform tables.
+    const std::vector<ChebPanel>& chebPanels() const { return m_cheb; }
+    /// The largest certified error bounds over all panels, and the panels left to exact
+    /// evaluation.
+    struct Bounds {
+        double position = 0, heading = 0, kappa = 0, dkappa = 0, arcLength = 0;
+        int exactPanels = 0;
+        int noisePanels = 0; ///< certified at the rounding noise of the exact evaluation
+    };
+    const Bounds& bounds() const { return m_bounds; }
     /// Geometry at the Gauss nodes of [u_k, u] in panel k (for partial integrals).
     struct Partial {
         std::array<CurveGeometry, gauss::kPoints> geometry;
@@ -54,6 +86,8 @@ class PathTable {
     std::vector<PathNode> m_nodes;
     std::vector<GaussPanel> m_panels;
     bool m_uniform = false;
+    std::vector<ChebPanel> m_cheb;
+    Bounds m_bounds;
 };
 
 } // namespace chaplygin

@@ -28,7 +28,13 @@ const std::vector<std::string>& csvColumns() {
                                                      "psidot",
                                                      "force_axial",
                                                      "force_lateral",
-                                                     "control_couple"};
+                                                     "control_couple",
+                                                     "vak_x",
+                                                     "vak_y",
+                                                     "vak_phi",
+                                                     "vak_sdot",
+                                                     "vak_phidot",
+                                                     "vak_lambda"};
     return columns;
 }
 
@@ -41,10 +47,12 @@ std::string formatCsv(const std::vector<MotionSample>& rows) {
     for (const MotionSample& m : rows) {
         const ControlState& c = m.control;
         const FreeState& f = m.free;
-        const std::array<double, 21> values = {
+        const VakonomicState& v = m.vak;
+        const std::array<double, 27> values = {
             m.t,      m.s,      m.x,      m.y,      m.phi,        c.psi,          c.chi,
             c.lambda, c.energy, f.x,      f.y,      f.phi,        f.sdot,         f.phidot,
-            f.energy, c.sdot,   c.phidot, c.psidot, c.forceAxial, c.forceLateral, c.controlCouple};
+            f.energy, c.sdot,   c.phidot, c.psidot, c.forceAxial, c.forceLateral, c.controlCouple,
+            v.x,      v.y,      v.phi,    v.sdot,   v.phidot,     v.lambda};
         for (std::size_t i = 0; i < values.size(); ++i) {
             if (!std::isfinite(values[i]))
                 throw std::runtime_error("internal error: column " + columns[i] +

@@ -6,7 +6,7 @@
 
 namespace chaplygin {
 
-/// The CSV header of the command-line contract (design.md sec. 3), columns in order.
+/// The CSV header of the command-line contract (README, Headless examples), columns in order.
 const std::vector<std::string>& csvColumns();
 
 /// The rows as CSV text with a header, full double precision. Throws std::runtime_error naming

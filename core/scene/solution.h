@@ -2,6 +2,7 @@
 #include "control/control_law.h"
 #include "motion/free_motion.h"
 #include "motion/time_law.h"
+#include "motion/vakonomic_motion.h"
 #include "paths/path.h"
 #include "scene/scene.h"
 
@@ -16,7 +17,8 @@ struct MotionSample {
     double t = 0;
     double s = 0, x = 0, y = 0, phi = 0, kappa = 0; ///< controlled body: knife point P, heading
     ControlState control;
-    FreeState free; ///< free (Lagrange-d'Alembert) body from the same initial state
+    FreeState free;     ///< free (Lagrange-d'Alembert) body from the same initial state
+    VakonomicState vak; ///< genuine vakonomic body from the same state and lambda(0)
 };
 
 /// Which model or method produced each quantity (shown by the GUI, written to --summary).
@@ -27,6 +29,7 @@ struct ModelReport {
     std::string control;      ///< Psi, chi, lambda, forces
     std::string freeVelocity; ///< free sdot, phidot, phi
     std::string freePosition; ///< free x, y
+    std::string vakonomic;    ///< the genuine vakonomic body
 };
 
 /// The control parameters of a scene: its system's (m_eff, a, b), mode and speed.
@@ -54,6 +57,8 @@ class Solution {
     MotionSample at(double t) const;
     /// The free motion alone at t (cheaper than at(t) when the controlled state is not needed).
     FreeState freeAt(double t) const { return m_free.at(t); }
+    /// The genuine vakonomic body alone at t.
+    VakonomicState vakonomicAt(double t) const { return m_vak.at(t); }
     const FreeMotion& freeMotion() const { return m_free; }
     /// count samples evenly spaced on [0, tEnd] (count >= 2).
     std::vector<MotionSample> sample(int count) const;
@@ -72,6 +77,7 @@ class Solution {
     ControlParams m_params;
     TimeLaw m_timeLaw;
     FreeMotion m_free;
+    VakonomicMotion m_vak;
     double m_tEnd = 0;
     ModelReport m_models;
 };

@@ -12,10 +12,16 @@ std::string formatSummary(const Solution& solution) {
     j["system"] = systemKindName(scene.system.kind);
     if (!scene.preset.empty())
         j["preset"] = scene.preset;
+    // a: the CM offset the control law uses (0 for the disk and the carriage); I: the inertia
+    // about the CM that goes with b (I2 for the disk, J for the carriage), docs/physics.md §1
     j["a"] = sys.a;
     j["b"] = sys.b;
     j["m_eff"] = sys.mass;
     j["I"] = sys.inertia();
+    j["m_translating"] = sys.translatingMass;
+    j["parameters"] = scene.system.params; // as given, under their own names
+    if (scene.system.kind == SystemKind::Carriage)
+        j["half_axle"] = scene.system.params.at("a");
     j["mode"] = speedModeName(scene.mode);
     j[scene.mode == SpeedMode::Energy ? "v_T" : "v_s"] = scene.speed;
     j["path_length"] = solution.path()->length();
@@ -27,7 +33,8 @@ std::string formatSummary(const Solution& solution) {
                    {"inversion", m.inversion},
                    {"control", m.control},
                    {"free_velocity", m.freeVelocity},
-                   {"free_position", m.freePosition}};
+                   {"free_position", m.freePosition},
+                   {"vakonomic", m.vakonomic}};
     return j.dump(2) + "\n";
 }
 

@@ -73,6 +73,7 @@ DerivedSystem sleigh(const SystemSpec& spec) {
     }
     if (!(d.b > 0))
         throw InputError(where("b"), "the radius of gyration must be > 0 (a = 0 needs I > 0)");
+    d.translatingMass = d.mass;
     return d;
 }
 
@@ -83,14 +84,16 @@ DerivedSystem disk(const SystemSpec& spec) {
     DerivedSystem d;
     d.mass = m + i1 / (r * r);
     d.a = 0.0;
-    d.b = r * std::sqrt(i2 / (i1 + m * r * r));
+    d.b = r * std::sqrt(i2 / (i1 + m * r * r)); // = sqrt(I2/m_eff): I about the CM is I2
+    d.translatingMass = m;
     return d;
 }
 
 // two-wheeled carriage, eq. (B18): b = sqrt(J/M_eff), M_eff = M + 2(m + I1/R^2),
-// J = I + 2 I2 + 2 a^2 (m + I1/R^2)
+// J = I + 2 I2 + 2 a^2 (m + I1/R^2). Here a is half the axle: the centre of mass sits at the
+// axle's centre (App. B), so the CM offset is 0 and b may be smaller than the half-axle.
 DerivedSystem carriage(const SystemSpec& spec) {
-    double r = positive(spec, "R"), a = get(spec, "a"), m = nonNegative(spec, "m");
+    double r = positive(spec, "R"), a = nonNegative(spec, "a"), m = nonNegative(spec, "m");
     double i1 = nonNegative(spec, "I1"), i2 = nonNegative(spec, "I2");
     double bigM = nonNegative(spec, "M"), inertia = nonNegative(spec, "I");
     double wheel = m + i1 / (r * r);
@@ -98,16 +101,13 @@ DerivedSystem carriage(const SystemSpec& spec) {
     d.mass = bigM + 2 * wheel;
     if (!(d.mass > 0))
         throw InputError("parameter M", "the total effective mass M + 2(m + I1/R^2) must be > 0");
-    d.a = a;
+    d.a = 0.0;
     double j = inertia + 2 * i2 + 2 * a * a * wheel;
     d.b = std::sqrt(j / d.mass);
     if (!(d.b > 0))
         throw InputError("parameter I",
                          "the moment of inertia J = I + 2 I2 + 2 a^2 (m + I1/R^2) must be > 0");
-    if (d.b < std::fabs(d.a))
-        throw InputError("parameter I", "b = sqrt(J/M_eff) = " + formatNumber(d.b) +
-                                            " is below |a|; "
-                                            "the carriage's own inertia cannot be that small");
+    d.translatingMass = bigM + 2 * m;
     return d;
 }
 

@@ -15,12 +15,19 @@ struct SystemSpec {
     bool operator==(const SystemSpec&) const = default;
 };
 
-/// Every Chaplygin system here reduces to a sleigh: effective mass, CM offset a, gyration radius b.
+/// Every Chaplygin system here reduces to a sleigh: effective mass, CM offset a, gyration radius b
+/// (docs/physics.md §1). The disk's and the carriage's centre of mass is above P, so their
+/// a is 0; the carriage's half-axle is a system parameter that enters only b.
 struct DerivedSystem {
     double mass = 1.0; ///< effective mass m_eff [kg]
     double a = 0.5;    ///< offset of the centre of mass ahead of the contact point [m]
-    double b = 1.0;    ///< radius of gyration about the contact point [m], b^2 = a^2 + I/m
-    double inertia() const { return mass * (b * b - a * a); } ///< I about the CM [kg m^2]
+    double b = 1.0;    ///< radius of gyration about the contact point [m], b^2 = a^2 + I/m_eff
+    /// The mass that translates with P and so carries the ground's lateral reaction [kg]: m for the
+    /// sleigh and the disk, M + 2m for the carriage (wheel spin does not resist sideways motion).
+    /// Set it whenever mass is set.
+    double translatingMass = mass;
+    /// I about the CM [kg m^2]: I for the sleigh, I2 for the disk, J for the carriage.
+    double inertia() const { return mass * (b * b - a * a); }
 };
 
 /// Maps the spec to (m_eff, a, b). Throws InputError naming the parameter when it is missing,

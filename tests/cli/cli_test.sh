@@ -54,12 +54,23 @@ summary_keys)
 disk_and_carriage)
   # uniform disk: b = R/sqrt(6), m_eff = 1.5 m
   run 0 --preset line --system disk --param m=2 --param R=0.6 --param I1=0.36 --param I2=0.18 --summary -
-  b=$(grep '"b"' "$work/out" | tr -dc '0-9.e-')
+  b=$(grep '^  "b"' "$work/out" | tr -dc '0-9.e-')
   below "$(awk -v b="$b" 'BEGIN { d = b - 0.6/sqrt(6); print (d < 0 ? -d : d) }')" 1e-15 "disk b"
   grep -q '"m_eff": 3.0' "$work/out" || fail "disk m_eff: $(grep m_eff "$work/out")"
   run 0 --preset line --system carriage --summary -
-  b=$(grep '"b"' "$work/out" | tr -dc '0-9.e-')
+  b=$(grep '^  "b"' "$work/out" | tr -dc '0-9.e-')
   below "$(awk -v b="$b" 'BEGIN { d = b - sqrt(0.2825/3.5); print (d < 0 ? -d : d) }')" 1e-15 "carriage b"
+  # the carriage's CM is the axle's centre: offset 0, I = J; its half-axle under its own name
+  grep -q '^  "a": 0.0' "$work/out" || fail "carriage CM offset: $(grep '^  "a"' "$work/out")"
+  grep -q '^  "half_axle": 0.2' "$work/out" || fail "carriage half_axle"
+  i=$(grep '^  "I"' "$work/out" | tr -dc '0-9.e-')
+  below "$(awk -v i="$i" 'BEGIN { d = i - 0.2825; print (d < 0 ? -d : d) }')" 1e-15 "carriage I = J"
+  # b = 0.3186 below the half-axle a = 0.4 runs; on a circle lambda = 0 and the free body stays on it
+  run 0 --preset circle --system carriage --param R=0.3 --param a=0.4 --param m=0.5 --param I1=0.02 \
+    --param I2=0.01 --param M=3 --param I=0.2 --times 0,1,2.5,6,12 --csv "$work/c.csv"
+  below "$(max_abs "$work/c.csv" 8 '0')" 1e-14 "carriage lambda on a circle"
+  below "$(max_abs "$work/c.csv" 10 '$3')" 1e-11 "carriage free x on the circle"
+  below "$(max_abs "$work/c.csv" 11 '$4')" 1e-11 "carriage free y on the circle"
   ;;
 speed_mode)
   run 0 --preset catenary --vs 0.5 --times 0,2,4,8 --csv "$work/c.csv"
@@ -167,7 +178,7 @@ plots_all_formats)
   done
   ;;
 work_precision)
-  # issue #4: >= 6 methods per problem, an error <= 1e-10 on both, one chosen row each, the diagram
+  # --work-precision: >= 6 methods per problem, an error <= 1e-10 on both, one chosen row each, the diagram
   run 0 --preset catenary --t-end 10 --work-precision --csv "$work/wp.csv" --summary "$work/wp.json" \
     --plots "$work/plots" --format png,svg
   head -1 "$work/wp.csv" | grep -qx 'problem,method,tolerance,error,seconds,rhs_evals,chosen' || fail "header"

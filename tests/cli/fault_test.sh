@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fault injection for output files (issue #5): fault_test.sh EXE CASE.
+# Fault injection for output files (docs/robustness.md, Writing files): fault_test.sh EXE CASE.
 # full_disk_*: a 64 KiB tmpfs in a private mount namespace, filled up; readonly_*: a directory
 # the writer may not change, as an unprivileged user (root ignores permissions).
 # Exit 77 (skipped) where the machine does not allow the namespace or the user switch.

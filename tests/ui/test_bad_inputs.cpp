@@ -1,5 +1,5 @@
-// GUI side of issue #5: bad input typed, chosen or opened through the real widgets shows an
-// inline message naming the place, keeps the last valid scene, solution and plots, and never
+// GUI side of docs/robustness.md: bad input typed, chosen or opened through the real widgets shows
+// an inline message naming the place, keeps the last valid scene, solution and plots, and never
 // opens a modal dialog; saving under faults tells the user and keeps the old file and the '*'.
 #include "canvas/scene_canvas.h"
 #include "document/scene_document.h"

@@ -1,4 +1,4 @@
-// GUI tests of issue #4 in the app: the Methods dock (work-precision in a worker thread with
+// GUI tests of the method lab in the app: the Methods dock (work-precision in a worker thread with
 // progress and cancel), the live accuracy readout, and the gallery of where methods fail.
 #include "document/scene_document.h"
 #include "gui_test_support.h"

@@ -1,5 +1,5 @@
-// The path worker (issue #5, item 8): typed paths are tabulated off the UI thread, the event loop
-// keeps running meanwhile, and the latest request wins.
+// The path worker (docs/robustness.md, In the desktop app): typed paths are tabulated off the UI
+// thread, the event loop keeps running meanwhile, and the latest request wins.
 #include "document/scene_document.h"
 #include "gui_test_support.h"
 #include "panels/path_panel.h"

@@ -73,17 +73,23 @@ void paintDisk(QPainter& p, const SystemSpec& spec, const QColor& fill, const QC
     paintCentreOfMass(p, QPointF(0, 0), 0.9 * w, ink);
 }
 
-void paintCarriage(QPainter& p, const SystemSpec& spec, const DerivedSystem& d, const QColor& fill,
-                   const QColor& ink) {
-    // the axle passes through P; its half-length is not a model parameter (schematic: 1.5 R)
+// the two wheels sit at +-a across the heading (a: half the axle, App. B)
+double halfAxle(const SystemSpec& spec) {
+    return std::max(param(spec, "a", 0.2), 0.0);
+}
+
+void paintCarriage(QPainter& p, const SystemSpec& spec, const QColor& fill, const QColor& ink) {
+    // P is the axle's centre, which is also the centre of mass (the CM offset is 0)
     double r = param(spec, "R", 0.3);
-    double half = 1.5 * r;
-    double front = std::max(d.a + 0.6 * r, 0.8 * r);
+    double half = halfAxle(spec);
+    double tw = 0.22 * r; // half the wheel's width
+    double side = std::max(half - 1.5 * tw, 0.35 * r);
+    double front = 0.9 * r;
     QPainterPath body;
-    body.moveTo(-0.4 * r, -0.8 * half);
-    body.lineTo(front, -0.45 * half);
-    body.lineTo(front, 0.45 * half);
-    body.lineTo(-0.4 * r, 0.8 * half);
+    body.moveTo(-0.5 * r, -side);
+    body.lineTo(front, -0.6 * side);
+    body.lineTo(front, 0.6 * side);
+    body.lineTo(-0.5 * r, side);
     body.closeSubpath();
     p.setPen(cosmeticPen(ink, 1.5));
     p.setBrush(fill);
@@ -92,10 +98,9 @@ void paintCarriage(QPainter& p, const SystemSpec& spec, const DerivedSystem& d, 
     p.drawLine(QPointF(0, -half), QPointF(0, half)); // axle
     p.setPen(cosmeticPen(ink, 1.2));
     p.setBrush(ink);
-    double tw = 0.22 * r;
     p.drawRect(QRectF(-r, half - tw, 2 * r, 2 * tw));
     p.drawRect(QRectF(-r, -half - tw, 2 * r, 2 * tw));
-    paintCentreOfMass(p, QPointF(d.a, 0), 0.18 * r, ink);
+    paintCentreOfMass(p, QPointF(0, 0), 0.18 * r, ink);
 }
 
 } // namespace
@@ -107,7 +112,7 @@ double bodyExtent(const SystemSpec& spec, const DerivedSystem& derived) {
     case SystemKind::Disk:
         return 1.4 * param(spec, "R", 0.5);
     case SystemKind::Carriage:
-        return std::abs(derived.a) + 2 * param(spec, "R", 0.3);
+        return std::hypot(param(spec, "R", 0.3), halfAxle(spec) + 0.22 * param(spec, "R", 0.3));
     }
     return 1;
 }
@@ -133,7 +138,7 @@ void paintBody(QPainter& painter, const SystemSpec& spec, const DerivedSystem& d
         paintDisk(painter, spec, fill, ink);
         break;
     case SystemKind::Carriage:
-        paintCarriage(painter, spec, derived, fill, ink);
+        paintCarriage(painter, spec, fill, ink);
         break;
     }
     painter.restore();

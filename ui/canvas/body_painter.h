@@ -14,7 +14,8 @@ struct BodyPose {
 
 /// Draws the body to scale in world coordinates (the painter maps metres to pixels, y up):
 /// the sleigh as an elliptical board with its knife edge at P and its centre of mass at
-/// P + a s-hat; the disk seen from above; the carriage with two wheels on an axle through P.
+/// P + a s-hat; the disk seen from above; the carriage with its two wheels at +-a (its half-axle)
+/// across the heading on an axle through P, its centre of mass.
 /// ghost draws it translucent, for the free motion.
 void paintBody(QPainter& painter, const SystemSpec& spec, const DerivedSystem& derived,
                const BodyPose& pose, const QColor& color, bool ghost);

@@ -21,7 +21,7 @@ struct AccuracyValues {
     double freeDrift = 0;                  ///< |T - T0|/T0 of the free motion
 };
 
-/// The live accuracy readout beside the animation (issue #4): at the shown time, the
+/// The live accuracy readout beside the animation: at the shown time, the
 /// controlled body's distance from the prescribed path at the same arc length, its error
 /// against the paper's closed form where one exists, the energy drift of the controlled and
 /// the free motion, the models and methods in use, and a note (a gallery scene's explanation).

@@ -1,6 +1,7 @@
 #include "panels/methods_panel.h"
 
 #include "common/input_error.h"
+#include "document/job_runner.h"
 #include "document/scene_document.h"
 #include "plots/work_precision_plot.h"
 
@@ -13,7 +14,6 @@
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 
 #include <exception>
 
@@ -35,7 +35,7 @@ QString settingText(const WorkPrecisionRow& r) {
 } // namespace
 
 MethodsPanel::MethodsPanel(SceneDocument* document, QWidget* parent)
-    : QWidget(parent), m_document(document) {
+    : QWidget(parent), m_document(document), m_runner(new JobRunner(this)) {
     m_run = new QPushButton(tr("Compute work-precision"));
     m_run->setToolTip(tr("Sweep every method's tolerances and step sizes for the current scene "
                          "(Ctrl+Shift+W)"));
@@ -94,15 +94,18 @@ MethodsPanel::MethodsPanel(SceneDocument* document, QWidget* parent)
 
     connect(m_run, &QPushButton::clicked, this, &MethodsPanel::start);
     connect(m_cancel, &QPushButton::clicked, this, &MethodsPanel::cancel);
-    connect(&m_watcher, &QFutureWatcherBase::finished, this, &MethodsPanel::onFinished);
+    connect(m_runner, &JobRunner::progress, this, &MethodsPanel::onProgress);
+    connect(m_runner, &JobRunner::finished, this, &MethodsPanel::onFinished);
     connect(m_document, &SceneDocument::solutionChanged, this, &MethodsPanel::onSceneChanged);
 }
 
 MethodsPanel::~MethodsPanel() {
-    m_watcher.disconnect(this);
-    if (m_stop)
-        m_stop->store(true);
-    m_watcher.waitForFinished();
+    // the runner (a child) cancels and waits for the worker when it is destroyed
+    m_runner->disconnect(this);
+}
+
+bool MethodsPanel::isRunning() const {
+    return m_runner->isRunning();
 }
 
 QString MethodsPanel::statusText() const {
@@ -114,40 +117,32 @@ void MethodsPanel::start() {
         return;
     m_runScene = m_document->solution()->scene();
     m_cancelReason.clear();
-    m_stop = std::make_shared<std::atomic<bool>>(false);
-    const quint64 run = ++m_runId;
-    m_running = true;
+    m_outcome = std::make_shared<Outcome>();
     m_progress->setRange(0, 1);
     m_progress->setValue(0);
     m_run->setEnabled(false);
     m_cancel->setEnabled(true);
     m_status->setText(tr("Sweeping the methods in a worker thread\u2026"));
-    // the worker owns a copy of the scene and builds its own path; progress is queued to this
-    // thread, and the destructor waits for the worker, so `this` outlives every call
-    m_watcher.setFuture(QtConcurrent::run([this, run, scene = m_runScene, stop = m_stop] {
-        Outcome out;
+    // the worker owns a copy of the scene and builds its own path
+    m_runner->start([scene = m_runScene, out = m_outcome](const std::atomic<bool>& stop,
+                                                          const JobRunner::Progress& progress) {
         WorkPrecisionOptions options;
-        options.cancel = stop.get();
-        options.progress = [this, run](int done, int total) {
-            QMetaObject::invokeMethod(
-                this, [this, run, done, total] { onProgress(run, done, total); },
-                Qt::QueuedConnection);
-        };
+        options.cancel = &stop;
+        options.progress = progress;
         try {
-            out.report = runWorkPrecision(scene, options);
+            out->report = runWorkPrecision(scene, options);
         } catch (const InputError& e) {
-            out.error = QString::fromStdString(e.what());
+            out->error = QString::fromStdString(e.what());
         } catch (const std::exception& e) {
-            out.error = QStringLiteral("internal error: %1").arg(QString::fromUtf8(e.what()));
+            out->error = QStringLiteral("internal error: %1").arg(QString::fromUtf8(e.what()));
         }
-        return out;
-    }));
+    });
 }
 
 void MethodsPanel::cancel() {
-    if (!isRunning() || !m_stop)
+    if (!isRunning())
         return;
-    m_stop->store(true);
+    m_runner->cancel();
     if (m_cancelReason.isEmpty())
         m_cancelReason = tr("cancelled");
     m_cancel->setEnabled(false);
@@ -155,16 +150,10 @@ void MethodsPanel::cancel() {
 }
 
 void MethodsPanel::waitForFinished() {
-    if (!isRunning())
-        return;
-    m_watcher.waitForFinished();
-    QCoreApplication::sendPostedEvents(this);
-    onFinished();
+    m_runner->waitForFinished();
 }
 
-void MethodsPanel::onProgress(quint64 run, int done, int total) {
-    if (run != m_runId || !isRunning())
-        return; // a late report of a finished sweep
+void MethodsPanel::onProgress(int done, int total) {
     m_progress->setRange(0, std::max(total, 1));
     m_progress->setValue(done);
 }
@@ -177,10 +166,10 @@ void MethodsPanel::onSceneChanged() {
 }
 
 void MethodsPanel::onFinished() {
-    if (!m_running)
-        return; // already shown by waitForFinished
-    m_running = false;
-    Outcome out = m_watcher.result();
+    if (!m_outcome)
+        return;
+    Outcome out = std::move(*m_outcome);
+    m_outcome.reset();
     m_run->setEnabled(true);
     m_cancel->setEnabled(false);
     if (!out.error.isEmpty()) {

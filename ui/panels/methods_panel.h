@@ -2,7 +2,6 @@
 #include "lab/work_precision.h"
 #include "scene/scene.h"
 
-#include <QFutureWatcher>
 #include <QString>
 #include <QWidget>
 
@@ -18,9 +17,10 @@ class QTableWidget;
 
 namespace chaplygin::ui {
 
+class JobRunner;
 class SceneDocument;
 
-/// The Methods dock (issue #4): the work-precision diagram of the current scene, computed on
+/// The Methods dock: the work-precision diagram of the current scene, computed on
 /// demand in a worker thread with a progress bar and a Cancel button; then the references and
 /// the app's chosen configurations, each marked on or off the Pareto front. A scene change while
 /// the sweep runs cancels it.
@@ -31,7 +31,7 @@ class MethodsPanel : public QWidget {
     /// Cancels a running sweep and waits for the worker (it stops after its configuration).
     ~MethodsPanel() override;
 
-    bool isRunning() const { return m_running; }
+    bool isRunning() const;
     /// The last finished sweep (complete or cancelled), if any.
     const std::optional<WorkPrecisionReport>& report() const { return m_report; }
     QCustomPlot* plot() const { return m_plot; }
@@ -58,7 +58,7 @@ class MethodsPanel : public QWidget {
         WorkPrecisionReport report;
         QString error;
     };
-    void onProgress(quint64 run, int done, int total);
+    void onProgress(int done, int total);
     void onFinished();
     void onSceneChanged();
     void showReport(const WorkPrecisionReport& report);
@@ -74,10 +74,8 @@ class MethodsPanel : public QWidget {
     std::optional<WorkPrecisionReport> m_report;
     Scene m_runScene;
     QString m_cancelReason;
-    quint64 m_runId = 0;
-    bool m_running = false; // from start() until its result is shown
-    std::shared_ptr<std::atomic<bool>> m_stop;
-    QFutureWatcher<Outcome> m_watcher;
+    JobRunner* m_runner;                // the worker, shared with the other long jobs
+    std::shared_ptr<Outcome> m_outcome; // filled by the running job
 };
 
 } // namespace chaplygin::ui

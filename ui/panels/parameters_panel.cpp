@@ -27,7 +27,13 @@ struct ParamInfo {
     double lo, hi; // slider range; the spin box accepts more
 };
 
-ParamInfo paramInfo(const std::string& name) {
+ParamInfo paramInfo(SystemKind kind, const std::string& name) {
+    if (kind == SystemKind::Carriage && name == "a") // App. B: a is half the axle, not an offset
+        return {"half-axle a (wheels at \u00b1a across the heading)", "m", 0, 2};
+    if (kind == SystemKind::Carriage && name == "m")
+        return {"wheel mass m", "kg", 0, 10};
+    if (kind == SystemKind::Carriage && name == "I")
+        return {"body's moment of inertia I about the axle's centre", "kg m\u00b2", 0, 10};
     if (name == "m")
         return {"mass m", "kg", 0.05, 10};
     if (name == "a")
@@ -177,7 +183,7 @@ void ParametersPanel::rebuildRows() {
         auto it = m_scene.system.params.find(name);
         if (it == m_scene.system.params.end())
             continue; // the sleigh has b or I, not both
-        ParamInfo info = paramInfo(name);
+        ParamInfo info = paramInfo(m_scene.system.kind, name);
         QString qname = QString::fromStdString(name);
         m_rows[qname] = addRow(qname, qname, QString::fromUtf8(info.label),
                                QString::fromUtf8(info.unit), info.lo, info.hi, it->second);
@@ -215,7 +221,7 @@ void ParametersPanel::setScene(const Scene& scene) {
                                                        : scene.system.params.at(name.toStdString());
             if (row.spin->value() != v) {
                 row.spin->setValue(v);
-                ParamInfo info = paramInfo(name.toStdString());
+                ParamInfo info = paramInfo(m_scene.system.kind, name.toStdString());
                 if (name == QStringLiteral("speed"))
                     info = {"", "", 0.05, 5};
                 row.slider->setValue(toSlider(v, info.lo, info.hi));
@@ -229,11 +235,12 @@ void ParametersPanel::setScene(const Scene& scene) {
 void ParametersPanel::updateDerived() {
     try {
         DerivedSystem d = deriveSystem(m_scene.system);
-        m_derived->setText(tr("m_eff = %1 kg, a = %2 m, b = %3 m, I = %4 kg m\u00b2")
-                               .arg(d.mass, 0, 'g', 5)
-                               .arg(d.a, 0, 'g', 5)
-                               .arg(d.b, 0, 'g', 5)
-                               .arg(d.inertia(), 0, 'g', 5));
+        m_derived->setText(
+            tr("m_eff = %1 kg, CM offset = %2 m, b = %3 m, I about the CM = %4 kg m\u00b2")
+                .arg(d.mass, 0, 'g', 5)
+                .arg(d.a, 0, 'g', 5)
+                .arg(d.b, 0, 'g', 5)
+                .arg(d.inertia(), 0, 'g', 5));
     } catch (const InputError&) {
         m_derived->setText(tr("(no valid system)"));
     }

@@ -8,7 +8,7 @@ class QCustomPlot;
 
 namespace chaplygin::ui {
 
-/// The work-precision diagram (issue #4): error against seconds per solve, log-log, one series
+/// The work-precision diagram: error against seconds per solve, log-log, one series
 /// per method, controlled and free motion side by side; the app's chosen configuration is a star.
 void drawWorkPrecision(QCustomPlot& plot, const WorkPrecisionReport& report);
 

@@ -4,7 +4,7 @@
 
 namespace chaplygin::ui {
 
-/// The Gallery menu (issue #4, "where methods fail"): one action per galleryEntries() entry,
+/// The Gallery menu ("where methods fail"): one action per galleryEntries() entry,
 /// by title, in the core's order; the scene's note is the status tip.
 class GalleryMenu : public QMenu {
     Q_OBJECT

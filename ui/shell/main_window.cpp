@@ -12,10 +12,12 @@
 #include "panels/methods_panel.h"
 #include "panels/parameters_panel.h"
 #include "panels/path_panel.h"
+#include "panels/sweep_panel.h"
 #include "plots/plot_export.h"
 #include "plots/plots_panel.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
+#include "shell/animation_dialog.h"
 #include "shell/gallery_menu.h"
 #include "shell/instruments.h"
 #include "shell/playback.h"
@@ -84,6 +86,12 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     m_methodsDock->setWidget(m_methods);
     addDockWidget(Qt::BottomDockWidgetArea, m_methodsDock);
     tabifyDockWidget(m_plotsDock, m_methodsDock);
+    m_sweep = new SweepPanel(m_document);
+    m_sweepDock = new QDockWidget(tr("Sweep"), this);
+    m_sweepDock->setObjectName(QStringLiteral("sweepDock"));
+    m_sweepDock->setWidget(m_sweep);
+    addDockWidget(Qt::BottomDockWidgetArea, m_sweepDock);
+    tabifyDockWidget(m_methodsDock, m_sweepDock);
     m_plotsDock->raise();
     m_accuracy = new AccuracyReadout(m_document);
     m_accuracyDock = makeDock(tr("Accuracy"), QStringLiteral("accuracyDock"), m_accuracy, this);
@@ -132,6 +140,7 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
                 setPath(s, tr("Edit the drawn path"), false);
             });
     connect(m_parameters, &ParametersPanel::sceneEdited, this, &MainWindow::onParametersEdited);
+    connect(m_sweep, &SweepPanel::sceneEdited, this, &MainWindow::onParametersEdited);
     installInstruments(this);
 
     bool restored = false;
@@ -176,6 +185,7 @@ void MainWindow::buildMenus() {
                     &MainWindow::exportPlotsDialog);
     file->addAction(tr("Export &CSV\u2026"), QKeySequence(tr("Ctrl+Shift+E")), this,
                     &MainWindow::exportCsvDialog);
+    file->addAction(tr("Export &animation\u2026"), this, &MainWindow::exportAnimationDialog);
     file->addSeparator();
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -194,6 +204,7 @@ void MainWindow::buildMenus() {
     view->addAction(m_plotsDock->toggleViewAction());
     view->addAction(m_methodsDock->toggleViewAction());
     view->addAction(m_accuracyDock->toggleViewAction());
+    view->addAction(m_sweepDock->toggleViewAction());
     view->addAction(m_timeline->toggleViewAction());
     view->addSeparator();
     view->addAction(tr("&Fit scene"), QKeySequence(tr("Ctrl+0")), m_canvas, &SceneCanvas::fitScene);
@@ -519,6 +530,34 @@ void MainWindow::exportCsvDialog() {
     QString path = QFileDialog::getSaveFileName(this, tr("Export CSV"), {}, tr("CSV (*.csv)"));
     if (!path.isEmpty())
         exportCsvTo(path);
+}
+
+void MainWindow::showSweepDock() {
+    m_sweepDock->show();
+    m_sweepDock->raise();
+    resizeDocks({m_sweepDock}, {std::max(300, height() * 2 / 5)}, Qt::Vertical);
+}
+
+void MainWindow::exportAnimationDialog() {
+    AnimationSettings initial;
+    initial.speedFactor = m_playback->speedFactor();
+    AnimationDialog dialog(initial, this);
+    if (dialog.exec() == QDialog::Accepted)
+        exportAnimationTo(dialog.settings());
+}
+
+bool MainWindow::exportAnimationTo(const AnimationSettings& settings) {
+    QString error;
+    m_lastFileError.clear();
+    if (exportAnimationWithProgress(this, m_document, settings, &error)) {
+        statusBar()->showMessage(tr("Wrote %1").arg(settings.file), 5000);
+        return true;
+    }
+    if (error.isEmpty())
+        statusBar()->showMessage(tr("Animation export cancelled"), 5000);
+    else
+        showFileError(error);
+    return false;
 }
 
 void MainWindow::showFileError(const QString& message) {

@@ -21,7 +21,9 @@ class Playback;
 class PlotsPanel;
 class SceneCanvas;
 class SceneDocument;
+class SweepPanel;
 class TimelineBar;
+struct AnimationSettings;
 
 /// The Chaplygin Lab window: the scene canvas in the centre, path, parameters and plots docks,
 /// the timeline toolbar, and the File, Edit, View and Help menus. Every path and parameter
@@ -45,13 +47,21 @@ class MainWindow : public QMainWindow {
     bool saveFile(const QString& path);
     bool exportPlotsTo(const QString& dir, const QStringList& formats);
     bool exportCsvTo(const QString& path);
+    /// Writes the animation with a progress dialog; false when cancelled or failed (the
+    /// reason in lastFileError(), empty when cancelled).
+    bool exportAnimationTo(const AnimationSettings& settings);
+    /// File > Export animation: the settings dialog, then exportAnimationTo.
+    void exportAnimationDialog();
+    SweepPanel* sweepPanel() const { return m_sweep; }
+    /// Shows and raises the Sweep dock.
+    void showSweepDock();
 
     /// Gives the canvas most of the window, the plots dock a third of the height.
     void balanceDocks();
     /// Shows and raises the parameters dock (over the path dock when they share tabs).
     void showParametersDock();
 
-    /// Loads a gallery scene (issue #4) as one undo step and shows its explanation beside the
+    /// Loads a gallery scene as one undo step and shows its explanation beside the
     /// animation; a scene the core refuses keeps the current one and shows the refusal.
     /// Returns whether the scene was loaded. Throws InputError for unknown names.
     bool loadGalleryEntry(const QString& name);
@@ -115,6 +125,8 @@ class MainWindow : public QMainWindow {
     QDockWidget* m_plotsDock;
     QDockWidget* m_methodsDock;
     QDockWidget* m_accuracyDock;
+    SweepPanel* m_sweep;
+    QDockWidget* m_sweepDock;
     std::optional<Scene> m_noteScene; // the scene the accuracy dock's note is about
     QMenu* m_recentMenu = nullptr;
     QAction* m_followAction = nullptr;

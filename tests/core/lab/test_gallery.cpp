@@ -1,4 +1,4 @@
-// The gallery of issue #4 item 4 (core-only cases): where methods fail, each failure detected.
+// The gallery (docs/numerics.md §4, core-only cases): where methods fail, each failure detected.
 #include "lab/sleigh_problems.h"
 #include "lab/vakonomic_problem.h"
 #include "numerics/fixed_step.h"

@@ -1,5 +1,6 @@
-// The gallery of issue #4: each scene's failure is detected (a refusal that names the place) or
-// handled (the app's answer stays exact), and the paper's printed branch fails as described.
+// The gallery (resources/scenes/gallery): each scene's failure is detected (a refusal that names
+// the place) or handled (the app's answer stays exact), and the paper's printed branch fails as
+// described.
 #include "common/input_error.h"
 #include "control/printed_branch.h"
 #include "lab/gallery.h"

@@ -9,7 +9,7 @@
 namespace chaplygin {
 namespace {
 
-// the done-when of issue #4: catenary, t_end = 10
+// the measured case of docs/numerics.md §2: catenary, t_end = 10
 class CatenaryWorkPrecision : public ::testing::Test {
   protected:
     static void SetUpTestSuite() {

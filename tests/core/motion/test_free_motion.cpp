@@ -69,7 +69,7 @@ TEST(FreeMotion, NegativeOffsetEndsMovingBackwards) {
 }
 
 TEST(FreeMotion, HypergeometricClosedFormForBetaTwo) {
-    // b/a = 2: G(th) = -cos(2th)/2 + ln cos th + i(th - sin(2th)/2) (physics.md sec. 1)
+    // b/a = 2: G(th) = -cos(2th)/2 + ln cos th + i(th - sin(2th)/2) (docs/physics.md §4)
     const double a = 0.5, b = 1.0, beta = 2;
     FreeInitial init{0, 0, 0.3, 0.2, 0.8};
     FreeMotion free({1.0, a, b}, init, 30);
@@ -127,6 +127,113 @@ TEST(FreeMotion, StartsFromTheControlledState) {
     EXPECT_NEAR(start.free.energy, start.control.energy, 1e-15);
 }
 
+// The two ill-conditioned cases, tiny offset (b/a = 1e9) and tiny initial curvature (kappa0 = 1e-7
+// and 1e-9, below where c = atanh(sdot0/V) is lost), against a 60-digit mpmath reference:
+// tests/core/motion/free_motion_reference.py prints these rows (t, x, y, phi - phi0, sdot, phidot).
+namespace {
+
+struct PrecisionCase {
+    double a, b;
+    FreeInitial init;
+    double totalTurn;
+    double rows[4][6];
+};
+
+const PrecisionCase kPrecisionCases[] = {
+    // tiny offset: a = 1e-09, b = 1.0, initial (0.3, -0.2, 0.4, 0.6, 0.9)
+    {1e-9,
+     1.0,
+     {0.3, -0.2, 0.4, 0.6, 0.9},
+     982793723.24732903524,
+     {
+         {0.5, 0.54124137530261535688, -0.025948101194838419412, 0.44999999993250001109,
+          0.60000000040499997767, 0.89999999973000002215},
+         {2.0, 0.57938537468595924408, 0.80637474239214095531, 1.7999999989200000439,
+          0.60000000161999997585, 0.89999999892000002139},
+         {10.0, 0.056904737638604746609, 1.0805027027154062196, 8.9999999730000001545,
+          0.6000000080999999292, 0.89999999460000000195},
+         {30.0, 0.5517988051360324868, 0.84171255744168564206, 26.999999756999998844,
+          0.6000000242999995404, 0.89999998379999983995},
+     }},
+    // tiny offset backwards: a = -1e-09, b = 0.8, initial (0.0, 0.0, -1.0, -0.4, -1.3)
+    {-1e-9,
+     0.8,
+     {0.0, 0.0, -1.0, -0.4, -1.3},
+     -962897994.38134193128,
+     {
+         {0.5, -0.047813551926317157066, 0.19059175241391909925, -0.64999999989843752214,
+          -0.40000000084500002194, -1.299999999593750044},
+         {2.0, 0.39507428809209439614, 0.44217253133220411385, -2.5999999983750000849,
+          -0.40000000338000001798, -1.2999999983750000386},
+         {10.0, -0.045888126729499097718, 0.12417385887431345496, -12.999999959374999957,
+          -0.40000001689999991658, -1.2999999918749998982},
+         {30.0, 0.029648454329013474385, 0.37145852054409548878, -38.99999963437498817,
+          -0.40000005069999907158, -1.2999999756249987282},
+     }},
+    // curvature 1e-7: a = 0.5, b = 1.0, initial (0.0, 0.0, 0.1, 1.0, 1e-07)
+    {0.5,
+     1.0,
+     {0.0, 0.0, 0.1, 1.0, 1e-7},
+     1.9999999999999932428e-7,
+     {
+         {0.5, 0.49750208148890100973, 0.049916719786173762502, 4.4239843385719020511e-8,
+          1.0000000000000019673, 7.7880078307140462559e-8},
+         {2.0, 1.9900083158653858788, 0.19966697971028672543, 1.2642411176571142341e-7,
+          1.0000000000000043233, 3.6787944117144126078e-8},
+         {10.0, 9.9500414927776270518, 0.99833576115665061707, 1.9865241060018226798e-7,
+          1.0000000000000049998, 6.7379469990853151872e-10},
+         {30.0, 29.850124399273234502, 2.9950080714282526073, 1.9999993881953522392e-7,
+          1.000000000000005, 3.0590232050180359661e-14},
+     }},
+    // curvature 1e-9: a = 0.5, b = 1.0, initial (1.0, 2.0, -0.3, 1.0, -1e-09)
+    {0.5,
+     1.0,
+     {1.0, 2.0, -0.3, 1.0, -1e-9},
+     -2.0000000000000001239e-9,
+     {
+         {0.5, 1.477668244528758158, 1.8522398965592724618, -4.4239843385719029106e-10,
+          1.0000000000000000002, -7.7880078307140491673e-10},
+         {2.0, 2.9106729778163488118, 1.408959585271526256, -1.2642411176571154354e-9,
+          1.0000000000000000004, -3.678794411714423444e-10},
+         {10.0, 10.553364886519772116, -0.9552020819245274947, -1.9865241060018291889e-9,
+          1.0000000000000000005, -6.7379469990854675011e-12},
+         {30.0, 29.660094657219048715, -6.8656062533390314833, -1.9999993881953591202e-9,
+          1.0000000000000000005, -3.0590232050182580521e-16},
+     }},
+};
+
+void checkPrecisionCase(const PrecisionCase& pc) {
+    FreeMotion free({1.0, pc.a, pc.b}, pc.init, 30);
+    EXPECT_NEAR(free.totalTurn(), pc.totalTurn, 1e-12 * std::fabs(pc.totalTurn));
+    for (const auto& row : pc.rows) {
+        FreeState s = free.at(row[0]);
+        EXPECT_NEAR(s.x, row[1], 1e-12) << "t = " << row[0];
+        EXPECT_NEAR(s.y, row[2], 1e-12) << "t = " << row[0];
+        EXPECT_NEAR(free.turn(row[0]), row[3], 1e-12 * std::fabs(row[3])) << "t = " << row[0];
+        EXPECT_NEAR(s.phi, pc.init.phi + row[3], 1e-15 * (1 + std::fabs(s.phi))) << row[0];
+        EXPECT_NEAR(s.sdot, row[4], 1e-12 * std::fabs(row[4])) << "t = " << row[0];
+        EXPECT_NEAR(s.phidot, row[5], 1e-12 * std::fabs(row[5])) << "t = " << row[0];
+    }
+}
+
+} // namespace
+
+TEST(FreeMotion, TinyOffsetHasNoCancellation) {
+    checkPrecisionCase(kPrecisionCases[0]);
+    checkPrecisionCase(kPrecisionCases[1]);
+}
+
+TEST(FreeMotion, TinyInitialCurvatureKeepsItsTurn) {
+    checkPrecisionCase(kPrecisionCases[2]);
+    checkPrecisionCase(kPrecisionCases[3]);
+}
+
+TEST(FreeMotion, LongHorizonWithLargeRatioStaysFinite) {
+    // sinh(kt/2) and cosh(c + kt/2) both overflow here; the heading must not become NaN
+    FreeMotion free({1.0, 0.5, 1.0}, {0, 0, 0, 0.1, 1.0}, 10);
+    FreeState far = free.at(3000);
+    EXPECT_TRUE(std::isfinite(far.phi) && std::isfinite(far.x));
+    EXPECT_NEAR(far.phi, free.totalTurn(), 1e-14);
 TEST(FreeMotion, ConstantsAreThoseOfTheClosedForm) {
     // the Equations panel shows V, k and c: they reproduce the motion's velocities
     DerivedSystem sys{1.0, 0.5, 1.0};

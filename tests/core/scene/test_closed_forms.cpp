@@ -47,7 +47,7 @@ TEST(ClosedForms, CircleFollowsEqs89To96) {
                     1e-12);                                   // (96)
         EXPECT_NEAR(s.control.lambda, -m * a * omega, 1e-14); // lambda = -m a phidot on a circle
         EXPECT_NEAR(s.control.energy, 0.5 * m * vT * vT, 1e-13);
-        // workless control: f_s sdot + tau phidot = 0 (physics.md sec. 1)
+        // workless control: f_s sdot + tau phidot = 0 (docs/physics.md §2)
         EXPECT_NEAR(s.control.forceAxial * s.control.sdot +
                         s.control.controlCouple * s.control.phidot,
                     0, 1e-13);

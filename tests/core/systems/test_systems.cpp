@@ -55,6 +55,33 @@ TEST(Systems, CarriageB18) {
     EXPECT_NEAR(d.mass, 3.5, 1e-15);
     EXPECT_NEAR(d.b, std::sqrt(j / meff), 1e-15);
     EXPECT_NEAR(d.b, std::sqrt((0.2 + 0.0225 + 0.06) / 3.5), 1e-15);
+    // the centre of mass is at the axle's centre: the half-axle a is not an offset
+    EXPECT_EQ(d.a, 0.0);
+    EXPECT_NEAR(d.inertia(), 0.2825, 1e-15); // J
+    EXPECT_EQ(d.translatingMass, bigM + 2 * m);
+}
+
+TEST(Systems, CarriageWithGyrationRadiusBelowHalfAxle) {
+    // J = 0.2 + 0.02 + 2 (0.16)(0.5 + 0.02/0.09), M_eff = 3 + 2 (0.5 + 0.02/0.09): b = 0.3186 < a
+    DerivedSystem d = deriveSystem(spec(
+        SystemKind::Carriage,
+        {{"R", 0.3}, {"a", 0.4}, {"m", 0.5}, {"I1", 0.02}, {"I2", 0.01}, {"M", 3.0}, {"I", 0.2}}));
+    double wheel = 0.5 + 0.02 / 0.09, j = 0.22 + 0.32 * wheel, meff = 3 + 2 * wheel;
+    EXPECT_NEAR(d.b, std::sqrt(j / meff), 1e-15);
+    EXPECT_NEAR(d.b, 0.31859064644147983668, 1e-15);
+    EXPECT_LT(d.b, 0.4);
+    EXPECT_EQ(d.a, 0.0);
+    EXPECT_NEAR(d.inertia(), j, 1e-15);
+    EXPECT_NEAR(d.translatingMass, 4.0, 1e-15);
+}
+
+TEST(Systems, DiskInertiaAboutTheCentreIsI2) {
+    DerivedSystem d =
+        deriveSystem(spec(SystemKind::Disk, {{"m", 2.0}, {"R", 0.6}, {"I1", 0.36}, {"I2", 0.18}}));
+    EXPECT_NEAR(d.inertia(), 0.18, 1e-15);
+    EXPECT_EQ(d.translatingMass, 2.0);
+    DerivedSystem s = deriveSystem(spec(SystemKind::Sleigh, {{"m", 2.0}, {"a", 0.3}, {"I", 0.5}}));
+    EXPECT_EQ(s.translatingMass, 2.0);
 }
 
 TEST(Systems, RejectsImpossibleParameters) {
@@ -76,4 +103,12 @@ TEST(Systems, RejectsImpossibleParameters) {
                                                {"M", 2.0},
                                                {"I", INFINITY}}),
                    "parameter I");
+    expectRejected(spec(SystemKind::Carriage, {{"R", 0.3},
+                                               {"a", -0.2},
+                                               {"m", 0.5},
+                                               {"I1", 0.0},
+                                               {"I2", 0.0},
+                                               {"M", 2.0},
+                                               {"I", 0.2}}),
+                   "parameter a");
 }

@@ -1,15 +1,18 @@
 // chaplygin-bench-numerics: cost per right-hand-side call and per solve of every method in the
-// registry (issue #4 item 6). Compare counters ns_per_rhs against BM_Rk4ClassicalFloor, the
+// registry (docs/numerics.md §3, §5). Compare counters ns_per_rhs against BM_Rk4ClassicalFloor, the
 // hand-written classical RK4 on the same problem: the floor.
 #include "lab/method_registry.h"
 #include "lab/sleigh_problems.h"
 #include "lab/work_precision.h"
 #include "numerics/fixed_step.h"
 #include "numerics/gsl_ode.h"
+#include "paths/path.h"
 #include "scene/presets.h"
+#include "scene/solution.h"
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -67,6 +70,138 @@ void BM_RhsOpenLoop(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_RhsOpenLoop);
+
+// the controlled state at one t (position, heading, curvature, Psi, chidot) from the
+// interpolants: locate (Newton on the interpolated t(u)) + geometry + control law
+void BM_StateAt(benchmark::State& state) {
+    const MethodCase& c = catenary();
+    const double end = c.controlledEnd;
+    double t = 0.1234;
+    for (auto _ : state) {
+        PlannedMotion::State s = c.plan->at(t);
+        benchmark::DoNotOptimize(s);
+        t += 0.0137;
+        if (t > end)
+            t -= end;
+    }
+}
+BENCHMARK(BM_StateAt);
+
+// the same with exact curve evaluation (the reference): Newton on the Gauss quadrature of t(u)
+void BM_StateAtExact(benchmark::State& state) {
+    const MethodCase& c = catenary();
+    const double end = c.controlledEnd;
+    const PathTable& table = *c.path->pieces().front().table;
+    double t = 0.1234;
+    for (auto _ : state) {
+        PathLocation loc = c.plan->timeLaw().locateExact(t);
+        PathNode n = table.at(loc.u);
+        ControlState s = controlOnCurve(c.params, n.kappa, n.dkappa, n.phi);
+        benchmark::DoNotOptimize(s);
+        t += 0.0137;
+        if (t > end)
+            t -= end;
+    }
+}
+BENCHMARK(BM_StateAtExact)->Unit(benchmark::kMicrosecond);
+
+// both bodies at one t, as the GUI and the CSV read them (Solution::at)
+void BM_SolutionAt(benchmark::State& state) {
+    static const Solution sol = [] {
+        Scene s = presetScene("catenary");
+        s.tEnd = 5;
+        return Solution::compute(s);
+    }();
+    double t = 0.1234;
+    for (auto _ : state) {
+        MotionSample m = sol.at(t);
+        benchmark::DoNotOptimize(m);
+        t += 0.0137;
+        if (t > 5)
+            t -= 5;
+    }
+}
+BENCHMARK(BM_SolutionAt);
+
+// the controlled right-hand side du/dt = 1/(dt/du) from the interpolated time law
+void BM_RhsControlledTable(benchmark::State& state) {
+    const TimeLaw& law = catenary().plan->timeLaw();
+    double u = 1.3, f = 0;
+    for (auto _ : state) {
+        f = 1 / law.rateAt(0, u);
+        benchmark::DoNotOptimize(f);
+        u += 1e-7;
+        if (u > 5)
+            u = 0;
+    }
+}
+BENCHMARK(BM_RhsControlledTable);
+
+// what a parameter change (a, b, m, v_T) rebuilds on an already tabulated path: the time law
+void BM_RebuildTimeLaw(benchmark::State& state, std::string preset) {
+    Scene s = presetScene(preset);
+    auto path = buildPath(s.path);
+    ControlParams params = controlParamsOf(s);
+    double b = params.system.b;
+    for (auto _ : state) {
+        params.system.b = b + 1e-9 * (state.iterations() % 2);
+        TimeLaw law(path, params);
+        benchmark::DoNotOptimize(law.duration());
+    }
+    state.counters["panels"] = static_cast<double>(path->pieces().front().table->panels().size());
+}
+BENCHMARK_CAPTURE(BM_RebuildTimeLaw, catenary, std::string("catenary"))
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_RebuildTimeLaw, sinusoid, std::string("sinusoid"))
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_RebuildTimeLaw, line, std::string("line"))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_RebuildTimeLaw, circle, std::string("circle"))
+    ->Unit(benchmark::kMicrosecond);
+
+// the free motion's parameter-dependent part (FreeMotion over the catenary's 10 s)
+void BM_RebuildFreeMotion(benchmark::State& state) {
+    const MethodCase& c = catenary();
+    for (auto _ : state) {
+        FreeMotion free(c.params.system, c.freeInitial, c.freeEnd);
+        benchmark::DoNotOptimize(free.horizon());
+    }
+}
+BENCHMARK(BM_RebuildFreeMotion)->Unit(benchmark::kMicrosecond);
+
+// tabulation: the presets, 500-point polylines (pivot corners) and drawn strokes (smoothed)
+PathSource strokeOf(int points, CornerMode corners) {
+    PathSource p;
+    p.kind = PathKind::Polyline;
+    p.corners = corners;
+    p.smoothing = 10; // the app's default bandwidth
+    for (int i = 0; i < points; ++i) {
+        double th = 3.0 * i / points;
+        p.points.push_back({3 * std::cos(th) + 0.01 * std::sin(7.0 * i),
+                            3 * std::sin(th) + 0.01 * std::cos(5.0 * i)});
+    }
+    return p;
+}
+
+void BM_Tabulate(benchmark::State& state, PathSource source) {
+    std::size_t panels = 0;
+    for (auto _ : state) {
+        auto path = buildPath(source);
+        panels = 0;
+        for (const PathPiece& p : path->pieces())
+            if (p.kind == PathPiece::Kind::Curve)
+                panels += p.table->panels().size();
+        benchmark::DoNotOptimize(path.get());
+    }
+    state.counters["panels"] = static_cast<double>(panels);
+}
+BENCHMARK_CAPTURE(BM_Tabulate, catenary, presetScene("catenary").path)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Tabulate, sinusoid, presetScene("sinusoid").path)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Tabulate, polyline500_pivot, strokeOf(500, CornerMode::Pivot))
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_Tabulate, stroke500_smooth, strokeOf(500, CornerMode::Smooth))
+    ->Unit(benchmark::kMicrosecond);
 
 // the bare floor: classical RK4 steps on the free sleigh with no dense output, no virtual call
 void BM_Rk4BareStep(benchmark::State& state) {
@@ -150,7 +285,7 @@ void BM_Solve(benchmark::State& state, std::string problem, std::string method) 
             benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-// issue #4 item 5: the app's chosen configuration is on the Pareto front of the catenary's
+// the app's chosen configuration is on the Pareto front of the catenary's
 // work-precision chart (t_end = 10). One iteration is one whole sweep; the counters say whether
 // each chosen row is on the front, and the run fails if one is not.
 void BM_ChosenOnParetoFront(benchmark::State& state) {

@@ -1,0 +1,64 @@
+#include "numerics/chebyshev.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace chaplygin::cheb {
+namespace {
+
+struct Tables {
+    std::array<double, kPoints> x;
+    std::array<std::array<double, kPoints>, kPoints> dct; // c = dct * f
+    Tables() {
+        for (int j = 0; j < kPoints; ++j)
+            x[j] = std::cos(std::numbers::pi * j / kDegree);
+        x[kDegree / 2] = 0; // exactly
+        for (int k = 0; k < kPoints; ++k)
+            for (int j = 0; j < kPoints; ++j) {
+                double w = (j == 0 || j == kDegree) ? 0.5 : 1.0;
+                double v = (k == 0 || k == kDegree) ? 0.5 : 1.0;
+                dct[k][j] = 2.0 / kDegree * w * v *
+                            std::cos(std::numbers::pi * ((j * k) % (2 * kDegree)) / kDegree);
+            }
+    }
+};
+
+const Tables& tables() {
+    static const Tables t;
+    return t;
+}
+
+} // namespace
+
+const std::array<double, kPoints>& points() {
+    return tables().x;
+}
+
+void coefficients(const double* values, double* coeffs) {
+    const auto& m = tables().dct;
+    for (int k = 0; k < kPoints; ++k) {
+        double s = 0;
+        for (int j = 0; j < kPoints; ++j)
+            s += m[k][j] * values[j];
+        coeffs[k] = s;
+    }
+}
+
+void integrate(const double* c, int n, double* out) {
+    // T_k' relations: \int T_k = T_{k+1}/(2(k+1)) - T_{k-1}/(2(k-1)), \int T_0 = T_1, \int T_1 =
+    // T_2/4
+    auto at = [&](int k) { return k < n ? c[k] : 0.0; };
+    for (int k = 1; k <= n; ++k)
+        out[k] = k == 1 ? at(0) - 0.5 * at(2) : (at(k - 1) - at(k + 1)) / (2.0 * k);
+    double atMinusOne = 0; // the series at x = -1 without out[0]
+    for (int k = 1; k <= n; ++k)
+        atMinusOne += (k % 2 ? -1.0 : 1.0) * out[k];
+    out[0] = -atMinusOne;
+}
+
+double tailEstimate(const double* c, int n) {
+    return std::max({std::fabs(c[n - 1]), std::fabs(c[n - 2]), std::fabs(c[n - 3])});
+}
+
+} // namespace chaplygin::cheb

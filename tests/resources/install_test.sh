@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# install_test.sh BUILD_DIR: installs the build into a DESTDIR with prefix /usr, checks the
+# layout, and runs the installed program headless on an installed scene.
+set -euo pipefail
+build=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+dest=$work/root
+if ! DESTDIR=$dest cmake --install "$build" --prefix /usr >"$work/install.log" 2>&1; then
+  cat "$work/install.log"
+  exit 1
+fi
+usr=$dest/usr
+fail() { echo "FAIL: $*"; exit 1; }
+[ -x "$usr/bin/chaplygin-lab" ] || fail "no bin/chaplygin-lab"
+for f in share/applications/io.github.chaplyginlab.ChaplyginLab.desktop \
+         share/metainfo/io.github.chaplyginlab.ChaplyginLab.metainfo.xml \
+         share/icons/hicolor/scalable/apps/chaplygin-lab.svg \
+         share/man/man1/chaplygin-lab.1 \
+         share/doc/chaplygin-lab/README.md share/doc/chaplygin-lab/user-guide.md \
+         share/chaplygin-lab/scenes/presets/circle.json share/chaplygin-lab/scenes/gallery/cusp.json; do
+  [ -s "$usr/$f" ] || fail "no $f"
+done
+# each hicolor PNG is a PNG of its size (IHDR width and height, big-endian, at byte 16)
+for size in 16 22 24 32 48 64 128 256 512; do
+  png=$usr/share/icons/hicolor/${size}x${size}/apps/chaplygin-lab.png
+  [ -s "$png" ] || fail "no ${size}x${size} icon"
+  read -r w0 w1 w2 w3 h0 h1 h2 h3 < <(od -An -tu1 -j16 -N8 "$png")
+  [ $(((w0 << 24) + (w1 << 16) + (w2 << 8) + w3)) -eq "$size" ] &&
+    [ $(((h0 << 24) + (h1 << 16) + (h2 << 8) + h3)) -eq "$size" ] || fail "$png is not ${size}x${size}"
+done
+grep -q -- '\\-\\-preset' "$usr/share/man/man1/chaplygin-lab.1" || fail "the man page lacks --preset"
+# the desktop entry names the installed program and icon; the metainfo launches that entry
+desktop=$usr/share/applications/io.github.chaplyginlab.ChaplyginLab.desktop
+exe=$(sed -n 's/^Exec=\([^ ]*\).*/\1/p' "$desktop")
+[ -x "$usr/bin/$exe" ] || fail "Exec=$exe is not installed in bin/"
+icon=$(sed -n 's/^Icon=//p' "$desktop")
+[ -s "$usr/share/icons/hicolor/scalable/apps/$icon.svg" ] || fail "Icon=$icon is not installed"
+grep -q "<launchable type=\"desktop-id\">$(basename "$desktop")</launchable>" \
+  "$usr/share/metainfo/io.github.chaplyginlab.ChaplyginLab.metainfo.xml" || fail "the metainfo does not launch $(basename "$desktop")"
+
+cd "$work"
+export QT_QPA_PLATFORM=offscreen
+"$usr/bin/chaplygin-lab" --headless --preset circle --csv out.csv
+[ "$(head -c 2 out.csv)" = "t," ] || fail "out.csv has no header starting with t: $(head -1 out.csv)"
+rows=$(($(wc -l <out.csv) - 1))
+[ "$rows" -eq 501 ] || fail "out.csv has $rows rows, expected 501"
+# one lap of the circle R = 2 with b = 1, v_T = 1 takes 2 pi sqrt(b^2 + R^2)/v_T (paper (89)-(96))
+tail -1 out.csv | awk -F, '{ d = $1 - 2 * 3.14159265358979 * sqrt(5); if (d < -1e-9 || d > 1e-9) { print "FAIL: t_end " $1; exit 1 } }'
+# an installed gallery scene: refused, naming the place
+set +e
+"$usr/bin/chaplygin-lab" --headless --scene "$usr/share/chaplygin-lab/scenes/gallery/cusp.json" --csv cusp.csv 2>err.txt
+rc=$?
+set -e
+[ "$rc" -eq 2 ] || fail "the cusp scene exited $rc, expected 2"
+grep -q "path at u = 0" err.txt || fail "the cusp refusal does not name the place: $(cat err.txt)"
+[ ! -e cusp.csv ] || fail "a refused scene wrote cusp.csv"
+echo "installed layout and headless run OK"

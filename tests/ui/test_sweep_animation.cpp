@@ -1,0 +1,235 @@
+// GUI tests of the Sweep dock (a parameter sweep in the shared job runner, with progress,
+// cancel and click-to-load through the undo stack) and of File > Export animation.
+#include "document/scene_document.h"
+#include "gui_test_support.h"
+#include "panels/sweep_panel.h"
+#include "scene/presets.h"
+#include "shell/animation_dialog.h"
+#include "shell/main_window.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QProgressBar>
+#include <QProgressDialog>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include <cmath>
+#include <memory>
+
+using namespace chaplygin;
+using namespace chaplygin::ui;
+
+class TestSweepAnimation : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+    void sweepRunsAndPlotsTheClosedForm();
+    void badRangeIsRefusedBeforeAnyWork();
+    void cancelStopsASweep();
+    void sceneChangeCancelsASweep();
+    void clickingAPointLoadsItsValueAsOneUndoStep();
+    void exportWritesFramesRenderedOffscreen();
+    void exportDialogPathWithCancelLeavesNoFiles();
+
+  private:
+    void load(const char* preset);
+    void chooseRange(const char* name, double from, double to, int count);
+    std::unique_ptr<MainWindow> m_window;
+};
+
+void TestSweepAnimation::initTestCase() {
+    test::useTestSettings(QStringLiteral("ui_sweep_animation_tests"));
+}
+
+void TestSweepAnimation::init() {
+    m_window = test::showTestWindow();
+    QVERIFY(m_window && m_window->document()->solution());
+}
+
+void TestSweepAnimation::cleanup() {
+    m_window.reset();
+}
+
+void TestSweepAnimation::load(const char* preset) {
+    m_window->loadScene(presetScene(preset));
+    QVERIFY(m_window->document()->error().isEmpty());
+}
+
+void TestSweepAnimation::chooseRange(const char* name, double from, double to, int count) {
+    SweepPanel* panel = m_window->sweepPanel();
+    panel->parameterBox()->setCurrentText(QString::fromLatin1(name));
+    QCOMPARE(panel->parameterBox()->currentText(), QString::fromLatin1(name));
+    panel->fromBox()->setValue(from);
+    panel->toBox()->setValue(to);
+    panel->countBox()->setValue(count);
+}
+
+void TestSweepAnimation::sweepRunsAndPlotsTheClosedForm() {
+    load("circle");
+    m_window->showSweepDock();
+    SweepPanel* panel = m_window->sweepPanel();
+    chooseRange("b", 0.6, 2.4, 4);
+    QTest::mouseClick(panel->runButton(), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!panel->isRunning(), 30000);
+    QVERIFY(panel->report());
+    QCOMPARE(int(panel->report()->rows.size()), 4);
+    QCOMPARE(panel->progressBar()->value(), panel->progressBar()->maximum());
+    // circle R = 2 (paper (82)-(96)): max |lambda| = m a v_T / sqrt(R^2 + b^2)
+    QCOMPARE(panel->plot()->graphCount(), 1);
+    QCOMPARE(panel->plot()->graph(0)->dataCount(), 4);
+    for (int i = 0; i < 4; ++i) {
+        double b = 0.6 + 0.6 * i;
+        double y = panel->plot()->graph(0)->data()->at(i)->value;
+        QVERIFY(std::fabs(y - 0.5 / std::sqrt(4 + b * b)) < 1e-12);
+    }
+    // another quantity redraws without a new sweep: duration 2 pi sqrt(b^2 + R^2)
+    panel->quantityBox()->setCurrentIndex(static_cast<int>(SweepQuantity::Duration));
+    double t0 = panel->plot()->graph(0)->data()->at(0)->value;
+    QVERIFY(std::fabs(t0 - 2 * M_PI * std::sqrt(0.36 + 4)) < 1e-10);
+}
+
+void TestSweepAnimation::badRangeIsRefusedBeforeAnyWork() {
+    load("circle");
+    SweepPanel* panel = m_window->sweepPanel();
+    chooseRange("b", 0.2, 2, 5);
+    QTest::mouseClick(panel->runButton(), Qt::LeftButton);
+    QVERIFY(!panel->isRunning());
+    QVERIFY(!panel->report());
+    QVERIFY2(panel->statusText().contains(QLatin1String("b = 0.2 (value 1 of 5) is invalid")),
+             qPrintable(panel->statusText()));
+}
+
+void TestSweepAnimation::cancelStopsASweep() {
+    load("catenary");
+    SweepPanel* panel = m_window->sweepPanel();
+    chooseRange("b", 0.6, 3, 1000);
+    panel->start();
+    QVERIFY(panel->isRunning());
+    QTRY_VERIFY_WITH_TIMEOUT(panel->progressBar()->value() > 0, 20000);
+    QTest::mouseClick(panel->cancelButton(), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!panel->isRunning(), 20000);
+    QVERIFY(panel->report());
+    QVERIFY(panel->report()->cancelled);
+    QVERIFY(panel->report()->rows.size() < 1000);
+    QVERIFY(panel->statusText().startsWith(QLatin1String("Cancelled")));
+    QVERIFY(panel->runButton()->isEnabled());
+}
+
+void TestSweepAnimation::sceneChangeCancelsASweep() {
+    load("catenary");
+    SweepPanel* panel = m_window->sweepPanel();
+    chooseRange("vT", 0.5, 3, 1000);
+    panel->start();
+    QVERIFY(panel->isRunning());
+    load("circle");
+    QTRY_VERIFY_WITH_TIMEOUT(!panel->isRunning(), 20000);
+    QVERIFY(panel->report() && panel->report()->cancelled);
+    QVERIFY2(panel->statusText().contains(QLatin1String("the scene changed")),
+             qPrintable(panel->statusText()));
+}
+
+void TestSweepAnimation::clickingAPointLoadsItsValueAsOneUndoStep() {
+    load("circle");
+    m_window->showSweepDock();
+    SweepPanel* panel = m_window->sweepPanel();
+    chooseRange("vT", 0.5, 2, 4);
+    panel->start();
+    panel->waitForFinished();
+    QVERIFY(panel->report() && panel->report()->rows.size() == 4);
+    QCoreApplication::processEvents();
+    panel->plot()->replot();
+    const Scene before = m_window->document()->scene();
+    const int undoCount = m_window->undoStack()->count();
+    // click the third point where the plot draws it
+    const SweepRow& row = panel->report()->rows[2];
+    QPoint at(int(std::lround(panel->plot()->xAxis->coordToPixel(row.value))),
+              int(std::lround(panel->plot()->yAxis->coordToPixel(row.maxAbsLambda))));
+    QTest::mouseClick(panel->plot(), Qt::LeftButton, Qt::NoModifier, at);
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->scene().speed, 1.5);
+    QCOMPARE(m_window->undoStack()->count(), undoCount + 1);
+    m_window->undoStack()->undo();
+    m_window->document()->flush();
+    QVERIFY(m_window->document()->scene() == before);
+}
+
+void TestSweepAnimation::exportWritesFramesRenderedOffscreen() {
+    load("line");
+    QTemporaryDir dir;
+    AnimationSettings s;
+    s.file = dir.filePath(QStringLiteral("frames/"));
+    s.fps = 2;
+    s.size = QSize(640, 360);
+    s.withPlots = true;
+    // the window is hidden behind the export: frames come from an offscreen widget
+    m_window->hide();
+    QVERIFY2(m_window->exportAnimationTo(s), qPrintable(m_window->lastFileError()));
+    QStringList frames = QDir(s.file).entryList({QStringLiteral("frame_*.png")}, QDir::Files);
+    // the line takes 4 sqrt(5) = 8.94 s: frames at 0, 0.5, ..., 8.5 and 8.94
+    QCOMPARE(frames.size(), 19);
+    QImage first(QDir(s.file).filePath(frames.first()));
+    QImage last(QDir(s.file).filePath(frames.last()));
+    QCOMPARE(first.size(), QSize(640, 360));
+    QVERIFY(first != last); // the body has moved
+    // the plots beside the canvas are drawn: the free motion's red curves (plot_figures.cpp)
+    int red = 0;
+    for (int y = 0; y < first.height(); ++y)
+        for (int x = first.width() * 3 / 5; x < first.width(); ++x) {
+            QColor c = first.pixelColor(x, y);
+            red += c.red() > 180 && c.green() < 110 && c.blue() < 110;
+        }
+    QVERIFY2(red > 100, qPrintable(QString::number(red)));
+}
+
+void TestSweepAnimation::exportDialogPathWithCancelLeavesNoFiles() {
+    load("circle");
+    QTemporaryDir dir;
+    const QString folder = dir.filePath(QStringLiteral("clip/"));
+    bool dialogSeen = false, cancelled = false;
+    QTimer poll;
+    poll.setInterval(10);
+    connect(&poll, &QTimer::timeout, this, [&] {
+        if (auto* dialog = qobject_cast<AnimationDialog*>(QApplication::activeModalWidget())) {
+            dialogSeen = true;
+            dialog->fileEdit()->setText(folder);
+            dialog->fpsBox()->setValue(30);
+            dialog->widthBox()->setValue(320);
+            dialog->heightBox()->setValue(240);
+            dialog->accept();
+            return;
+        }
+        auto* progress = m_window->findChild<QProgressDialog*>(QStringLiteral("animationProgress"));
+        if (progress && progress->value() >= 3 && !cancelled) {
+            cancelled = true;
+            progress->cancel();
+        }
+    });
+    poll.start();
+    QAction* action = nullptr;
+    for (QAction* menu : m_window->menuBar()->actions())
+        if (menu->menu())
+            for (QAction* a : menu->menu()->actions())
+                if (a->text().contains(QLatin1String("animation")))
+                    action = a;
+    QVERIFY(action);
+    action->trigger();
+    poll.stop();
+    QVERIFY(dialogSeen);
+    QVERIFY(cancelled);
+    QVERIFY(m_window->lastFileError().isEmpty());
+    QVERIFY(QDir(folder).entryList({QStringLiteral("*.png")}, QDir::Files).isEmpty());
+}
+
+QTEST_MAIN(TestSweepAnimation)
+#include "test_sweep_animation.moc"

@@ -1,0 +1,48 @@
+#pragma once
+#include "shell/animation_export.h"
+
+#include <QDialog>
+
+class QCheckBox;
+class QDoubleSpinBox;
+class QLineEdit;
+class QSpinBox;
+
+namespace chaplygin::ui {
+
+class SceneDocument;
+
+/// File > Export animation: the output (name.gif, name.mp4 or a folder for PNG frames), frame
+/// rate, size, playback speed and whether the plots go beside the canvas.
+class AnimationDialog : public QDialog {
+    Q_OBJECT
+  public:
+    explicit AnimationDialog(const AnimationSettings& initial, QWidget* parent = nullptr);
+    AnimationSettings settings() const;
+
+    QLineEdit* fileEdit() const { return m_file; }
+    QSpinBox* fpsBox() const { return m_fps; }
+    QSpinBox* widthBox() const { return m_width; }
+    QSpinBox* heightBox() const { return m_height; }
+    QDoubleSpinBox* speedBox() const { return m_speed; }
+    QCheckBox* plotsBox() const { return m_plots; }
+
+  private:
+    void browse();
+
+    QLineEdit* m_file;
+    QSpinBox* m_fps;
+    QSpinBox* m_width;
+    QSpinBox* m_height;
+    QDoubleSpinBox* m_speed;
+    QCheckBox* m_plots;
+};
+
+/// Runs an export with a modal progress dialog (the frames are painted on the UI thread, which
+/// owns the widgets; the dialog keeps the window responsive between frames) and a Cancel
+/// button. Returns true when the file was written; false when cancelled or failed, with the
+/// reason in *error (empty when cancelled). A cancelled or failed export leaves no file.
+bool exportAnimationWithProgress(QWidget* parent, SceneDocument* document,
+                                 const AnimationSettings& settings, QString* error);
+
+} // namespace chaplygin::ui
