@@ -2,6 +2,17 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="pt_BR">
 <context>
+    <name>AnimationDialog</name>
+    <message>
+        <source>Rendering %1 frames…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>chaplygin::ui::AccuracyReadout</name>
     <message>
         <source>Distance of the controlled knife point P from the prescribed path&apos;s own point at the same arc length: the tracking constraint residual</source>
@@ -45,6 +56,65 @@
     </message>
     <message>
         <source>T varies by design in constant-speed mode</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::AnimationDialog</name>
+    <message>
+        <source>Export animation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>clip.gif, clip.mp4, or frames/ for PNG frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>px</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> × real time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plots beside the canvas</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GIF and MP4 need the ffmpeg program; a folder gets PNG frames.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Frame rate</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>GIF (*.gif);;MP4 video (*.mp4);;PNG frames into a folder (*)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -303,6 +373,22 @@
     </message>
     <message>
         <source>%1%2 — Chaplygin Lab</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sweep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export &amp;animation…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Animation export cancelled</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -638,6 +724,65 @@
     </message>
     <message>
         <source>t = %1 s of %2 s    scale %3 px/m</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::SweepPanel</name>
+    <message>
+        <source>The parameter to vary; the others keep the scene&apos;s values</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run sweep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a parameter and a range, then Run sweep. Click a point to load its value.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>values</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sweeping %1 over %2 values…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The sweep failed: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 values of %2 from %3 to %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancelled after %1. Click a point to load it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1. Click a point to load it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set %1 = %2 from the sweep</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
