@@ -265,3 +265,19 @@ TEST(VakonomicMotion, CircleAgreesWithAnMpmathTaylorReference) {
     // sdot changes sign between t = 2 and 3: the vakonomic body backs up
     EXPECT_LT(sol.vakonomicAt(3).sdot, 0);
 }
+
+TEST(VakonomicMotion, ModulusNextToOneStaysFinite) {
+    // k^2 one ulp from 1 on either side: sqrt(1 + 2^-52) rounds to 1, yet K(1/k) must stay finite
+    DerivedSystem sys{1.0, 0.0, 1.0};
+    for (double k2 : {1 - 0x1p-53, 1 + 0x1p-52}) {
+        // sin Psi0 = 0.6, (b Psidot0/v_T)^2 = k2 - 0.36, v_T = 1
+        const double L0 = std::sqrt(k2 - 0.36);
+        VakonomicMotion vak(sys, {0, 0, 0, 0.6, 0.8, L0});
+        EXPECT_NE(vak.kind(), VakonomicMotion::Case::Line);
+        for (double t : {0.0, 1.0, 7.5}) {
+            VakonomicState s = vak.at(t);
+            for (double v : {s.x, s.y, s.phi, s.sdot, s.phidot, s.lambda, s.psi})
+                EXPECT_TRUE(std::isfinite(v)) << "k^2 - 1 = " << k2 - 1 << ", t = " << t;
+        }
+    }
+}
