@@ -20,9 +20,10 @@ namespace {
 
 const QColor kControlled(0x1f, 0x77, 0xb4);
 const QColor kFree(0xd6, 0x27, 0x28);
+const QColor kVakonomic(0x94, 0x67, 0xbd);
 constexpr double kStrokeSpacingPx = 10;    // drawn points closer than this are dropped
 constexpr double kVertexPickPx = 8;        // how near a click must be to grab a vertex
-constexpr int kTopPx = 26, kLegendPx = 62; // the time line and the legend
+constexpr int kTopPx = 26, kLegendPx = 78; // the time line and the legend
 
 QPen cosmetic(const QColor& c, double w, Qt::PenStyle style = Qt::SolidLine) {
     QPen pen(c, w, style);
@@ -126,6 +127,11 @@ void SceneCanvas::fitScene() {
         if (limit.contains(f))
             extend({f.x()}, {f.y()});
     }
+    for (int i = 0; m_showVakonomic && i < std::min(s.vakX.size(), s.vakY.size()); ++i) {
+        QPointF v(s.vakX[i], s.vakY[i]);
+        if (limit.contains(v))
+            extend({v.x()}, {v.y()});
+    }
     QRectF box(QPointF(x0, y0), QPointF(x1, y1));
     double pad = bodyExtent(solution->scene().system, solution->system());
     box.adjust(-pad, -pad, pad, pad);
@@ -155,6 +161,11 @@ void SceneCanvas::setDrawMode(bool on) {
     m_drawMode = on;
     m_stroke.clear();
     setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
+    update();
+}
+
+void SceneCanvas::setShowVakonomic(bool show) {
+    m_showVakonomic = show;
     update();
 }
 
@@ -245,6 +256,9 @@ void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now) const {
     QColor free = kFree;
     free.setAlpha(150);
     trail(s.freeT, s.freeX, s.freeY, {now.free.x, now.free.y}, cosmetic(free, 1.5, Qt::DashLine));
+    if (m_showVakonomic)
+        trail(s.vakT, s.vakX, s.vakY, {now.vak.x, now.vak.y},
+              cosmetic(kVakonomic, 1.5, Qt::DashDotLine));
     trail(s.t, s.x, s.y, {now.x, now.y}, cosmetic(kControlled.darker(150), 2));
 }
 
@@ -252,21 +266,28 @@ void SceneCanvas::paintLegend(QPainter& p) const {
     QFont f = font();
     f.setPointSizeF(9);
     p.setFont(f);
-    int y = height() - 54;
+    int y = height() - 70;
     p.setPen(cosmetic(kControlled.darker(150), 2));
     p.drawLine(10, y, 34, y);
     p.setPen(cosmetic(kFree, 2, Qt::DashLine));
     p.drawLine(10, y + 16, 34, y + 16);
+    p.setPen(cosmetic(kVakonomic, 2, Qt::DashDotLine));
+    if (m_showVakonomic)
+        p.drawLine(10, y + 32, 34, y + 32);
     for (int i = 0; i < 24; ++i) {
         QPen pen = cosmetic(pale(curvatureColor((i - 11.5) / 4.0)), 6);
         pen.setCapStyle(Qt::FlatCap);
         p.setPen(pen);
-        p.drawLine(10 + i, y + 32, 11 + i, y + 32);
+        p.drawLine(10 + i, y + 48, 11 + i, y + 48);
     }
     p.setPen(Qt::black);
     p.drawText(40, y + 4, tr("controlled body and its trail (tracks the path)"));
     p.drawText(40, y + 20, tr("free motion from the same start (translucent ghost)"));
-    p.drawText(40, y + 36,
+    if (m_showVakonomic)
+        p.drawText(40, y + 36,
+                   tr("genuine vakonomic body: \u03bb obeys its own equation (21), only "
+                      "\u03bb(0) is the tracking's"));
+    p.drawText(40, y + 52,
                tr("path (\u25cf start, \u25a1 end), coloured by its curvature \u03ba: red right "
                   "turn, grey straight, blue left turn"));
     if (m_drawMode)
@@ -278,7 +299,8 @@ void SceneCanvas::paintLegend(QPainter& p) const {
 void SceneCanvas::paintBackground() {
     // grid, path and legend change only with the view or the solution: cached between frames
     qreal dpr = devicePixelRatioF();
-    BackgroundKey key{m_document->solution().get(), size(), m_scale, m_centre, m_drawMode, dpr};
+    BackgroundKey key{
+        m_document->solution().get(), size(), m_scale, m_centre, m_drawMode, dpr, m_showVakonomic};
     if (key == m_backgroundKey && !m_background.isNull())
         return;
     m_backgroundKey = key;
@@ -310,6 +332,9 @@ void SceneCanvas::paintEvent(QPaintEvent*) {
         // the translucent ghost on top, so that both stay visible where they overlap
         paintBody(p, spec, solution->system(), {now.x, now.y, now.phi}, kControlled, false);
         paintBody(p, spec, solution->system(), {now.free.x, now.free.y, now.free.phi}, kFree, true);
+        if (m_showVakonomic)
+            paintBody(p, spec, solution->system(), {now.vak.x, now.vak.y, now.vak.phi}, kVakonomic,
+                      true);
         p.restore();
         m_vectors.paint(p, solution, m_document->scene().vectors, now, worldTransform(), m_scale,
                         rect());

@@ -27,6 +27,8 @@ class SceneCanvas : public QWidget {
     double time() const { return m_time; }
     bool followsBody() const { return m_follow; }
     bool drawMode() const { return m_drawMode; }
+    /// Whether the genuine vakonomic body (a third body) is drawn.
+    bool showsVakonomic() const { return m_showVakonomic; }
     /// Pixels per metre.
     double scale() const { return m_scale; }
     /// World point (metres) <-> widget pixel.
@@ -43,6 +45,7 @@ class SceneCanvas : public QWidget {
     void setFollowBody(bool follow);
     void setDrawMode(bool on);
     void zoomBy(double factor);
+    void setShowVakonomic(bool show);
 
   signals:
     /// The user finished drawing a stroke: sampled points in metres, in order.
@@ -83,6 +86,7 @@ class SceneCanvas : public QWidget {
     std::shared_ptr<const Path> m_fittedPath; // the path the view was last fitted to
     bool m_autoFit = true; // refit on resize and new solutions until the user zooms or pans
     bool m_drawMode = false;
+    bool m_showVakonomic = true;
     bool m_panning = false;
     QPointF m_lastMouse;
     std::vector<QPointF> m_stroke; // world points of the stroke being drawn
@@ -95,6 +99,7 @@ class SceneCanvas : public QWidget {
         QPointF centre;
         bool drawMode = false;
         qreal dpr = 0;
+        bool vakonomic = true;
         bool operator==(const BackgroundKey&) const = default;
     };
     BackgroundKey m_backgroundKey;

@@ -8,6 +8,7 @@ namespace {
 const QColor kControlled(0x1f, 0x77, 0xb4);
 const QColor kFree(0xd6, 0x27, 0x28);
 const QColor kPath(0x7f, 0x7f, 0x7f);
+const QColor kVakonomic(0x94, 0x67, 0xbd);
 
 QCPGraph* addGraph(QCPAxisRect* rect, const QVector<double>& x, const QVector<double>& y,
                    const QString& name, const QColor& color, Qt::PenStyle style = Qt::SolidLine) {
@@ -78,22 +79,30 @@ void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSer
     case PlotKind::Psi:
         addGraph(rect, s.t, s.psi, QStringLiteral("controlled \u03a8"), kControlled);
         addGraph(rect, s.freeT, s.freePsi, QStringLiteral("free \u03a8"), kFree, Qt::DashLine);
+        addGraph(rect, s.vakT, s.vakPsi, QStringLiteral("vakonomic \u03a8"), kVakonomic,
+                 Qt::DashDotLine);
         labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03a8 [rad]"));
         break;
     case PlotKind::Chi:
         addGraph(rect, s.t, s.chi, QStringLiteral("controlled \u03c7"), kControlled);
         addGraph(rect, s.freeT, s.freeChi, QStringLiteral("free \u03c7 (constant)"), kFree,
                  Qt::DashLine);
+        addGraph(rect, s.vakT, s.vakChi, QStringLiteral("vakonomic \u03c7"), kVakonomic,
+                 Qt::DashDotLine);
         labels(rect, QStringLiteral("t [s]"),
                QStringLiteral("\u03c7 = \u03a8 \u2212 (a/b)\u03c6 [rad]"));
         break;
     case PlotKind::Lambda:
         addGraph(rect, s.t, s.lambda, QStringLiteral("\u03bb = m b d\u03c7/dt"), kControlled);
+        addGraph(rect, s.vakT, s.vakLambda, QStringLiteral("vakonomic \u03bb (eq. 21)"), kVakonomic,
+                 Qt::DashDotLine);
         labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03bb [kg m/s]"));
         break;
     case PlotKind::Energy:
         addGraph(rect, s.t, s.energy, QStringLiteral("controlled T"), kControlled);
         addGraph(rect, s.freeT, s.freeEnergy, QStringLiteral("free T"), kFree, Qt::DashLine);
+        addGraph(rect, s.vakT, s.vakEnergy, QStringLiteral("vakonomic T"), kVakonomic,
+                 Qt::DashDotLine);
         labels(rect, QStringLiteral("t [s]"), QStringLiteral("kinetic energy T [J]"));
         break;
     default:
@@ -107,6 +116,8 @@ void trajectoryPlot(QCustomPlot& plot, QCPAxisRect* rect, const PlotSeries& s) {
     addCurve(rect, s.pathX, s.pathY, QStringLiteral("prescribed path"), kPath, Qt::DotLine);
     addCurve(rect, s.x, s.y, QStringLiteral("controlled body (P)"), kControlled);
     addCurve(rect, s.freeX, s.freeY, QStringLiteral("free body (P)"), kFree, Qt::DashLine);
+    addCurve(rect, s.vakX, s.vakY, QStringLiteral("vakonomic body (P)"), kVakonomic,
+             Qt::DashDotLine);
     labels(rect, QStringLiteral("x [m]"), QStringLiteral("y [m]"));
     rescale(rect, true);
     legendIn(rect, plot);

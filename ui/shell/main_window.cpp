@@ -213,6 +213,13 @@ void MainWindow::buildMenus() {
     m_followAction->setShortcut(QKeySequence(tr("Ctrl+B")));
     connect(m_followAction, &QAction::toggled, m_canvas, &SceneCanvas::setFollowBody);
     connect(m_canvas, &SceneCanvas::followBodyChanged, m_followAction, &QAction::setChecked);
+    QAction* vakonomic = view->addAction(tr("Genuine &vakonomic body"));
+    vakonomic->setObjectName(QStringLiteral("showVakonomicAction"));
+    vakonomic->setCheckable(true);
+    vakonomic->setChecked(m_canvas->showsVakonomic());
+    vakonomic->setToolTip(tr("Draw a third body whose multiplier obeys its own equation (21): it "
+                             "cannot follow the path"));
+    connect(vakonomic, &QAction::toggled, m_canvas, &SceneCanvas::setShowVakonomic);
     view->addAction(tr("Zoom &in"), QKeySequence::ZoomIn, this, [this] { m_canvas->zoomBy(1.25); });
     view->addAction(tr("Zoom &out"), QKeySequence::ZoomOut, this,
                     [this] { m_canvas->zoomBy(0.8); });
