@@ -10,6 +10,7 @@
 #include "runtime_directory.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
+#include "shell/presentation_mode.h"
 #include "version.h"
 
 #include <QApplication>
@@ -48,8 +49,9 @@ struct ScreenshotOptions {
     double at = 0;
     int width = 1280, height = 800;
     bool showParameters =
-        false;                ///< --panel parameters: raise the parameters dock over the path dock
-    bool showMethods = false; ///< --panel methods: compute and show the work-precision diagram
+        false;                 ///< --panel parameters: raise the parameters dock over the path dock
+    bool showMethods = false;  ///< --panel methods: compute and show the work-precision diagram
+    bool presentation = false; ///< --presentation: presentation mode at the given size
     Scene scene;
 };
 
@@ -65,6 +67,8 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
         std::string arg = argv[i];
         if (arg == "--screenshot") {
             o.file = value(i, arg);
+        } else if (arg == "--presentation") {
+            o.presentation = true;
         } else if (arg == "--at") {
             o.at = parseNumber(value(i, arg), "--at");
             if (o.at < 0)
@@ -112,6 +116,11 @@ int renderScreenshot(const ScreenshotOptions& o) {
     window.show();
     QCoreApplication::processEvents();
     window.balanceDocks();
+    if (o.presentation) {
+        window.presentation()->setFullScreen(false); // the screenshot's size stands
+        window.presentation()->setActive(true);
+        QCoreApplication::processEvents();
+    }
     if (o.showParameters)
         window.showParametersDock();
     if (o.showMethods) {
@@ -143,6 +152,7 @@ int runDesktop(int argc, char** argv) {
     describeApplication();
     // QApplication has taken its own options out; what is left is a scene file or scene options
     QStringList args = QCoreApplication::arguments().mid(1);
+    const bool presentation = args.removeAll(QStringLiteral("--presentation")) > 0;
     MainWindow window;
     try {
         if (args.size() == 1 && !args[0].startsWith(QLatin1String("--"))) {
@@ -159,6 +169,8 @@ int runDesktop(int argc, char** argv) {
         return 2;
     }
     window.show();
+    if (presentation)
+        window.presentation()->setActive(true);
     return app.exec();
 }
 

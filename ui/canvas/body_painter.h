@@ -1,4 +1,5 @@
 #pragma once
+#include "canvas/canvas_style.h"
 #include "systems/system.h"
 
 #include <QColor>
@@ -16,8 +17,17 @@ struct BodyPose {
 /// the sleigh as an elliptical board with its knife edge at P and its centre of mass at
 /// P + a s-hat; the disk seen from above; the carriage with two wheels on an axle through P.
 /// ghost draws it translucent, for the free motion.
+/// look: to scale, outline only, or a marker of a fixed pixel size; fill opacity; pen scale.
+struct BodyLook {
+    BodyDisplay display = BodyDisplay::ToScale;
+    double opacity = 0.8; ///< of the fill (a ghost gets a third of it)
+    double lineScale = 1; ///< multiplies the pen widths and the marker size
+};
 void paintBody(QPainter& painter, const SystemSpec& spec, const DerivedSystem& derived,
-               const BodyPose& pose, const QColor& color, bool ghost);
+               const BodyPose& pose, const QColor& color, bool ghost, const BodyLook& look = {});
+
+/// The radius of the marker [px] before lineScale.
+constexpr double kMarkerRadiusPx = 9;
 
 /// The radius [m] of a circle around P that holds the whole body (for fitting the view).
 double bodyExtent(const SystemSpec& spec, const DerivedSystem& derived);

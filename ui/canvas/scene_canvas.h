@@ -1,4 +1,5 @@
 #pragma once
+#include "canvas/canvas_style.h"
 #include "paths/path_source.h"
 #include "scene/solution.h"
 
@@ -33,6 +34,15 @@ class SceneCanvas : public QWidget {
     QPointF toWorld(QPointF pixel) const;
 
     QSize sizeHint() const override { return {800, 500}; }
+    QSize minimumSizeHint() const override { return {240, 180}; }
+
+    const CanvasStyle& canvasStyle() const { return m_style; }
+    void setCanvasStyle(const CanvasStyle& style);
+    bool legendVisible() const { return m_legendVisible; }
+    /// The part of the widget the scene is drawn in: between the time line and the legend.
+    QRectF drawingArea() const;
+    /// The world rectangle Fit frames: the path and every body over the whole horizon.
+    QRectF sceneBounds() const;
 
   public slots:
     void setTime(double t);
@@ -40,6 +50,8 @@ class SceneCanvas : public QWidget {
     void setFollowBody(bool follow);
     void setDrawMode(bool on);
     void zoomBy(double factor);
+    /// Shows or collapses the legend strip under the drawing area (key L).
+    void setLegendVisible(bool visible);
 
   signals:
     /// The user finished drawing a stroke: sampled points in metres, in order.
@@ -64,6 +76,7 @@ class SceneCanvas : public QWidget {
     void paintPath(QPainter& p) const;
     void paintTrails(QPainter& p, const MotionSample& now) const;
     void paintLegend(QPainter& p) const;
+    void paintTimeReadout(QPainter& p, double tEnd) const;
     void paintBackground();
     void centreOnBody();
     /// The vertices of the current drawn path (empty unless it is a polyline).
@@ -92,10 +105,16 @@ class SceneCanvas : public QWidget {
         QPointF centre;
         bool drawMode = false;
         qreal dpr = 0;
+        CanvasStyle style;
+        bool legend = true;
         bool operator==(const BackgroundKey&) const = default;
     };
     BackgroundKey m_backgroundKey;
     QPixmap m_background; // grid, path and legend
+    CanvasStyle m_style;
+    bool m_legendVisible = true;
+    int topBandPx() const;
+    int legendBandPx() const;
 };
 
 } // namespace chaplygin::ui
