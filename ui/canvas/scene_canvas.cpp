@@ -218,10 +218,17 @@ void SceneCanvas::paintGrid(QPainter& p) const {
         }
     QPointF a = toWorld(QPointF(0, height())), b = toWorld(QPointF(width(), 0));
     p.setPen(cosmetic(QColor(232, 232, 232), 1));
-    for (double x = std::floor(a.x() / step) * step; x <= b.x(); x += step)
-        p.drawLine(toPixel({x, a.y()}), toPixel({x, b.y()}));
-    for (double y = std::floor(a.y() / step) * step; y <= b.y(); y += step)
-        p.drawLine(toPixel({a.x(), y}), toPixel({b.x(), y}));
+    // counted, not accumulated: far from the origin x + step may round back to x
+    const double kx0 = std::floor(a.x() / step), kx1 = std::ceil(b.x() / step);
+    const double ky0 = std::floor(a.y() / step), ky1 = std::ceil(b.y() / step);
+    const bool countable =
+        std::max({std::abs(kx0), std::abs(kx1), std::abs(ky0), std::abs(ky1)}) < 1e15;
+    if (countable && kx1 - kx0 < 2000 && ky1 - ky0 < 2000) {
+        for (double k = kx0; k <= kx1; ++k)
+            p.drawLine(toPixel({k * step, a.y()}), toPixel({k * step, b.y()}));
+        for (double k = ky0; k <= ky1; ++k)
+            p.drawLine(toPixel({a.x(), k * step}), toPixel({b.x(), k * step}));
+    }
     p.setPen(cosmetic(QColor(200, 200, 200), 1));
     p.drawLine(toPixel({a.x(), 0}), toPixel({b.x(), 0}));
     p.drawLine(toPixel({0, a.y()}), toPixel({0, b.y()}));
