@@ -142,6 +142,7 @@ class TestClassroom : public QObject {
     void plotContextMenuExports();
     void plotTitleDoesNotOverlapTicks();
     void legendsAreCompact();
+    void methodsTitlesAboveAndLegendShort();
 
   private:
     void choosePreset(const char* name);
@@ -971,6 +972,44 @@ void TestClassroom::legendsAreCompact() {
         QVERIFY(legend->outerRect().height() < 0.2 * plot->height());
         QVERIFY(!legend->outerRect().intersects(plot->axisRect()->rect()));
         QVERIFY(legend->font().pointSizeF() <= plot->font().pointSizeF());
+    }
+}
+
+void TestClassroom::methodsTitlesAboveAndLegendShort() {
+    choosePreset("line");
+    MethodsPanel* panel = m_window->methodsPanel();
+    m_window->showMethodsDock();
+    panel->start();
+    panel->waitForFinished();
+    QCustomPlot* plot = panel->plot();
+    plot->replot();
+    QCOMPARE(plot->axisRectCount(), 2);
+    for (QCPAxisRect* rect : plot->axisRects()) {
+        // the title is the top axis's label, outside the frame; nothing is inset over the data
+        QCPAxis* top = rect->axis(QCPAxis::atTop);
+        QVERIFY(top->visible() && !top->label().isEmpty());
+        QVERIFY(!top->tickLabels());
+        for (int i = 0; i < rect->insetLayout()->elementCount(); ++i)
+            QVERIFY(!qobject_cast<QCPTextElement*>(rect->insetLayout()->elementAt(i)));
+        // one entry per method and a single one for every chosen star
+        int methods = 0;
+        for (QCPAbstractPlottable* p : rect->plottables())
+            methods += p->name().startsWith(QLatin1String("chosen: ")) ? 0 : 1;
+        QCPLegend* legend = nullptr;
+        for (QCPLayoutElement* e : plot->plotLayout()->elements(true))
+            if (auto* l = qobject_cast<QCPLegend*>(e)) {
+                bool mine = false;
+                for (int i = 0; i < l->itemCount(); ++i)
+                    if (auto* item = qobject_cast<QCPPlottableLegendItem*>(l->item(i)))
+                        mine = mine || item->plottable()->keyAxis()->axisRect() == rect;
+                if (mine)
+                    legend = l;
+            }
+        QVERIFY(legend);
+        QVERIFY2(
+            legend->itemCount() <= methods + 1,
+            qPrintable(
+                QStringLiteral("%1 entries for %2 methods").arg(legend->itemCount()).arg(methods)));
     }
 }
 
