@@ -1,4 +1,5 @@
 #pragma once
+#include "common/input_error.h"
 #include "scene/scene.h"
 
 #include <optional>
@@ -24,6 +25,11 @@ HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args);
 
 /// Parses a whole string as a finite double; throws InputError(where) otherwise.
 double parseNumber(const std::string& text, const std::string& where);
+
+/// The same error with the command-line option in place of the scene field the core names
+/// (speed -> --vT or --vs by the mode, t_end -> --t-end, preset, system, mode, corners,
+/// scene_file); other errors are returned unchanged.
+InputError withOptionNames(const InputError& error, SpeedMode mode);
 
 /// The usage text printed by --help.
 std::string headlessUsage();

@@ -19,7 +19,7 @@ constexpr double kMaxTurnPerPanel = 1.0;  // rad; keeps the unwrapping of phi un
 constexpr double kStiffScale = 100.0;
 
 std::string place(const Curve& c, double u) {
-    return "path at " + c.parameterName() + " = " + formatNumber(u);
+    return "path at " + c.parameterName() + " = " + formatNumber(c.parameterValue(u));
 }
 
 bool finite(const CurvePoint& p) {
@@ -117,9 +117,9 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve) : m_curve(std::move(cur
     double u0 = c.u0(), u1 = c.u1();
     if (!std::isfinite(u0) || !std::isfinite(u1) || !(u0 < u1))
         throw InputError(c.parameterName() + "-range",
-                         "needs two finite numbers " + c.parameterName() + "0 < " +
-                             c.parameterName() + "1, got " + formatNumber(u0) + ", " +
-                             formatNumber(u1));
+                         "needs two different finite numbers " + c.parameterName() + "0, " +
+                             c.parameterName() + "1, got " + formatNumber(c.parameterValue(u0)) +
+                             ", " + formatNumber(c.parameterValue(u1)));
 
     // a coarse look at the whole curve sets the scales of the refinement
     double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;

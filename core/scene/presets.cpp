@@ -46,7 +46,7 @@ Scene presetScene(const std::string& name) {
         p.from = 0;
         p.to = 4 * std::numbers::pi;
     } else {
-        throw InputError("--preset",
+        throw InputError("preset",
                          "unknown preset '" + name + "' (use line, circle, catenary or sinusoid)");
     }
     return s;

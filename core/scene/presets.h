@@ -10,7 +10,7 @@ namespace chaplygin {
 /// for the sinusoid. The paper leaves m, a, the line's A and B and the circle's R open; the
 /// presets take m = 1, a = 0.5, A = 0.5, B = 1, R = 2.
 std::vector<std::string> presetNames();
-/// Throws InputError("--preset") for unknown names.
+/// Throws InputError("preset") for unknown names.
 Scene presetScene(const std::string& name);
 /// One sentence for the GUI and the docs.
 std::string presetDescription(const std::string& name);
