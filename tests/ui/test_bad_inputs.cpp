@@ -185,6 +185,14 @@ void TestBadInputs::badGraphExpression_data() {
     QTest::newRow("huge exponent")
         << "0e112222222222" << 0.0 << 1.0 << "the number '0e112222222222' is out of range";
     QTest::newRow("overflow") << "10^400*x" << 0.0 << 1.0 << "overflows";
+    QTest::newRow("overflowing power")
+        << "exp((x^(2+(x)^(1123356))*+2)^(2^(11233523356))*x)" << 0.0 << 1.0
+        << "position 31: a constant overflows double precision";
+    QString product = QStringLiteral("x");
+    for (int i = 1; i < 400; ++i)
+        product += QStringLiteral("*(x+%1)").arg(i);
+    QTest::newRow("product of 400 factors")
+        << product << 0.0 << 1.0 << "too complex to differentiate";
     QTest::newRow("20000 characters") << QStringLiteral("1+").repeated(9999) + QStringLiteral("x")
                                       << 0.0 << 1.0 << "characters long";
     QTest::newRow("3000 nested parentheses")
