@@ -4,6 +4,7 @@
 #include "scene/presets.h"
 #include "scene/scene_json.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -33,8 +34,8 @@ std::pair<double, double> parseRange(const std::string& text, const std::string&
     if (parts.size() != 2)
         throw InputError(option, "expects two numbers FROM,TO, got '" + text + "'");
     double a = parseNumber(trim(parts[0]), option), b = parseNumber(trim(parts[1]), option);
-    if (!(a < b))
-        throw InputError(option, "FROM must be less than TO, got " + text);
+    if (a == b)
+        throw InputError(option, "FROM and TO must differ (TO < FROM runs backwards), got " + text);
     return {a, b};
 }
 
@@ -108,7 +109,9 @@ SweepSpec parseSweepSpec(const std::string& text) {
     return spec;
 }
 
-HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args) {
+namespace {
+
+HeadlessOptions parseOptions(const std::vector<std::string>& args) {
     HeadlessOptions o;
     std::optional<std::string> preset, pathExpr, points, corners, scenePath, vT, vS;
     std::optional<std::pair<double, double>> xRange, uRange;
@@ -184,8 +187,11 @@ HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args) {
         } else if (opt == "--times") {
             once();
             std::vector<double> ts;
-            for (const std::string& t : split(value(), ','))
+            for (const std::string& t : split(value(), ',')) {
                 ts.push_back(parseNumber(trim(t), "--times"));
+                if (ts.back() < 0)
+                    throw InputError("--times", "times must be >= 0, got " + trim(t));
+            }
             if (ts.empty())
                 throw InputError("--times", "needs at least one time");
             o.times = ts;
@@ -343,11 +349,40 @@ HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args) {
     return o;
 }
 
+} // namespace
+
+HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args) {
+    try {
+        return parseOptions(args);
+    } catch (const InputError& e) {
+        // the core names the scene's fields (preset, system, ...); here they are options
+        throw withOptionNames(e, SpeedMode::Energy);
+    }
+}
+
+InputError withOptionNames(const InputError& error, SpeedMode mode) {
+    const std::string& field = error.where();
+    std::string option;
+    if (field == "speed")
+        option = mode == SpeedMode::Energy ? "--vT" : "--vs";
+    else if (field == "t_end")
+        option = "--t-end";
+    else if (field == "preset" || field == "system" || field == "mode" || field == "corners")
+        option = "--" + field;
+    else if (field == "scene_file")
+        option = "--scene";
+    else
+        return error;
+    std::string message = error.what();
+    return InputError(option, message.substr(std::min(message.size(), field.size() + 2)));
+}
+
 std::string headlessUsage() {
     return R"(Usage: chaplygin-lab --headless [options]
 Scene (one of):
   --preset line|circle|catenary|sinusoid      the paper's examples with the paper's parameters
-  --path "y=EXPR" --x-range X0,X1             graph path, traversed from X0 to X1
+  --path "y=EXPR" --x-range X0,X1             graph path, traversed from X0 to X1 (X1 < X0:
+                                              from right to left)
   --path "x=EXPR;y=EXPR" --u-range U0,U1      parametric path in u
   --points "x0,y0 x1,y1 ..." [--corners pivot|smooth]   polyline (drawn) path
   --scene FILE                                a scene saved by the app (JSON)
@@ -363,6 +398,7 @@ Output:
   --samples N                                 rows evenly spaced on [0, t_end] (default 501)
   --csv FILE|-                                time series (CSV with a header row)
   --summary FILE|-                            JSON: b, m_eff, path length, duration, models used
+                                              (printed on standard output when no output is given)
   --plots DIR --format png,pdf,svg            the plots, as the app draws them
   --work-precision                            the speed-against-accuracy sweep of every method:
                                               CSV problem,method,tolerance,error,seconds,rhs_evals,chosen;

@@ -1,4 +1,5 @@
 #pragma once
+#include "common/input_error.h"
 #include "lab/parameter_sweep.h"
 #include "scene/scene.h"
 
@@ -33,6 +34,10 @@ double parseNumber(const std::string& text, const std::string& where);
 
 /// Parses --sweep NAME=FROM:TO:COUNT; throws InputError("--sweep").
 SweepSpec parseSweepSpec(const std::string& text);
+/// The same error with the command-line option in place of the scene field the core names
+/// (speed -> --vT or --vs by the mode, t_end -> --t-end, preset, system, mode, corners,
+/// scene_file); other errors are returned unchanged.
+InputError withOptionNames(const InputError& error, SpeedMode mode);
 
 /// The usage text printed by --help.
 std::string headlessUsage();

@@ -41,23 +41,26 @@ QStringList formatList(const HeadlessOptions& o) {
     return formats;
 }
 
-std::vector<MotionSample> rowsFor(const Solution& solution, const HeadlessOptions& o) {
-    if (!o.times)
-        return solution.sample(o.samples);
-    for (double t : *o.times)
+void checkTimes(const Solution& solution, const HeadlessOptions& o) {
+    for (double t : o.times.value_or(std::vector<double>{}))
         if (t < 0 || t > solution.duration())
             throw InputError("--times", formatNumber(t) + " is outside [0, " +
                                             formatNumber(solution.duration()) +
                                             "], the time the body takes along the path");
-    return solution.sampleAt(*o.times);
+}
+
+std::vector<MotionSample> rowsFor(const Solution& solution, const HeadlessOptions& o) {
+    return o.times ? solution.sampleAt(*o.times) : solution.sample(o.samples);
 }
 
 int solveScene(const HeadlessOptions& o, int argc, char** argv) {
     Solution solution = Solution::compute(o.scene);
+    checkTimes(solution, o); // whether or not a CSV is asked for
     if (!o.csvPath.empty())
         writeFileAtomically(o.csvPath, formatCsv(rowsFor(solution, o)));
-    if (!o.summaryPath.empty())
-        writeFileAtomically(o.summaryPath, formatSummary(solution));
+    bool noOutput = o.csvPath.empty() && o.summaryPath.empty() && o.plotsDir.empty();
+    if (!o.summaryPath.empty() || noOutput)
+        writeFileAtomically(noOutput ? "-" : o.summaryPath, formatSummary(solution));
     if (!o.plotsDir.empty()) {
         prepareOffscreen();
         QApplication app(argc, argv);
@@ -134,11 +137,15 @@ int runHeadless(int argc, char** argv) {
             std::fputs(headlessUsage().c_str(), stdout);
             return 0;
         }
-        if (o.sweep)
-            return runSweep(o, argc, argv);
-        if (!o.animationPath.empty())
-            return runAnimation(o, argc, argv);
-        return o.workPrecision ? runWorkPrecisionLab(o, argc, argv) : solveScene(o, argc, argv);
+        try {
+            if (o.sweep)
+                return runSweep(o, argc, argv);
+            if (!o.animationPath.empty())
+                return runAnimation(o, argc, argv);
+            return o.workPrecision ? runWorkPrecisionLab(o, argc, argv) : solveScene(o, argc, argv);
+        } catch (const InputError& e) {
+            throw withOptionNames(e, o.scene.mode);
+        }
     } catch (const InputError& e) {
         std::fprintf(stderr, "chaplygin-lab: %s\n", e.what());
         return 2;

@@ -12,7 +12,7 @@ SpeedMode speedModeFromName(const std::string& name) {
         return SpeedMode::Energy;
     if (name == "speed")
         return SpeedMode::Speed;
-    throw InputError("--mode", "unknown mode '" + name + "' (use energy or speed)");
+    throw InputError("mode", "unknown mode '" + name + "' (use energy or speed)");
 }
 
 std::string speedModeName(SpeedMode mode) {

@@ -258,7 +258,7 @@ MethodCase::MethodCase(const Scene& s, std::shared_ptr<const Path> p)
     if (s.tEnd) {
         tEnd = *s.tEnd;
         if (!std::isfinite(tEnd) || !(tEnd > 0))
-            throw InputError("--t-end", "must be a finite number > 0, got " + formatNumber(tEnd));
+            throw InputError("t_end", "must be a finite number > 0, got " + formatNumber(tEnd));
     }
     controlledEnd = std::min(tEnd, duration);
     freeEnd = tEnd;

@@ -51,10 +51,8 @@ struct TimeLaw::Lazy {
 
 TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
     : m_path(std::move(path)), m_params(params) {
-    const char* option = params.mode == SpeedMode::Energy ? "--vT" : "--vs";
     if (!std::isfinite(params.speed) || !(params.speed > 0))
-        throw InputError(option, "the speed must be a finite number > 0, got " +
-                                     formatNumber(params.speed));
+        throw InputError("speed", "must be a finite number > 0, got " + formatNumber(params.speed));
     const auto& pieces = m_path->pieces();
     m_pieceStart.assign(1, 0.0);
     m_nodeTimes.resize(pieces.size());
@@ -69,7 +67,7 @@ TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
                 throw InputError(
                     "corner at (" + formatNumber(piece.x) + ", " + formatNumber(piece.y) + ")",
                     "constant-speed mode cannot turn a corner (the kinetic energy would be "
-                    "infinite); use --mode energy or --corners smooth");
+                    "infinite); use the constant-energy mode or smooth corners");
             // pivot about P: |phidot| = v_T/b, so it takes b |dphi|/v_T (docs/physics.md §3)
             m_pieceStart.push_back(t0 + params.system.b * std::fabs(piece.phiTo - piece.phiFrom) /
                                             params.speed);

@@ -21,6 +21,8 @@ class Curve {
     virtual double u1() const = 0;
     /// The name of the parameter in messages: "x" for a graph y(x), "u" otherwise.
     virtual std::string parameterName() const = 0;
+    /// The value of that parameter at u, for messages (a reversed range runs through -x).
+    virtual double parameterValue(double u) const { return u; }
     /// Parameter values where a derivative may jump (spline knots); tabulation panels end there.
     virtual std::vector<double> breakpoints() const { return {}; }
     /// True for a straight segment parametrised by arc length (tabulated as one closed-form

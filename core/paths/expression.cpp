@@ -1,6 +1,7 @@
 #include "paths/expression.h"
 
 #include "common/input_error.h"
+#include "paths/expression_constants.h"
 
 #include <ginac/ginac.h>
 #include <muParser.h>
@@ -13,6 +14,7 @@
 #include <mutex>
 #include <set>
 #include <sstream>
+#include <vector>
 
 namespace chaplygin {
 namespace {
@@ -20,6 +22,7 @@ namespace {
 constexpr std::size_t kMaxLength = 4000;
 constexpr int kMaxDepth = 100;
 constexpr std::size_t kMaxDerivativeLength = 15000; // muparser compiles up to 20000
+constexpr double kMaxDerivativeNodes = 20000;       // an estimate, before differentiating
 
 const std::set<std::string> kFunctions = {"sin",  "cos",  "tan", "asin", "acos", "atan", "sinh",
                                           "cosh", "tanh", "exp", "sqrt", "abs",  "ln",   "log"};
@@ -178,6 +181,36 @@ bool hasHugeExponent(const std::string& printed) {
     return false;
 }
 
+// the tree size of e (shared sub-expressions counted each time, as printed) and an estimate of
+// its derivative's: the product rule copies all other factors once per factor, the chain rule
+// copies the argument. Visits at most `budget` nodes, so it is cheap whatever e is.
+struct TreeSize {
+    double size = 0, derivative = 0;
+};
+
+TreeSize treeSize(const GiNaC::ex& e, double& budget) {
+    if (--budget < 0)
+        return {INFINITY, INFINITY};
+    if (e.nops() == 0)
+        return {1, 1};
+    std::vector<TreeSize> ops;
+    double size = 1, derivatives = 0;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+        ops.push_back(treeSize(e.op(i), budget));
+        size += ops.back().size;
+        derivatives += ops.back().derivative;
+    }
+    if (!std::isfinite(size))
+        return {INFINITY, INFINITY};
+    double k = double(ops.size());
+    if (GiNaC::is_a<GiNaC::add>(e))
+        return {size, 1 + derivatives};
+    if (GiNaC::is_a<GiNaC::mul>(e))
+        return {size, 1 + k + (k - 1) * (size - 1) + derivatives};
+    // powers, functions: the operands' copies and their derivatives, a few nodes more
+    return {size, 3 * size + derivatives + 8};
+}
+
 void defineCommon(mu::Parser& p) {
     p.DefineConst("pi", M_PI);
     p.DefineConst("e", M_E);
@@ -214,6 +247,8 @@ Expression Expression::compile(const std::string& text, const std::string& varia
     } catch (const mu::Parser::exception_type& e) {
         throw InputError(at(label, static_cast<std::size_t>(std::max(0, e.GetPos()))), e.GetMsg());
     }
+    // constants are evaluated in double first: GiNaC would represent 2^(10^10) exactly
+    checkConstantSubexpressions(text, variable, label);
 
     // derivatives: GiNaC, printed back into muparser syntax
     GiNaC::realsymbol sym(variable);
@@ -230,6 +265,13 @@ Expression Expression::compile(const std::string& text, const std::string& varia
         throwGinacError(e, label);
     }
     for (int k = 1; k <= 3; ++k) {
+        // refuse before GiNaC builds and prints a derivative of millions of terms
+        double budget = kMaxDerivativeNodes;
+        TreeSize estimate = treeSize(f, budget);
+        if (!(estimate.derivative <= kMaxDerivativeNodes))
+            throw InputError(label, "too complex to differentiate: derivative " +
+                                        std::to_string(k) + " would have more than " +
+                                        std::to_string(int(kMaxDerivativeNodes)) + " terms");
         try {
             f = f.diff(sym); // GiNaC evaluates constants here too, e.g. 0^e when differentiated
         } catch (const std::exception& e) {

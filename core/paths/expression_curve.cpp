@@ -4,27 +4,29 @@
 
 namespace chaplygin {
 
+namespace {
+
+// r(sign u) differentiated in u: odd derivatives change sign with the direction
+CurvePoint oriented(const Jet3& x, const Jet3& y, double sign) {
+    return {x.v, y.v, sign * x.d1, sign * y.d1, x.d2, y.d2, sign * x.d3, sign * y.d3};
+}
+
+} // namespace
+
 GraphCurve::GraphCurve(Expression y, double x0, double x1)
-    : m_y(std::move(y)), m_x0(x0), m_x1(x1) {}
+    : m_y(std::move(y)), m_x0(x0), m_x1(x1), m_sign(x0 > x1 ? -1.0 : 1.0) {}
 
 CurvePoint GraphCurve::eval(double u) const {
-    Jet3 f = m_y.jet(u);
-    CurvePoint p;
-    p.x = u;
-    p.y = f.v;
-    p.dx = 1;
-    p.dy = f.d1;
-    p.ddy = f.d2;
-    p.dddy = f.d3;
-    return p;
+    double x = m_sign * u;
+    return oriented({x, 1, 0, 0}, m_y.jet(x), m_sign);
 }
 
 ParametricCurve::ParametricCurve(Expression x, Expression y, double u0, double u1)
-    : m_x(std::move(x)), m_y(std::move(y)), m_u0(u0), m_u1(u1) {}
+    : m_x(std::move(x)), m_y(std::move(y)), m_u0(u0), m_u1(u1), m_sign(u0 > u1 ? -1.0 : 1.0) {}
 
 CurvePoint ParametricCurve::eval(double u) const {
-    Jet3 fx = m_x.jet(u), fy = m_y.jet(u);
-    return {fx.v, fy.v, fx.d1, fy.d1, fx.d2, fy.d2, fx.d3, fy.d3};
+    double v = m_sign * u;
+    return oriented(m_x.jet(v), m_y.jet(v), m_sign);
 }
 
 SegmentCurve::SegmentCurve(double x0, double y0, double x1, double y1)

@@ -142,7 +142,7 @@ CornerMode cornerModeFromName(const std::string& name) {
         return CornerMode::Pivot;
     if (name == "smooth")
         return CornerMode::Smooth;
-    throw InputError("--corners", "unknown corner mode '" + name + "' (use pivot or smooth)");
+    throw InputError("corners", "unknown corner mode '" + name + "' (use pivot or smooth)");
 }
 
 std::string cornerModeName(CornerMode mode) {

@@ -22,7 +22,7 @@ struct PathSource {
     bool operator==(const PathSource&) const = default;
 };
 
-/// "pivot" | "smooth" <-> CornerMode; throws InputError("--corners") otherwise.
+/// "pivot" | "smooth" <-> CornerMode; throws InputError("corners") otherwise.
 CornerMode cornerModeFromName(const std::string& name);
 std::string cornerModeName(CornerMode mode);
 

@@ -20,7 +20,7 @@ constexpr double kMaxTurnPerPanel = 1.0;  // rad; keeps the unwrapping of phi un
 constexpr double kStiffScale = 100.0;
 
 std::string place(const Curve& c, double u) {
-    return "path at " + c.parameterName() + " = " + formatNumber(u);
+    return "path at " + c.parameterName() + " = " + formatNumber(c.parameterValue(u));
 }
 
 bool finite(const CurvePoint& p) {
@@ -301,9 +301,9 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve) : m_curve(std::move(cur
     double u0 = c.u0(), u1 = c.u1();
     if (!std::isfinite(u0) || !std::isfinite(u1) || !(u0 < u1))
         throw InputError(c.parameterName() + "-range",
-                         "needs two finite numbers " + c.parameterName() + "0 < " +
-                             c.parameterName() + "1, got " + formatNumber(u0) + ", " +
-                             formatNumber(u1));
+                         "needs two different finite numbers " + c.parameterName() + "0, " +
+                             c.parameterName() + "1, got " + formatNumber(c.parameterValue(u0)) +
+                             ", " + formatNumber(c.parameterValue(u1)));
 
     if (c.straight()) {
         // one panel, closed form: no scales to find, nothing to refine

@@ -57,7 +57,7 @@ Scene presetScene(const std::string& name) {
     const std::vector<std::string> names = presetNames();
     for (std::size_t i = 0; i < names.size(); ++i)
         known += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
-    throw InputError("--preset", "unknown preset '" + name + "' (use " + known + ")");
+    throw InputError("preset", "unknown preset '" + name + "' (use " + known + ")");
 }
 
 std::string presetDescription(const std::string& name) {

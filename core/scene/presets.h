@@ -11,7 +11,7 @@ namespace chaplygin {
 /// presets take m = 1, a = 0.5, A = 0.5, B = 1, R = 2. They are the files of
 /// resources/scenes/presets, compiled in (scene/scene_resources.h).
 std::vector<std::string> presetNames();
-/// Throws InputError("--preset") for unknown names.
+/// Throws InputError("preset") for unknown names.
 Scene presetScene(const std::string& name);
 /// One sentence for the GUI and the docs.
 std::string presetDescription(const std::string& name);

@@ -339,11 +339,11 @@ Scene sceneFromJson(const std::string& text) {
 Scene loadSceneFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in)
-        throw InputError("--scene", "cannot open '" + path + "'");
+        throw InputError("scene_file", "cannot open '" + path + "'");
     std::ostringstream buf;
     buf << in.rdbuf();
     if (in.bad())
-        throw InputError("--scene", "cannot read '" + path + "'");
+        throw InputError("scene_file", "cannot read '" + path + "'");
     return sceneFromJson(buf.str());
 }
 

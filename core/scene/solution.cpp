@@ -40,12 +40,12 @@ double horizonOf(const Scene& scene, double duration) {
         return duration;
     double t = *scene.tEnd;
     if (!std::isfinite(t) || !(t > 0))
-        throw InputError("--t-end", "must be a finite number > 0, got " + formatNumber(t));
+        throw InputError("t_end", "must be a finite number > 0, got " + formatNumber(t));
     if (t > duration * (1 + 1e-12))
-        throw InputError("--t-end", formatNumber(t) +
-                                        " s is beyond the end of the path, which the body "
-                                        "reaches at t = " +
-                                        formatNumber(duration) + " s");
+        throw InputError("t_end", formatNumber(t) +
+                                      " s is beyond the end of the path, which the body "
+                                      "reaches at t = " +
+                                      formatNumber(duration) + " s");
     return std::min(t, duration);
 }
 

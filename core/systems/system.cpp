@@ -149,7 +149,7 @@ SystemKind systemKindFromName(const std::string& name) {
         return SystemKind::Disk;
     if (name == "carriage")
         return SystemKind::Carriage;
-    throw InputError("--system", "unknown system '" + name + "' (use sleigh, disk or carriage)");
+    throw InputError("system", "unknown system '" + name + "' (use sleigh, disk or carriage)");
 }
 
 std::string systemKindName(SystemKind kind) {

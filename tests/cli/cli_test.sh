@@ -148,7 +148,7 @@ bad_option)
   expect_err "needs a value"
   ;;
 bad_range)
-  run 2 --path "y=x" --x-range 1,0
+  run 2 --path "y=x" --x-range 1,1
   expect_err "x-range"
   run 2 --path "y=x"
   expect_err "needs --x-range"
@@ -213,6 +213,65 @@ work_precision)
   grep -q '"controlled_reference"' "$work/wp.json" || fail "summary names no reference"
   head -c 8 "$work/plots/work_precision.png" | od -An -c | grep -q 'P   N   G' || fail "diagram PNG"
   grep -q '<svg' "$work/plots/work_precision.svg" || fail "diagram SVG"
+  ;;
+summary_by_default)
+  # no output option: the summary goes to standard output, nothing else is written
+  (cd "$work" && "$exe" --headless --preset circle >"$work/out" 2>"$work/err") || fail "exit $?"
+  python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); assert abs(d["path_length"] - 4*3.141592653589793) < 1e-12, d' \
+    "$work/out" || fail "summary on stdout: $(head -c 300 "$work/out")"
+  [ "$(ls "$work" | sort | tr '\n' ' ')" = "err out " ] || fail "files written: $(ls "$work")"
+  ;;
+options_checked_without_output)
+  run 2 --preset line --times -1
+  expect_err "^chaplygin-lab: --times: times must be >= 0, got -1"
+  run 2 --preset line --times 0,99
+  expect_err "--times: 99 is outside"
+  run 2 --preset line --samples 1
+  expect_err "--samples"
+  run 2 --preset line --format gif
+  expect_err "--format"
+  run 2 --preset line --vT -2
+  expect_err "^chaplygin-lab: --vT: must be a finite number > 0, got -2"
+  run 2 --preset line --mode speed --vs 0
+  expect_err "^chaplygin-lab: --vs: must be a finite number > 0, got 0"
+  run 2 --preset line --t-end -1
+  expect_err "^chaplygin-lab: --t-end: must be a finite number > 0"
+  [ -s "$work/out" ] && fail "output despite the error: $(head -c 200 "$work/out")"
+  ;;
+reversed_graph_line)
+  # y = 1 + x/2 from x = 2 to x = -1.5, v_T = 1.3: a straight run at v_T along (-2, -1)/sqrt(5)
+  run 0 --path "y=1+x/2" --x-range 2,-1.5 --vT 1.3 --times 0,0.7,1.9,2.5 --csv "$work/c.csv" --summary "$work/s.json"
+  below "$(max_abs "$work/c.csv" 3 '2 - 1.3*$1*2/sqrt(5)')" 1e-12 "x"
+  below "$(max_abs "$work/c.csv" 4 '2 - 1.3*$1/sqrt(5)')" 1e-12 "y"
+  below "$(max_abs "$work/c.csv" 2 '1.3*$1')" 1e-12 "s"
+  below "$(awk -F, 'NR>1 { d = cos($5) + 2/sqrt(5); e = sin($5) + 1/sqrt(5); m = (d<0?-d:d) + (e<0?-e:e) } END { print m }' "$work/c.csv")" 1e-14 "heading"
+  grep -q '"path_length": 3.9131189606' "$work/s.json" || fail "length $(grep path_length "$work/s.json")" # 3.5 sqrt(5)/2
+  run 2 --path "y=x" --x-range 1,1
+  expect_err "x-range: FROM and TO must differ"
+  ;;
+reversed_parametric_circle)
+  # the circle of radius 2 clockwise from u = pi to 0 (b = 1, m a = 0.5, v_T = 1):
+  # x = -2 cos(t/sqrt(5)), y = 2 sin(t/sqrt(5)), psi = atan2(2, -1), lambda = -m a phidot > 0
+  run 0 --path "x=2*cos(u);y=2*sin(u)" --u-range 3.141592653589793,0 --param m=1 --param a=0.5 \
+    --param b=1 --vT 1 --times 0,0.5,2,4.5,7 --csv "$work/c.csv"
+  below "$(max_abs "$work/c.csv" 3 '-2*cos($1/sqrt(5))')" 1e-9 "x"
+  below "$(max_abs "$work/c.csv" 4 '2*sin($1/sqrt(5))')" 1e-9 "y"
+  below "$(max_abs "$work/c.csv" 6 'atan2(2, -1)')" 1e-12 "psi"
+  below "$(max_abs "$work/c.csv" 8 '0.5/sqrt(5)')" 1e-12 "lambda"
+  ;;
+expression_blowup)
+  # a typo that once took seconds and gigabytes inside the symbolic differentiation
+  expr='exp((x^(2+(x)^(1123356))*+2)^(2^(11233523356))*x)'
+  run 2 --path "y=$expr" --x-range 0,1
+  expect_err "y(x), position 31: a constant overflows double precision"
+  if [ -x /usr/bin/time ]; then
+    /usr/bin/time -f "%M %U %S" -o "$work/time" "$exe" --headless --path "y=$expr" --x-range 0,1 \
+      >/dev/null 2>&1
+    read -r kb user sys < <(tail -n 1 "$work/time") # after "Command exited with non-zero status 2"
+    echo "peak RSS ${kb} KB, CPU ${user} s user + ${sys} s system"
+    [ "$kb" -le 102400 ] || fail "peak RSS ${kb} KB > 100 MB"
+    below "$(awk -v u="$user" -v s="$sys" 'BEGIN { print u + s }')" 0.5 "CPU seconds"
+  fi
   ;;
 help)
   run 0 --help

@@ -5,7 +5,12 @@
 #include <QFile>
 #include <QString>
 
+#include <cerrno>
 #include <csignal>
+#include <cstring>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -21,9 +26,29 @@ inline bool writeBytes(const QString& path, const QByteArray& bytes) {
     return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
 }
 
-/// Makes a private copy of /dev/full (char device 1,7) at path; false where mknod is forbidden.
-inline bool makeFullDevice(const QString& path) {
-    return ::mknod(QFile::encodeName(path).constData(), S_IFCHR | 0666, makedev(1, 7)) == 0;
+/// Makes a private copy of /dev/full (char device 1,7) at path and checks that writing to it
+/// fails with ENOSPC. False, with the reason in *why, where mknod is forbidden or the copy is
+/// unusable (a file system mounted nodev, a container's device filter).
+inline bool makeFullDevice(const QString& path, QString* why = nullptr) {
+    const QByteArray name = QFile::encodeName(path);
+    auto refuse = [&](const char* what) {
+        if (why)
+            *why = QStringLiteral("%1: %2").arg(QLatin1String(what),
+                                                QString::fromLocal8Bit(std::strerror(errno)));
+        ::unlink(name.constData());
+        return false;
+    };
+    if (::mknod(name.constData(), S_IFCHR | 0666, makedev(1, 7)) != 0)
+        return refuse("mknod of a /dev/full copy is not allowed here");
+    int fd = ::open(name.constData(), O_WRONLY);
+    if (fd < 0)
+        return refuse("a /dev/full copy cannot be opened here");
+    errno = 0;
+    bool full = ::write(fd, "x", 1) < 0 && errno == ENOSPC;
+    ::close(fd);
+    if (!full)
+        return refuse("a /dev/full copy does not report a full device here");
+    return true;
 }
 
 /// Limits the size of files this process writes (a full disk that root cannot bypass); SIGXFSZ

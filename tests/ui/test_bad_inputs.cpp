@@ -185,6 +185,14 @@ void TestBadInputs::badGraphExpression_data() {
     QTest::newRow("huge exponent")
         << "0e112222222222" << 0.0 << 1.0 << "the number '0e112222222222' is out of range";
     QTest::newRow("overflow") << "10^400*x" << 0.0 << 1.0 << "overflows";
+    QTest::newRow("overflowing power")
+        << "exp((x^(2+(x)^(1123356))*+2)^(2^(11233523356))*x)" << 0.0 << 1.0
+        << "position 31: a constant overflows double precision";
+    QString product = QStringLiteral("x");
+    for (int i = 1; i < 400; ++i)
+        product += QStringLiteral("*(x+%1)").arg(i);
+    QTest::newRow("product of 400 factors")
+        << product << 0.0 << 1.0 << "too complex to differentiate";
     QTest::newRow("20000 characters") << QStringLiteral("1+").repeated(9999) + QStringLiteral("x")
                                       << 0.0 << 1.0 << "characters long";
     QTest::newRow("3000 nested parentheses")
@@ -228,12 +236,19 @@ void TestBadInputs::parametricCusp() {
 }
 
 void TestBadInputs::reversedRange() {
+    // an empty range is refused; a reversed one runs from right to left
     Snapshot before = snapshot();
-    typePath(QStringLiteral("x^2"), 2.0, 1.0);
+    typePath(QStringLiteral("x^2"), 1.5, 1.5);
     QString error = m_window->pathPanel()->errorText();
-    QVERIFY2(error.contains(QStringLiteral("range")) && error.contains(QStringLiteral("2")),
+    QVERIFY2(error.contains(QStringLiteral("range")) && error.contains(QStringLiteral("1.5")),
              qPrintable(error));
     verifyKept(before);
+    typePath(QStringLiteral("x^2"), 2.0, 1.0);
+    QVERIFY2(m_window->pathPanel()->errorText().isEmpty(),
+             qPrintable(m_window->pathPanel()->errorText()));
+    const Path& path = *m_window->document()->solution()->path();
+    QCOMPARE(path.start().x, 2.0);
+    QCOMPARE(path.end().x, 1.0);
 }
 
 void TestBadInputs::badParameter_data() {
@@ -447,7 +462,7 @@ void TestBadInputs::saveOnFullDiskKeepsOldFile() {
     {
         FileSizeLimit limit(64);
         if (!limit.ok())
-            QSKIP("setrlimit(RLIMIT_FSIZE) is not allowed here");
+            QSKIP("setrlimit(RLIMIT_FSIZE) is not allowed here: no full disk to simulate");
         QVERIFY(!m_window->saveFile(file));
     }
     QString error = m_window->lastFileError();
@@ -466,8 +481,9 @@ void TestBadInputs::saveOnFullDiskKeepsOldFile() {
 void TestBadInputs::saveToFullDevice() {
     QTemporaryDir dir;
     QString full = dir.filePath(QStringLiteral("scene.json"));
-    if (!makeFullDevice(full))
-        QSKIP("mknod is not allowed here");
+    QString why;
+    if (!makeFullDevice(full, &why))
+        QSKIP(qPrintable(why));
     makeUnsaved();
     QVERIFY(!m_window->saveFile(full));
     QVERIFY2(m_window->lastFileError().contains(QStringLiteral("No space left")),
@@ -488,7 +504,7 @@ void TestBadInputs::exportCsvUnderFaults() {
     {
         FileSizeLimit limit(256);
         if (!limit.ok())
-            QSKIP("setrlimit(RLIMIT_FSIZE) is not allowed here");
+            QSKIP("setrlimit(RLIMIT_FSIZE) is not allowed here: no full disk to simulate");
         QVERIFY(!m_window->exportCsvTo(csv));
     }
     QVERIFY2(m_window->lastFileError().contains(QStringLiteral("short write")),
@@ -520,7 +536,7 @@ void TestBadInputs::exportPlotsUnderFaults() {
     {
         FileSizeLimit limit(512);
         if (!limit.ok())
-            QSKIP("setrlimit(RLIMIT_FSIZE) is not allowed here");
+            QSKIP("setrlimit(RLIMIT_FSIZE) is not allowed here: no full disk to simulate");
         QVERIFY(!m_window->exportPlotsTo(plots, png));
     }
     QVERIFY2(m_window->lastFileError().contains(QStringLiteral("psi.png")),

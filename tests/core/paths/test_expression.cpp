@@ -5,7 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <ctime>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace chaplygin;
 
@@ -89,4 +92,62 @@ TEST(Expression, ErrorsNamePositionAndProblem) {
     EXPECT_NE(errorOf("1e309").find("out of range"), std::string::npos);
     std::string deep = std::string(150, '(') + "x" + std::string(150, ')');
     EXPECT_NE(errorOf(deep).find("nested deeper"), std::string::npos);
+}
+
+// Constants are evaluated in double before GiNaC sees them: a constant power that overflows is
+// refused at once with its position, instead of after seconds and gigabytes of symbolic work.
+TEST(Expression, OverflowingConstantsAreRejectedCheaply) {
+    const std::string typo = "exp((x^(2+(x)^(1123356))*+2)^(2^(11233523356))*x)";
+    std::clock_t start = std::clock();
+    std::string message = errorOf(typo);
+    double cpuSeconds = double(std::clock() - start) / CLOCKS_PER_SEC;
+    EXPECT_EQ(message, "y(x), position 31: a constant overflows double precision (beyond 1.8e308)");
+    EXPECT_LT(cpuSeconds, 0.1);
+    // each overflowing constant is named where it starts, however it is written
+    for (const auto& [text, position] :
+         std::vector<std::pair<std::string, int>>{{"x + 2^(10^9)", 5},
+                                                  {"sin(x)*(1e200*1e200)", 9},
+                                                  {"x^2 - exp(800)", 7},
+                                                  {"cosh(-1000)*x", 1},
+                                                  {"x*(-(pi^700))", 6}}) {
+        EXPECT_EQ(errorOf(text), "y(x), position " + std::to_string(position) +
+                                     ": a constant overflows double precision (beyond 1.8e308)")
+            << text;
+    }
+    // large but finite constants, poles and division by zero keep their own handling
+    EXPECT_NEAR(Expression::compile("x*2^1000/2^999", "x", "f").value(3), 6, 1e-15);
+    EXPECT_NEAR(Expression::compile("exp(700)*x", "x", "f").jet(1).d1, std::exp(700.0),
+                1e-14 * std::exp(700.0));
+    EXPECT_NE(errorOf("x + 1/0").find("division by zero"), std::string::npos) << errorOf("x + 1/0");
+}
+
+// A derivative of millions of terms is refused from an estimate of its size, before GiNaC builds
+// and prints it: a product of n factors has n products of n - 1 factors as its derivative.
+TEST(Expression, HugeDerivativesAreRefusedBeforeTheyAreBuilt) {
+    std::string product = "(x+1)";
+    for (int i = 2; i < 500; ++i)
+        product += "*(x+" + std::to_string(i) + ")";
+    std::string nested = "x";
+    for (int i = 0; i < 60; ++i)
+        nested = "tan(" + nested + ")";
+    for (const std::string& text : {product, nested}) {
+        std::clock_t start = std::clock();
+        std::string message = errorOf(text);
+        double cpuSeconds = double(std::clock() - start) / CLOCKS_PER_SEC;
+        EXPECT_NE(message.find("y(x): too complex to differentiate: derivative "),
+                  std::string::npos)
+            << message;
+        EXPECT_LT(cpuSeconds, 0.1) << text.substr(0, 40);
+    }
+    // a product of 7 factors (a third derivative of 210 products) is fine, and exact:
+    // d/dx prod (x + i) at x = 0 is 7! H_7
+    std::string seven = "(x+1)";
+    for (int i = 2; i <= 7; ++i)
+        seven += "*(x+" + std::to_string(i) + ")";
+    double factorial = 1, harmonic = 0;
+    for (int i = 1; i <= 7; ++i) {
+        factorial *= i;
+        harmonic += 1.0 / i;
+    }
+    EXPECT_NEAR(Expression::compile(seven, "x", "f").jet(0).d1 / (factorial * harmonic), 1, 1e-14);
 }

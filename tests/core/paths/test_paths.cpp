@@ -49,6 +49,48 @@ TEST(Paths, ParabolaArcLengthCurvatureAndHeading) {
     }
 }
 
+// x0 > x1: the same parabola from right to left, so the parameter is u = -x; heading,
+// curvature and arc length change with the direction, dkappa/ds does not
+TEST(Paths, ReversedGraphRunsFromRightToLeft) {
+    auto path = buildPath(graph("x^2", 1, -1));
+    const PathTable& t = *path->pieces().front().table;
+    auto arc = [](double x) { return x * std::sqrt(1 + 4 * x * x) / 2 + std::asinh(2 * x) / 4; };
+    EXPECT_NEAR(path->length(), arc(1) - arc(-1), 1e-12);
+    EXPECT_EQ(path->start().x, 1);
+    EXPECT_EQ(path->end().x, -1);
+    const double phi0 = path->start().phi; // the tangent (-1, -2)/sqrt(5)
+    EXPECT_NEAR(std::cos(phi0), -1 / std::sqrt(5.0), 1e-15);
+    EXPECT_NEAR(std::sin(phi0), -2 / std::sqrt(5.0), 1e-15);
+    for (double x : {0.8, 0.31, 0.0, -0.7}) {
+        PathNode n = t.at(-x);
+        EXPECT_NEAR(n.x, x, 1e-15);
+        EXPECT_NEAR(n.y, x * x, 1e-15);
+        EXPECT_NEAR(n.s, arc(1) - arc(x), 1e-12);
+        EXPECT_NEAR(n.kappa, -2 / std::pow(1 + 4 * x * x, 1.5), 1e-13); // a right turn
+        EXPECT_NEAR(n.dkappa, -24 * x / std::pow(1 + 4 * x * x, 3), 1e-12);
+        EXPECT_NEAR(n.phi - phi0, std::atan(2 * x) - std::atan(2.0), 1e-14);
+        EXPECT_NEAR(t.uAtArcLength(n.s), -x, 1e-13);
+    }
+    // messages name the x of the graph, not the internal parameter
+    EXPECT_NE(
+        errorOf(graph("sqrt(x)", 1, -1)).find("path at x = 0: the path has no finite tangent"),
+        std::string::npos)
+        << errorOf(graph("sqrt(x)", 1, -1));
+    // a reversed parametric range: the unit circle clockwise from u = pi to u = 0
+    PathSource p;
+    p.kind = PathKind::Parametric;
+    p.xOfU = "cos(u)";
+    p.yOfU = "sin(u)";
+    p.from = std::numbers::pi;
+    p.to = 0;
+    auto circle = buildPath(p);
+    EXPECT_NEAR(circle->length(), std::numbers::pi, 1e-12);
+    EXPECT_NEAR(circle->start().x, -1, 1e-15);
+    EXPECT_NEAR(circle->end().x, 1, 1e-15);
+    EXPECT_NEAR(circle->end().phi - circle->start().phi, -std::numbers::pi, 1e-12);
+    EXPECT_NEAR(circle->pieces().front().table->at(-std::numbers::pi / 2).kappa, -1, 1e-13);
+}
+
 TEST(Paths, HeadingIsUnwrappedAroundSeveralTurns) {
     PathSource p;
     p.kind = PathKind::Parametric;
@@ -77,7 +119,7 @@ TEST(Paths, DomainProblemsNameTheirPlace) {
                   .find("path at x = -1: the path has no finite tangent"),
               std::string::npos)
         << errorOf(graph("sqrt(1 - x^2)", -1, 1));
-    EXPECT_NE(errorOf(graph("x", 2, 1)).find("x-range"), std::string::npos);
+    EXPECT_NE(errorOf(graph("x", 1, 1)).find("x-range"), std::string::npos);
     PathSource cusp;
     cusp.kind = PathKind::Parametric;
     cusp.xOfU = "u^2";

@@ -1,0 +1,14 @@
+#pragma once
+#include <string>
+
+namespace chaplygin {
+
+/// Cheap checks on a typed expression before any symbolic work: parses it with the
+/// precedence of muparser, evaluates every constant sub-expression in double precision and
+/// throws InputError("<label>, position N") at the first one that overflows (such as
+/// 2^(10^10)), so that GiNaC never meets a number it would take gigabytes to represent.
+/// It also bounds the size of the parse tree. Syntax errors are left to the compiler proper.
+void checkConstantSubexpressions(const std::string& text, const std::string& variable,
+                                 const std::string& label);
+
+} // namespace chaplygin
