@@ -55,7 +55,7 @@ BodyDisplayMenu::BodyDisplayMenu(QWidget* parent) : QMenu(tr("&Bodies"), parent)
         m_style.bodyOpacity = a->data().toDouble();
         emit styleChosen(m_style);
     });
-    setStyle(m_style);
+    setCanvasStyle(m_style);
 }
 
 QAction* BodyDisplayMenu::displayAction(BodyDisplay display) const {
@@ -65,7 +65,7 @@ QAction* BodyDisplayMenu::displayAction(BodyDisplay display) const {
     return nullptr;
 }
 
-void BodyDisplayMenu::setStyle(const CanvasStyle& style) {
+void BodyDisplayMenu::setCanvasStyle(const CanvasStyle& style) {
     m_style = style;
     if (QAction* a = displayAction(style.body))
         a->setChecked(true);

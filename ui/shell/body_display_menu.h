@@ -15,7 +15,7 @@ class BodyDisplayMenu : public QMenu {
     explicit BodyDisplayMenu(QWidget* parent = nullptr);
 
     /// Checks the entries of style without emitting.
-    void setStyle(const CanvasStyle& style);
+    void setCanvasStyle(const CanvasStyle& style);
     const CanvasStyle& chosenStyle() const { return m_style; }
     /// The action of a display mode (tests and shortcuts).
     QAction* displayAction(BodyDisplay display) const;

@@ -327,7 +327,7 @@ void MainWindow::buildMenus() {
 
 void MainWindow::setUserStyle(const CanvasStyle& style) {
     m_presentation->setBaseStyle(style);
-    m_bodyMenu->setStyle(m_presentation->baseStyle());
+    m_bodyMenu->setCanvasStyle(m_presentation->baseStyle());
     if (m_useSettings) {
         QSettings settings;
         m_presentation->baseStyle().save(settings);
