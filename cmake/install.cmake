@@ -13,7 +13,7 @@ add_custom_command(OUTPUT ${man_page}
 add_custom_target(chaplygin_man_page ALL DEPENDS ${man_page})
 install(FILES ${man_page} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 
-install(FILES README.md docs/architecture.md docs/numerics.md docs/physics.md docs/robustness.md
+install(FILES README.md COPYING docs/architecture.md docs/numerics.md docs/physics.md docs/robustness.md
               docs/user-guide.md
         DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY docs/images DESTINATION ${CMAKE_INSTALL_DOCDIR})

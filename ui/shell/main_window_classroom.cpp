@@ -22,9 +22,9 @@ QString MainWindow::aboutText() {
               "motion from the same start.</p>"
               "<p><b>Paper:</b> Antunes, Sigaud, de Moraes, <i>Controlling nonholonomic "
               "Chaplygin systems</i>, Brazilian Journal of Physics (2009).</p>"
-              "<p><b>Licence:</b> not yet chosen by the authors; until it is, ask them before "
-              "redistributing. Third-party components keep their own licences: Qt %2 (LGPL v3), "
-              "QCustomPlot (GPL v3), GiNaC (GPL v2 or later).</p>"
+              "<p><b>Licence:</b> GNU General Public License, version 3 or later (the file "
+              "COPYING). Components keep their own licences: Qt %2 (LGPL v3), QCustomPlot "
+              "(GPL v3), GiNaC (GPL v2 or later), GSL (GPL v3), muparser (BSD).</p>"
               "<p><b>Credits:</b> the Chaplygin Lab contributors; the equations of motion after "
               "the paper above, re-derived in the physics notes (Help).</p>")
         .arg(QStringLiteral(CHAPLYGIN_LAB_VERSION), QString::fromLatin1(qVersion()));
