@@ -197,8 +197,9 @@ TEST(PathTable, DrawnStrokesAreCertifiedWithFewPanels) {
         EXPECT_LE(e.position, 1e-13);
         EXPECT_LE(e.position, 4 * table.bounds().position + 1e-15);
         EXPECT_LE(e.dkappa, 4 * table.bounds().dkappa + 1e-14);
-        if (smoothing > 0)
+        if (smoothing > 0) {
             EXPECT_LE(table.panels().size(), 510u); // 500 knot intervals
+        }
     }
 }
 
