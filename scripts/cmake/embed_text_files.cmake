@@ -16,7 +16,7 @@ foreach(name IN LISTS files)
   endif()
   string(APPEND body "    {\"${name}\", R\"${delimiter}(${text})${delimiter}\"},\n")
 endforeach()
-set(source "// Generated at build time by cmake/embed_text_files.cmake; edit the files it embeds.
+set(source "// Generated at build time by scripts/cmake/embed_text_files.cmake; edit the files it embeds.
 #include \"scene/scene_resources.h\"
 
 namespace chaplygin {

@@ -6,8 +6,8 @@ set(man_page ${PROJECT_BINARY_DIR}/man/chaplygin-lab.1)
 add_custom_command(OUTPUT ${man_page}
   COMMAND ${CMAKE_COMMAND} -E env QT_QPA_PLATFORM=offscreen ASAN_OPTIONS=detect_leaks=0
           ${CMAKE_COMMAND} -DPROGRAM=$<TARGET_FILE:chaplygin-lab> -DOUTPUT=${man_page}
-          -DVERSION=${PROJECT_VERSION} -P ${PROJECT_SOURCE_DIR}/cmake/man_page.cmake
-  DEPENDS chaplygin-lab ${PROJECT_SOURCE_DIR}/cmake/man_page.cmake
+          -DVERSION=${PROJECT_VERSION} -P ${PROJECT_SOURCE_DIR}/scripts/cmake/man_page.cmake
+  DEPENDS chaplygin-lab ${PROJECT_SOURCE_DIR}/scripts/cmake/man_page.cmake
   COMMENT "Writing the man page from --help"
   VERBATIM)
 add_custom_target(chaplygin_man_page ALL DEPENDS ${man_page})
