@@ -303,13 +303,34 @@ void TestInstruments::pinsUpToFiveOnCanvasAndPlots() {
     const double t = 5.0;
     m_window->playback()->seek(t);
     SceneCanvas* canvas = m_window->canvas();
+    canvas->setFollowBody(true); // close up on the live body, with the pins behind it
+    canvas->zoomBy(4);
     QImage image = canvas->grab().toImage();
-    for (int i : {0, 4}) {
+    // (the pins' dots are checked where no free or vakonomic body is drawn over them)
+    MotionSample live = m_window->document()->solution()->at(t);
+    int checked = 0;
+    for (int i = 0; i < 5; ++i) {
         MotionSample m = pins->run(i).solution->at(t);
+        bool covered = false;
+        // (the live body, b = 0.55, runs ahead: its small board covers only a pin right at P)
+        for (QPointF other : {QPointF(live.free.x, live.free.y), QPointF(live.vak.x, live.vak.y)})
+            covered = covered || std::hypot(m.x - other.x(), m.y - other.y()) < 3.0;
+        covered = covered || std::hypot(m.x - live.x, m.y - live.y) < 0.3;
         QPointF px = canvas->toPixel({m.x, m.y}) * image.devicePixelRatio();
+        for (int j = 0; j < 5; ++j) {
+            // another pin's dot within reach would paint over this one
+            MotionSample o = pins->run(j).solution->at(t);
+            QPointF q = canvas->toPixel({o.x, o.y}) * image.devicePixelRatio();
+            covered = covered || (j != i && distance(px, q) < 10 * image.devicePixelRatio());
+        }
+        if (covered)
+            continue;
         QColor c = image.pixelColor(px.toPoint());
-        QVERIFY2(near(c, PinSet::color(i), 40), qPrintable(c.name()));
+        QVERIFY2(near(c, PinSet::color(i), 40),
+                 qPrintable(QStringLiteral("pin %1: %2").arg(i).arg(c.name())));
+        ++checked;
     }
+    QVERIFY(checked > 0);
 }
 
 void TestInstruments::pinsSavedLoadedClearedAndUndone() {
@@ -483,8 +504,8 @@ void TestInstruments::screenshotShowsArrowsAndEquations() {
         for (int x = 0; x < image.width(); ++x)
             magenta += near(image.pixelColor(x, y), vectorColor(VectorKind::LateralReaction), 30);
     QVERIFY2(magenta > 40, qPrintable(QString::number(magenta))); // the arrow and its scale bar
-    const char* bad[] = {"chaplygin-lab", "--screenshot", shotArg.constData(), "--preset", "line",
-                         "--panel",       "sweep"};
+    const char* bad[] = {"chaplygin-lab", "--screenshot", shotArg.constData(), "--preset",
+                         "line",          "--panel",      "nonsense"};
     QCOMPARE(runScreenshot(7, const_cast<char**>(bad)), 2);
 }
 
