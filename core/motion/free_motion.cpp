@@ -121,9 +121,11 @@ void FreeMotion::velocities(double t, double* sdot, double* phidot, double* phi)
         *phi = m_init.phi + m_init.phidot * t;
         return;
     case Case::General: {
-        // tanh and sech from one expm1: e = exp(-|tau|) = 1 + em, tanh|tau| = (1 - e^2)/(1 + e^2),
-        // sech tau = 2e/(1 + e^2); the heading from turn(t), which does not cancel
-        const double tau = m_k * t + m_c, em = std::expm1(-std::fabs(tau)), e = 1 + em;
+        // e = exp(-|tau|), em = e - 1: tanh|tau| = -em (2 + em)/(1 + e^2) keeps its digits for
+        // small tau, sech tau = 2e/(1 + e^2) for large tau (1 + em would lose e's); the heading
+        // from turn(t), which does not cancel
+        const double tau = m_k * t + m_c, em = std::expm1(-std::fabs(tau)),
+                     e = std::exp(-std::fabs(tau));
         const double inv = 1 / (1 + e * e), sign = tau < 0 ? -1.0 : 1.0;
         *sdot = sign * m_v * (-em * (2 + em)) * inv;
         *phidot = m_sigma * (m_v / b) * (2 * e * inv);

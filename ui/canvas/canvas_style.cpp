@@ -11,7 +11,7 @@ namespace {
 // normal palette (the matplotlib defaults the exported plots use)
 const QColor kControlled(0x1f, 0x77, 0xb4);
 const QColor kFree(0xd6, 0x27, 0x28);
-const QColor kVakonomic(0x2c, 0xa0, 0x2c);
+const QColor kVakonomic(0x94, 0x67, 0xbd);
 const QColor kPath(0x7f, 0x7f, 0x7f);
 // high contrast: four well separated grey levels (luminance 0.02, 0.12, 0.26, 0.46)
 const QColor kHcControlled(0x00, 0x1f, 0x7a);

@@ -58,7 +58,7 @@ SweepPanel::SweepPanel(SceneDocument* document, QWidget* parent)
                              "load its value."));
     m_status->setWordWrap(true);
     m_plot = new QCustomPlot;
-    m_plot->setMinimumHeight(160);
+    m_plot->setMinimumHeight(80); // the dock shares the plots' height on a 1280x800 screen
     m_plot->setInteraction(QCP::iSelectPlottables, false);
 
     auto* range = new QHBoxLayout;

@@ -183,13 +183,19 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::balanceDocks() {
-    // a narrow window: the accuracy dock joins the path and parameters tabs, the canvas keeps
-    // its width
-    if (width() < 1200 && dockWidgetArea(m_accuracyDock) == Qt::RightDockWidgetArea &&
-        !m_accuracyDock->isFloating()) {
-        addDockWidget(Qt::LeftDockWidgetArea, m_accuracyDock);
-        tabifyDockWidget(m_parametersDock, m_accuracyDock);
-        m_pathDock->raise();
+    // a narrow window: the right-hand docks (accuracy, notes, equations) join the path and
+    // parameters tabs, the canvas keeps its width
+    if (width() < 1200) {
+        QDockWidget* last = m_parametersDock;
+        for (QDockWidget* dock : findChildren<QDockWidget*>()) {
+            if (dockWidgetArea(dock) != Qt::RightDockWidgetArea || dock->isFloating())
+                continue;
+            addDockWidget(Qt::LeftDockWidgetArea, dock);
+            tabifyDockWidget(last, dock);
+            last = dock;
+        }
+        if (last != m_parametersDock)
+            m_pathDock->raise();
     }
     // the canvas gets most of the height; the plots a third (a quarter on low screens)
     resizeDocks({m_plotsDock}, {height() < 900 ? std::max(200, height() / 4) : height() / 3},

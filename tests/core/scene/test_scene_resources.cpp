@@ -85,7 +85,7 @@ TEST(SceneResources, UnknownPresetNamesTheKnownOnes) {
         presetScene("spiral");
         FAIL() << "accepted";
     } catch (const InputError& e) {
-        EXPECT_EQ(e.where(), "--preset");
+        EXPECT_EQ(e.where(), "preset"); // the command line maps it to --preset
         EXPECT_NE(std::string(e.what()).find("use line, circle, catenary or sinusoid"),
                   std::string::npos)
             << e.what();
