@@ -40,7 +40,9 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
         auto seek = [this, plot](QMouseEvent* e) {
             QCPAxisRect* rect = plot->axisRectCount() > 0 ? plot->axisRect() : nullptr;
             if (rect && (e->buttons() & Qt::LeftButton))
-                emit seekRequested(rect->axis(QCPAxis::atBottom)->pixelToCoord(e->position().x()));
+                if (double t = rect->axis(QCPAxis::atBottom)->pixelToCoord(e->position().x());
+                    std::isfinite(t))
+                    emit seekRequested(t);
         };
         connect(plot, &QCustomPlot::mousePress, this, seek);
         connect(plot, &QCustomPlot::mouseMove, this, seek);

@@ -1,6 +1,7 @@
 #include "shell/playback.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace chaplygin::ui {
 
@@ -40,6 +41,8 @@ void Playback::setTEnd(double tEnd) {
 }
 
 void Playback::seek(double t) {
+    if (!std::isfinite(t)) // a click on a plot with no extent, for one
+        return;
     t = std::clamp(t, 0.0, m_tEnd);
     if (t == m_time)
         return;
