@@ -9,6 +9,7 @@
 #include "panels/sweep_panel.h"
 #include "plots/plots_panel.h"
 #include "runtime_directory.h"
+#include "shell/language_menu.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
 #include "translations.h"
@@ -17,8 +18,8 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
-#include <QDoubleSpinBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QIcon>
 #include <QImage>
@@ -63,7 +64,8 @@ struct ScreenshotOptions {
     bool showMethods = false; ///< --panel methods: compute and show the work-precision diagram
     bool showSweep = false;   ///< --panel sweep: show the Sweep dock, run --sweep if given
     std::optional<SweepSpec> sweep;
-    std::string dock;         ///< --panel notes|equations: raise that dock
+    std::string dock;     ///< --panel notes|equations: raise that dock
+    std::string language; ///< --language en|pt_BR: that catalogue instead of the system's
     Scene scene;
 };
 
@@ -95,6 +97,10 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
                 o.dock = panel + "Dock";
             o.showParameters = panel == "parameters";
             o.showMethods = panel == "methods";
+        } else if (arg == "--language") {
+            o.language = value(i, arg);
+            if (o.language != "en" && o.language != "pt_BR")
+                throw InputError("--language", "expected en or pt_BR, got '" + o.language + "'");
         } else if (arg == "--size") {
             std::string size = value(i, arg);
             auto x = size.find('x');
@@ -178,7 +184,8 @@ int runDesktop(int argc, char** argv) {
         Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
     QApplication app(argc, argv);
     describeApplication();
-    app::installTranslations(app, QLocale::system());
+    // View > Language, saved by the last session; the system locale unless one was chosen
+    app::installTranslations(app, languageLocale(savedLanguage()));
     // QApplication has taken its own options out; what is left is a scene file or scene options
     QStringList args = QCoreApplication::arguments().mid(1);
     MainWindow window;
@@ -217,6 +224,13 @@ int runScreenshot(int argc, char** argv) {
         qInstallMessageHandler(quietOffscreenNoise);
         app = std::make_unique<QApplication>(argc, argv);
     }
+    // the system's locale (LANG) unless --language names one; a test's own application keeps its
+    // translators
+    if (!options->language.empty())
+        app::installTranslations(*QCoreApplication::instance(),
+                                 QLocale(QString::fromStdString(options->language)));
+    else if (app)
+        app::installTranslations(*app, QLocale::system());
     try {
         return renderScreenshot(*options);
     } catch (const InputError& e) {

@@ -20,6 +20,7 @@
 #include "shell/animation_dialog.h"
 #include "shell/gallery_menu.h"
 #include "shell/instruments.h"
+#include "shell/language_menu.h"
 #include "shell/playback.h"
 #include "shell/timeline_bar.h"
 
@@ -216,6 +217,8 @@ void MainWindow::buildMenus() {
     view->addAction(tr("Zoom &in"), QKeySequence::ZoomIn, this, [this] { m_canvas->zoomBy(1.25); });
     view->addAction(tr("Zoom &out"), QKeySequence::ZoomOut, this,
                     [this] { m_canvas->zoomBy(0.8); });
+    view->addSeparator();
+    view->addMenu(new LanguageMenu(view));
 
     QMenu* play = menuBar()->addMenu(tr("&Animation"));
     play->addAction(m_timeline->playAction());
@@ -244,8 +247,10 @@ void MainWindow::buildMenus() {
                                     "\u03bb = m b d\u03c7/dt the control multiplier. The control "
                                     "is workless, so the kinetic "
                                     "energy stays constant in the energy mode.</p>"
-                                    "<p>The ghost is the free (Lagrange\u2013d'Alembert, "
-                                    "Neimark\u2013Fufaev) sleigh from the same "
+                                    "<p>The ghost is the free (Lagrange\u2013"
+                                    "d'Alembert, "
+                                    "Neimark\u2013"
+                                    "Fufaev) sleigh from the same "
                                     "initial state: it turns away and ends on a straight line.</p>"
                                     "<p>Disk and carriage reduce to a sleigh with effective mass "
                                     "m_eff, offset a and radius of "
@@ -361,9 +366,10 @@ void MainWindow::onSolutionChanged() {
     m_canvas->setTime(m_playback->time());
     m_plots->setTime(m_playback->time());
     const ModelReport& m = solution->models();
-    m_status->setText(QString::fromStdString("path: " + m.path + "; time law: " + m.timeLaw +
-                                             "; free motion: " + m.freeVelocity + ", " +
-                                             m.freePosition));
+    m_status->setText(tr("path: %1; time law: %2; free motion: %3, %4")
+                          .arg(QString::fromStdString(m.path), QString::fromStdString(m.timeLaw),
+                               QString::fromStdString(m.freeVelocity),
+                               QString::fromStdString(m.freePosition)));
     if (m_noteScene && m_document->scene() != *m_noteScene) {
         m_noteScene.reset();
         m_accuracy->setNote({}, {});
