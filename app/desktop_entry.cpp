@@ -12,6 +12,7 @@
 #include "shell/language_menu.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
+#include "shell/presentation_mode.h"
 #include "translations.h"
 #include "version.h"
 
@@ -64,8 +65,9 @@ struct ScreenshotOptions {
     bool showMethods = false; ///< --panel methods: compute and show the work-precision diagram
     bool showSweep = false;   ///< --panel sweep: show the Sweep dock, run --sweep if given
     std::optional<SweepSpec> sweep;
-    std::string dock;     ///< --panel notes|equations: raise that dock
-    std::string language; ///< --language en|pt_BR: that catalogue instead of the system's
+    std::string dock;          ///< --panel notes|equations: raise that dock
+    bool presentation = false; ///< --presentation: presentation mode at the given size
+    std::string language;      ///< --language en|pt_BR: that catalogue instead of the system's
     Scene scene;
 };
 
@@ -81,6 +83,8 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
         std::string arg = argv[i];
         if (arg == "--screenshot") {
             o.file = value(i, arg);
+        } else if (arg == "--presentation") {
+            o.presentation = true;
         } else if (arg == "--at") {
             o.at = parseNumber(value(i, arg), "--at");
             if (o.at < 0)
@@ -138,6 +142,11 @@ int renderScreenshot(const ScreenshotOptions& o) {
     window.show();
     QCoreApplication::processEvents();
     window.balanceDocks();
+    if (o.presentation) {
+        window.presentation()->setFullScreen(false); // the screenshot's size stands
+        window.presentation()->setActive(true);
+        QCoreApplication::processEvents();
+    }
     if (o.showParameters)
         window.showParametersDock();
     if (o.showMethods) {
@@ -188,6 +197,7 @@ int runDesktop(int argc, char** argv) {
     app::installTranslations(app, languageLocale(savedLanguage()));
     // QApplication has taken its own options out; what is left is a scene file or scene options
     QStringList args = QCoreApplication::arguments().mid(1);
+    const bool presentation = args.removeAll(QStringLiteral("--presentation")) > 0;
     MainWindow window;
     try {
         if (args.size() == 1 && !args[0].startsWith(QLatin1String("--"))) {
@@ -204,6 +214,8 @@ int runDesktop(int argc, char** argv) {
         return 2;
     }
     window.show();
+    if (presentation)
+        window.presentation()->setActive(true);
     return app.exec();
 }
 

@@ -89,7 +89,8 @@ void addControlled(const MethodCase& c, std::vector<Method>& out) {
     app.description =
         c.plan->timeLaw().closedForm()
             ? "closed-form time law (constant curvature)"
-            : "the app's time law: 8-point Gauss panels of the path table, Newton for s(t)";
+            : "the app's time law: certified per-panel Chebyshev interpolants of the path "
+              "table, Newton on the interpolated t(u)";
     app.solve = [](const MethodCase& k, double, const std::vector<double>& times) {
         PlannedMotion plan(k.path, k.params);
         MethodOutput o;

@@ -1,5 +1,6 @@
 #include "motion/free_motion.h"
 
+#include "numerics/chebyshev.h"
 #include "numerics/gauss_legendre.h"
 
 #include <algorithm>
@@ -62,6 +63,43 @@ FreeMotion::FreeMotion(const DerivedSystem& system, const FreeInitial& initial, 
         m_panelT[i] = span * i / panels;
     for (int i = 0; i < panels; ++i)
         m_panelZ[i + 1] = m_panelZ[i] + panelIntegral(m_panelT[i], m_panelT[i + 1]);
+    buildInterpolants();
+}
+
+void FreeMotion::buildInterpolants() {
+    const int panels = static_cast<int>(m_panelT.size()) - 1;
+    m_panelCheb.resize(panels);
+    m_chebCertified.assign(panels, 0);
+    const auto& xs = cheb::points();
+    for (int i = 0; i < panels; ++i) {
+        const double half = 0.5 * (m_panelT[i + 1] - m_panelT[i]),
+                     mid = 0.5 * (m_panelT[i + 1] + m_panelT[i]);
+        std::array<double, cheb::kPoints> fx, fy, cx, cy;
+        for (int j = 0; j < cheb::kPoints; ++j) {
+            double sdot, phidot, phi;
+            velocities(mid + half * xs[j], &sdot, &phidot, &phi);
+            fx[j] = half * sdot * std::cos(phi);
+            fy[j] = half * sdot * std::sin(phi);
+        }
+        cheb::coefficients(fx.data(), cx.data());
+        cheb::coefficients(fy.data(), cy.data());
+        std::array<double, cheb::kPoints + 1> ix, iy;
+        cheb::integrate(cx.data(), cheb::kPoints, ix.data());
+        cheb::integrate(cy.data(), cheb::kPoints, iy.data());
+        double zx = 0, zy = 0;
+        for (int k = 0; k <= cheb::kPoints; ++k) {
+            m_panelCheb[i][k] = {ix[k], iy[k]};
+            zx += ix[k];
+            zy += iy[k];
+        }
+        // bound: twice the tail over the panel, and the whole panel against the Gauss rule
+        const std::complex<double> dz = m_panelZ[i + 1] - m_panelZ[i];
+        const double bound = std::max(4 * std::max(cheb::tailEstimate(cx.data(), cheb::kPoints),
+                                                   cheb::tailEstimate(cy.data(), cheb::kPoints)),
+                                      std::abs(std::complex<double>(zx, zy) - dz));
+        m_chebCertified[i] = bound <= 1e-15 * std::max(std::abs(dz), m_v * half) ||
+                             bound <= 4e-16 * std::abs(m_panelZ[i + 1]);
+    }
 }
 
 void FreeMotion::velocities(double t, double* sdot, double* phidot, double* phi) const {
@@ -133,7 +171,14 @@ FreeState FreeMotion::at(double t) const {
             auto it = std::upper_bound(m_panelT.begin(), m_panelT.end(), t);
             int k = std::clamp(static_cast<int>(it - m_panelT.begin()) - 1, 0,
                                static_cast<int>(m_panelT.size()) - 2);
-            z = m_panelZ[k] + panelIntegral(m_panelT[k], t);
+            if (m_chebCertified[k]) {
+                const double a = m_panelT[k], b = m_panelT[k + 1];
+                double f[2];
+                cheb::evaluateMany(m_panelCheb[k], (2 * t - (a + b)) / (b - a), f);
+                z = m_panelZ[k] + std::complex<double>(f[0], f[1]);
+            } else {
+                z = m_panelZ[k] + panelIntegral(m_panelT[k], t);
+            }
         } else if (span >= m_tail) {
             // beyond the tail the heading is constant and |sdot| = V (to 1e-17)
             double sdot, phidot, phi;

@@ -1,6 +1,7 @@
 #pragma once
 #include "systems/system.h"
 
+#include <array>
 #include <complex>
 #include <string>
 #include <vector>
@@ -23,7 +24,9 @@ struct FreeState {
 /// phi = phi0 + sigma (b/a)(gd(kt + c) - gd(c)), k = aV/b^2, c = asinh(sdot0/(b|phidot0|)),
 /// with gd(kt + c) - gd(c) = 2 atan(sinh(kt/2)/cosh(c + kt/2)) (no cancellation).
 /// Position: z = x + iy integrates sdot e^{i phi} by 8-point Gauss-Legendre panels narrower than
-/// both time scales (1/k and b/V), so it is exact to rounding; past |kt + c| > 40 the heading is
+/// both time scales (1/k and b/V), so it is exact to rounding; inside a panel z is the integral of
+/// the integrand's degree-16 Chebyshev interpolant (certified by its tail to 1e-15 of the panel's
+/// displacement, else Gauss-Legendre over the partial panel); past |kt + c| > 40 the heading is
 /// constant to 1e-17 and the body moves on a straight line, also in closed form.
 class FreeMotion {
   public:
@@ -49,6 +52,7 @@ class FreeMotion {
     enum class Case { Rest, Line, Circle, General };
     void velocities(double t, double* sdot, double* phidot, double* phi) const;
     std::complex<double> panelIntegral(double t0, double t1) const;
+    void buildInterpolants();
 
     DerivedSystem m_sys;
     FreeInitial m_init;
@@ -58,6 +62,10 @@ class FreeMotion {
     double m_tail = 0; // time after which the heading is constant
     std::vector<double> m_panelT;
     std::vector<std::complex<double>> m_panelZ;
+    // per panel: Chebyshev coefficients of z - z(panel start) in the panel's local variable
+    // (the integral of the degree-16 interpolant of sdot e^{i phi}), when certified
+    std::vector<std::array<std::array<double, 2>, 18>> m_panelCheb;
+    std::vector<char> m_chebCertified;
 };
 
 } // namespace chaplygin

@@ -210,9 +210,7 @@ double TimeLaw::rateAt(int piece, double u) const {
         const TimePanel& tp = timePanel(piece, k);
         if (tp.certified) {
             const double a = table.nodes()[k].u, b = table.nodes()[k + 1].u;
-            double f[2];
-            cheb::evaluateMany(tp.c, (2 * u - (a + b)) / (b - a), f);
-            return f[1] * 2 / (b - a);
+            return cheb::evaluateOne(tp.c, 1, (2 * u - (a + b)) / (b - a)) * 2 / (b - a);
         }
     }
     if (table.uniform()) {

@@ -104,7 +104,7 @@ VakonomicMotion::VakonomicMotion(const DerivedSystem& system, const VakonomicIni
     if (k2 < 1) {
         // sin(Psi - Psi_c) = k sn(w), w = w0 + omega t, Psi_c = 0 or pi; Psidot = k omega cn
         m_case = Case::Libration;
-        m_q = m_k;
+        m_q = m_k; // sqrt(k2) < 1 for k2 < 1 (correctly rounded sqrt)
         m_K = completeK(m_q);
         m_D = completeD(m_q);
         m_rate = m_omega;
@@ -113,7 +113,7 @@ VakonomicMotion::VakonomicMotion(const DerivedSystem& system, const VakonomicIni
     } else if (k2 > 1) {
         // Psi = sigma am(W, 1/k), W = W0 + k omega t; Psidot = sigma k omega dn
         m_case = Case::Rotation;
-        m_q = 1 / m_k;
+        m_q = std::sqrt(1 / k2); // < 1 for every k2 > 1, unlike 1/sqrt(k2)
         m_K = completeK(m_q);
         m_D = completeD(m_q);
         m_rate = m_k * m_omega;

@@ -35,6 +35,19 @@ inline double evaluate(const double* c, int n, double x) {
     return x * b1 - b2 + c[0];
 }
 
+/// Series q of Q interleaved series (coefficients c[k][q]).
+template <std::size_t Q, std::size_t N>
+inline double evaluateOne(const std::array<std::array<double, Q>, N>& c, std::size_t q, double x) {
+    double b1 = 0, b2 = 0;
+    const double x2 = 2 * x;
+    for (std::size_t k = N - 1; k >= 1; --k) {
+        double b = x2 * b1 - b2 + c[k][q];
+        b2 = b1;
+        b1 = b;
+    }
+    return x * b1 - b2 + c[0][q];
+}
+
 /// Q series at once, coefficients interleaved c[k][q] (so the inner loop vectorises).
 template <std::size_t Q, std::size_t N>
 inline void evaluateMany(const std::array<std::array<double, Q>, N>& c, double x, double* out) {

@@ -45,6 +45,8 @@ struct PinnedRun {
 
 /// At most this many pinned runs per scene.
 constexpr std::size_t kMaxPinnedRuns = 5;
+/// A scene's note is at most this many bytes (UTF-8).
+constexpr std::size_t kMaxNoteBytes = 100000;
 
 /// Everything that defines a scene: plain data with defaults, saved and loaded as JSON,
 /// shared by the GUI, the CLI and the tests.

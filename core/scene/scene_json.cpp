@@ -240,8 +240,6 @@ VectorOverlay readVectors(const json& v) {
     return o;
 }
 
-constexpr std::size_t kMaxNoteBytes = 100000;
-
 } // namespace
 
 std::string sceneToJson(const Scene& scene) {

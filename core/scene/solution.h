@@ -37,7 +37,8 @@ struct ModelReport {
 ControlParams controlParamsOf(const Scene& scene);
 
 /// One immutable result that the CLI, the GUI and the tests read. Values at any t are computed
-/// exactly on request (no interpolation of stored samples). Recomputing with new system
+/// on request from the path table's certified per-panel interpolants (no interpolation of stored
+/// samples in time). Recomputing with new system
 /// parameters or speed reuses the tabulated path.
 class Solution {
   public:

@@ -209,6 +209,26 @@
         <source>s(t), x(t), y(t) and y(x), as in the paper&apos;s Figs. 2-3</source>
         <translation>s(t), x(t), y(t) e y(x), como nas Figs. 2-3 do artigo</translation>
     </message>
+    <message>
+        <source>vakonomic Ψ</source>
+        <translation>Ψ vakonômico</translation>
+    </message>
+    <message>
+        <source>vakonomic χ</source>
+        <translation>χ vakonômico</translation>
+    </message>
+    <message>
+        <source>vakonomic λ (eq. 21)</source>
+        <translation>λ vakonômico (eq. 21)</translation>
+    </message>
+    <message>
+        <source>vakonomic T</source>
+        <translation>T vakonômico</translation>
+    </message>
+    <message>
+        <source>vakonomic body (P)</source>
+        <translation>corpo vakonômico (P)</translation>
+    </message>
 </context>
 <context>
     <name>PlotSeries</name>
@@ -242,6 +262,18 @@
     <message>
         <source>pin %1: %2</source>
         <translation>execução %1: %2</translation>
+    </message>
+    <message>
+        <source>Export this plot…</source>
+        <translation>Exportar este gráfico…</translation>
+    </message>
+    <message>
+        <source>Export the plot</source>
+        <translation>Exportar o gráfico</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;PDF (*.pdf);;SVG (*.svg)</source>
+        <translation>Imagem PNG (*.png);;PDF (*.pdf);;SVG (*.svg)</translation>
     </message>
 </context>
 <context>
@@ -304,10 +336,6 @@
         <translation>erro máximo de posição [m]</translation>
     </message>
     <message>
-        <source>chosen: </source>
-        <translation>escolhido: </translation>
-    </message>
-    <message>
         <source>controlled, t ≤ %1 s</source>
         <translation>controlado, t ≤ %1 s</translation>
     </message>
@@ -318,6 +346,10 @@
     <message>
         <source>Work-precision: error against cost per solve</source>
         <translation>Trabalho-precisão: erro em função do custo por solução</translation>
+    </message>
+    <message>
+        <source>chosen: see the table</source>
+        <translation>escolhido: veja a tabela</translation>
     </message>
 </context>
 <context>
@@ -380,6 +412,12 @@ controle: %4
 velocidades livres: %5
 posição livre: %6</translation>
     </message>
+    <message>
+        <source>
+vakonomic body: %1</source>
+        <translation>
+corpo vakonômico: %1</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::AnimationDialog</name>
@@ -438,6 +476,53 @@ posição livre: %6</translation>
     <message>
         <source>GIF (*.gif);;MP4 video (*.mp4);;PNG frames into a folder (*)</source>
         <translation>GIF (*.gif);;Vídeo MP4 (*.mp4);;Quadros PNG em uma pasta (*)</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::BodyDisplayMenu</name>
+    <message>
+        <source>&amp;Bodies</source>
+        <translation>&amp;Corpos</translation>
+    </message>
+    <message>
+        <source>To &amp;scale</source>
+        <translation>Em &amp;escala</translation>
+    </message>
+    <message>
+        <source>&amp;Outline only</source>
+        <translation>Só o &amp;contorno</translation>
+    </message>
+    <message>
+        <source>Small &amp;marker (knife and centre of mass)</source>
+        <translation>&amp;Marcador pequeno (lâmina e centro de massa)</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+1</source>
+        <translation>Ctrl+Shift+1</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+2</source>
+        <translation>Ctrl+Shift+2</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+3</source>
+        <translation>Ctrl+Shift+3</translation>
+    </message>
+    <message>
+        <source>&amp;Trail width</source>
+        <translation>Largura do &amp;rastro</translation>
+    </message>
+    <message>
+        <source>%1 px</source>
+        <translation>%1 px</translation>
+    </message>
+    <message>
+        <source>Body &amp;opacity</source>
+        <translation>&amp;Opacidade do corpo</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
     </message>
 </context>
 <context>
@@ -516,6 +601,41 @@ posição livre: %6</translation>
     <message>
         <source>The genuine vakonomic system leaves the circle</source>
         <translation>O sistema vakonômico genuíno deixa o círculo</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::HelpWindow</name>
+    <message>
+        <source>User guide</source>
+        <translation>Guia do usuário</translation>
+    </message>
+    <message>
+        <source>Physics notes</source>
+        <translation>Notas de física</translation>
+    </message>
+    <message>
+        <source>Numerical methods</source>
+        <translation>Métodos numéricos</translation>
+    </message>
+    <message>
+        <source>Robustness</source>
+        <translation>Robustez</translation>
+    </message>
+    <message>
+        <source>Architecture</source>
+        <translation>Arquitetura</translation>
+    </message>
+    <message>
+        <source>Chaplygin Lab help</source>
+        <translation>Ajuda do Chaplygin Lab</translation>
+    </message>
+    <message>
+        <source>Help documents</source>
+        <translation>Documentos de ajuda</translation>
+    </message>
+    <message>
+        <source>Help text</source>
+        <translation>Texto de ajuda</translation>
     </message>
 </context>
 <context>
@@ -688,20 +808,12 @@ posição livre: %6</translation>
         <translation>Notas de &amp;física</translation>
     </message>
     <message>
-        <source>Physics notes</source>
-        <translation>Notas de física</translation>
-    </message>
-    <message>
         <source>&amp;About Chaplygin Lab</source>
         <translation>&amp;Sobre o Chaplygin Lab</translation>
     </message>
     <message>
         <source>About Chaplygin Lab</source>
         <translation>Sobre o Chaplygin Lab</translation>
-    </message>
-    <message>
-        <source>&lt;b&gt;Chaplygin Lab %1&lt;/b&gt;&lt;p&gt;Control of nonholonomic Chaplygin systems (Antunes, Sigaud, de Moraes, Braz. J. Phys. 2009): sleigh, rolling disk and two-wheeled carriage.&lt;/p&gt;</source>
-        <translation>&lt;b&gt;Chaplygin Lab %1&lt;/b&gt;&lt;p&gt;Controle de sistemas de Chaplygin não holonômicos (Antunes, Sigaud, de Moraes, Braz. J. Phys. 2009): trenó, disco rolante e carrinho de duas rodas.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Preset %1</source>
@@ -800,10 +912,6 @@ posição livre: %6</translation>
         <translation>Exportar a&amp;nimação…</translation>
     </message>
     <message>
-        <source>&lt;p&gt;The knife point P follows the prescribed path. The control angle Ψ satisfies tan Ψ = ρ/b (eq. 45); χ = Ψ − (a/b)φ is the driving angle and λ = m b dχ/dt the control multiplier. The control is workless, so the kinetic energy stays constant in the energy mode.&lt;/p&gt;&lt;p&gt;The ghost is the free (Lagrange–d&apos;Alembert, Neimark–Fufaev) sleigh from the same initial state: it turns away and ends on a straight line.&lt;/p&gt;&lt;p&gt;Disk and carriage reduce to a sleigh with effective mass m_eff, offset a and radius of gyration b (Apps. A, B).&lt;/p&gt;&lt;p&gt;Models in use: %1&lt;/p&gt;</source>
-        <translation>&lt;p&gt;O ponto da lâmina P segue o caminho prescrito. O ângulo de controle Ψ satisfaz tan Ψ = ρ/b (eq. 45); χ = Ψ − (a/b)φ é o ângulo de condução e λ = m b dχ/dt o multiplicador de controle. O controle não realiza trabalho, de modo que a energia cinética permanece constante no modo de energia.&lt;/p&gt;&lt;p&gt;O fantasma é o trenó livre (Lagrange–d&apos;Alembert, Neimark–Fufaev) a partir do mesmo estado inicial: ele se desvia e termina em uma linha reta.&lt;/p&gt;&lt;p&gt;O disco e o carrinho se reduzem a um trenó com massa efetiva m_eff, deslocamento a e raio de giração b (Apêndices A, B).&lt;/p&gt;&lt;p&gt;Modelos em uso: %1&lt;/p&gt;</translation>
-    </message>
-    <message>
         <source>path: %1; time law: %2; free motion: %3, %4</source>
         <translation>caminho: %1; lei horária: %2; movimento livre: %3, %4</translation>
     </message>
@@ -814,6 +922,62 @@ posição livre: %6</translation>
     <message>
         <source>Animation export cancelled</source>
         <translation>Exportação da animação cancelada</translation>
+    </message>
+    <message>
+        <source>The note is %1 bytes; a note is at most %2 bytes (not kept)</source>
+        <translation>A nota tem %1 bytes; uma nota tem no máximo %2 bytes (não mantida)</translation>
+    </message>
+    <message>
+        <source>Ctrl+Y</source>
+        <translation>Ctrl+Y</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+Z</source>
+        <translation>Ctrl+Shift+Z</translation>
+    </message>
+    <message>
+        <source>Genuine &amp;vakonomic body</source>
+        <translation>Corpo &amp;vakonômico genuíno</translation>
+    </message>
+    <message>
+        <source>Draw a third body whose multiplier obeys its own equation (21): it cannot follow the path</source>
+        <translation>Desenhar um terceiro corpo cujo multiplicador obedece à sua própria equação (21): ele não consegue seguir o caminho</translation>
+    </message>
+    <message>
+        <source>Presentation &amp;scale</source>
+        <translation>E&amp;scala da apresentação</translation>
+    </message>
+    <message>
+        <source>Play &amp;new scenes at once</source>
+        <translation>Reproduzir &amp;novas cenas imediatamente</translation>
+    </message>
+    <message>
+        <source>Preset %1: %2</source>
+        <translation>Predefinição %1: %2</translation>
+    </message>
+    <message>
+        <source>Ne&amp;xt gallery scene</source>
+        <translation>&amp;Próxima cena da galeria</translation>
+    </message>
+    <message>
+        <source>Pre&amp;vious gallery scene</source>
+        <translation>Cena &amp;anterior da galeria</translation>
+    </message>
+    <message>
+        <source>&amp;Help for this part of the window</source>
+        <translation>&amp;Ajuda para esta parte da janela</translation>
+    </message>
+    <message>
+        <source>&amp;User guide</source>
+        <translation>&amp;Guia do usuário</translation>
+    </message>
+    <message>
+        <source>&amp;Numerical methods</source>
+        <translation>Métodos &amp;numéricos</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Chaplygin Lab %1&lt;/h3&gt;&lt;p&gt;Control of nonholonomic Chaplygin systems for teaching: the sleigh, the rolling disk and the two-wheeled carriage follow a prescribed path, beside the free motion from the same start.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Paper:&lt;/b&gt; Antunes, Sigaud, de Moraes, &lt;i&gt;Controlling nonholonomic Chaplygin systems&lt;/i&gt;, Brazilian Journal of Physics (2009).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Licence:&lt;/b&gt; not yet chosen by the authors; until it is, ask them before redistributing. Third-party components keep their own licences: Qt %2 (LGPL v3), QCustomPlot (GPL v3), GiNaC (GPL v2 or later).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Credits:&lt;/b&gt; the Chaplygin Lab contributors; the equations of motion after the paper above, re-derived in the physics notes (Help).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Chaplygin Lab %1&lt;/h3&gt;&lt;p&gt;Controle de sistemas de Chaplygin não holonômicos para o ensino: o trenó, o disco rolante e o carrinho de duas rodas seguem um caminho prescrito, ao lado do movimento livre a partir do mesmo início.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Artigo:&lt;/b&gt; Antunes, Sigaud, de Moraes, &lt;i&gt;Controlling nonholonomic Chaplygin systems&lt;/i&gt;, Brazilian Journal of Physics (2009).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Licença:&lt;/b&gt; ainda não escolhida pelos autores; até que seja, consulte-os antes de redistribuir. Os componentes de terceiros mantêm as suas próprias licenças: Qt %2 (LGPL v3), QCustomPlot (GPL v3), GiNaC (GPL v2 ou posterior).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Créditos:&lt;/b&gt; os colaboradores do Chaplygin Lab; as equações de movimento seguem o artigo acima e são deduzidas novamente nas notas de física (Ajuda).&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -897,6 +1061,10 @@ posição livre: %6</translation>
     <message>
         <source>internal error: %1</source>
         <translation>erro interno: %1</translation>
+    </message>
+    <message>
+        <source>The scene changed: press Compute for this scene&apos;s diagram.</source>
+        <translation>A cena mudou: clique em Calcular para obter o diagrama desta cena.</translation>
     </message>
 </context>
 <context>
@@ -1068,6 +1236,10 @@ O que os estudantes devem observar…</translation>
         <source>m_eff = %1 kg, CM offset = %2 m, b = %3 m, I about the CM = %4 kg m²</source>
         <translation>m_eff = %1 kg, deslocamento do CM = %2 m, b = %3 m, I em relação ao CM = %4 kg m²</translation>
     </message>
+    <message>
+        <source>invalid: %1</source>
+        <translation>inválido: %1</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::PathPanel</name>
@@ -1120,10 +1292,6 @@ O que os estudantes devem observar…</translation>
         <translation>y(u) =</translation>
     </message>
     <message>
-        <source>The range of x [m] (graph) or of u (parametric), traversed from the first to the second</source>
-        <translation>O intervalo de x [m] (gráfico) ou de u (paramétrico), percorrido do primeiro ao segundo valor</translation>
-    </message>
-    <message>
         <source>x from, to</source>
         <translation>x de, até</translation>
     </message>
@@ -1160,10 +1328,6 @@ O que os estudantes devem observar…</translation>
         <translation>Como os cantos de um caminho desenhado são seguidos</translation>
     </message>
     <message>
-        <source>Corners</source>
-        <translation>Cantos</translation>
-    </message>
-    <message>
         <source>Smooth corners: spline bandwidth in point spacings (0 passes through every point)</source>
         <translation>Cantos suaves: largura de banda do spline em espaçamentos de pontos (0 passa por todos os pontos)</translation>
     </message>
@@ -1187,6 +1351,10 @@ O que os estudantes devem observar…</translation>
         <source>smooth</source>
         <translation>suaves</translation>
     </message>
+    <message>
+        <source>The range of x [m] (graph) or of u (parametric), traversed from the first to the second; Enter applies the path</source>
+        <translation>O intervalo de x [m] (gráfico) ou de u (paramétrico), percorrido do primeiro ao segundo valor; Enter aplica o caminho</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::PinSet</name>
@@ -1203,18 +1371,25 @@ O que os estudantes devem observar…</translation>
     </message>
 </context>
 <context>
-    <name>chaplygin::ui::SceneCanvas</name>
+    <name>chaplygin::ui::PresentationMode</name>
     <message>
-        <source>Wheel or +/-: zoom; drag or arrows: pan; F: fit scene; B: follow body</source>
-        <translation>Roda ou +/-: zoom; arrastar ou setas: deslocar; F: ajustar a cena; B: seguir o corpo</translation>
+        <source>&amp;Presentation mode</source>
+        <translation>Modo de &amp;apresentação</translation>
     </message>
+    <message>
+        <source>Presentation mode: full screen, large fonts and lines, high contrast (F11; Esc leaves)</source>
+        <translation>Modo de apresentação: tela cheia, fontes e linhas grandes, alto contraste (F11; Esc sai)</translation>
+    </message>
+    <message>
+        <source>Leave presentation mode</source>
+        <translation>Sair do modo de apresentação</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::SceneCanvas</name>
     <message>
         <source>controlled body and its trail (tracks the path)</source>
         <translation>corpo controlado e seu rastro (segue o caminho)</translation>
-    </message>
-    <message>
-        <source>free motion from the same start (translucent ghost)</source>
-        <translation>movimento livre a partir do mesmo início (fantasma translúcido)</translation>
     </message>
     <message>
         <source>path (● start, □ end), coloured by its curvature κ: red right turn, grey straight, blue left turn</source>
@@ -1227,6 +1402,38 @@ O que os estudantes devem observar…</translation>
     <message>
         <source>t = %1 s of %2 s    scale %3 px/m</source>
         <translation>t = %1 s de %2 s    escala %3 px/m</translation>
+    </message>
+    <message>
+        <source>Wheel or +/-: zoom; drag or arrows: pan; F: fit scene; B: follow body; L: legend</source>
+        <translation>Roda ou +/-: zoom; arrastar ou setas: deslocar; F: ajustar a cena; B: seguir o corpo; L: legenda</translation>
+    </message>
+    <message>
+        <source>Scene canvas</source>
+        <translation>Tela de desenho da cena</translation>
+    </message>
+    <message>
+        <source>The animation: the prescribed path, the controlled body and the free motion from the same start</source>
+        <translation>A animação: o caminho prescrito, o corpo controlado e o movimento livre a partir do mesmo início</translation>
+    </message>
+    <message>
+        <source>free motion from the same start (ghost)</source>
+        <translation>movimento livre a partir do mesmo início (fantasma)</translation>
+    </message>
+    <message>
+        <source>genuine vakonomic body: λ obeys its own equation (21)</source>
+        <translation>corpo vakonômico genuíno: λ obedece à sua própria equação (21)</translation>
+    </message>
+    <message>
+        <source>path (● start, □ end)</source>
+        <translation>caminho (● início, □ fim)</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>of %1 s</source>
+        <translation>de %1 s</translation>
     </message>
 </context>
 <context>
@@ -1314,10 +1521,6 @@ O que os estudantes devem observar…</translation>
         <translation>Passo para &amp;trás</translation>
     </message>
     <message>
-        <source>One step back (,)</source>
-        <translation>Um passo para trás (,)</translation>
-    </message>
-    <message>
         <source>&amp;Play</source>
         <translation>&amp;Reproduzir</translation>
     </message>
@@ -1328,10 +1531,6 @@ O que os estudantes devem observar…</translation>
     <message>
         <source>Step &amp;forward</source>
         <translation>Passo para a &amp;frente</translation>
-    </message>
-    <message>
-        <source>One step forward (.)</source>
-        <translation>Um passo para a frente (.)</translation>
     </message>
     <message>
         <source>Loop</source>
@@ -1356,6 +1555,42 @@ O que os estudantes devem observar…</translation>
     <message>
         <source> t = %1 s / %2 s</source>
         <translation> t = %1 s / %2 s</translation>
+    </message>
+    <message>
+        <source>One frame back at the current speed (,); Shift+, one second</source>
+        <translation>Um quadro para trás na velocidade atual (,); Shift+, um segundo</translation>
+    </message>
+    <message>
+        <source>One frame forward at the current speed (.); Shift+. one second</source>
+        <translation>Um quadro para a frente na velocidade atual (.); Shift+. um segundo</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Tempo</translation>
+    </message>
+    <message>
+        <source>The animation time; arrows and Page Up/Down scrub</source>
+        <translation>O tempo da animação; as setas e Page Up/Down o percorrem</translation>
+    </message>
+    <message>
+        <source>Time read-out</source>
+        <translation>Leitura do tempo</translation>
+    </message>
+    <message>
+        <source>Go to the &amp;start</source>
+        <translation>Ir para o &amp;início</translation>
+    </message>
+    <message>
+        <source>Go to the &amp;end</source>
+        <translation>Ir para o &amp;fim</translation>
+    </message>
+    <message>
+        <source>One second back</source>
+        <translation>Um segundo para trás</translation>
+    </message>
+    <message>
+        <source>One second forward</source>
+        <translation>Um segundo para a frente</translation>
     </message>
 </context>
 <context>

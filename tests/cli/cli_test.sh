@@ -72,6 +72,27 @@ disk_and_carriage)
   below "$(max_abs "$work/c.csv" 10 '$3')" 1e-11 "carriage free x on the circle"
   below "$(max_abs "$work/c.csv" 11 '$4')" 1e-11 "carriage free y on the circle"
   ;;
+vakonomic_columns)
+  # the genuine vakonomic body after today's columns (22-27); m = 1, b = 1, v_T = 1
+  run 0 --preset circle --times 0,1,2,3,4,5 --csv "$work/c.csv"
+  head -1 "$work/c.csv" | grep -q ',control_couple,vak_x,vak_y,vak_phi,vak_sdot,vak_phidot,vak_lambda$' \
+    || fail "header: $(head -1 "$work/c.csv")"
+  # t = 0: the tracking's state and lambda(0) = -m a phidot = -0.5/sqrt(5)
+  awk -F, 'NR == 2 { for (i = 0; i < 3; ++i) { d = $(22 + i) - $(3 + i); if (d > 1e-15 || d < -1e-15) exit 1 } }' \
+    "$work/c.csv" || fail "vak_x, vak_y, vak_phi at t = 0"
+  below "$(awk -F, 'NR == 2 { d = $27 + 0.5/sqrt(5); print (d < 0 ? -d : d) }' "$work/c.csv")" 1e-14 "vak_lambda(0)"
+  # energy conserved: (vak_sdot^2 + b^2 vak_phidot^2)/2 = 0.5
+  below "$(max_abs "$work/c.csv" 25 '$25 - 0.5*($25^2 + $26^2) + 0.5')" 1e-12 "vak energy"
+  # it leaves the circle of radius 2 within a few seconds
+  off=$(awk -F, 'NR > 1 { d = sqrt($22^2 + $23^2) - 2; if (d < 0) d = -d; if (d > m) m = d } END { print m }' "$work/c.csv")
+  awk -v o="$off" 'BEGIN { exit !(o > 0.1) }' || fail "vak stays on the circle (off by $off)"
+  # on the line (an unstable equilibrium: lambda_c = 0, Psi = pi/2) it follows the tracking
+  run 0 --preset line --times 0,2,4,8 --csv "$work/l.csv"
+  below "$(max_abs "$work/l.csv" 22 '$3')" 1e-12 "vak_x on the line"
+  below "$(max_abs "$work/l.csv" 23 '$4')" 1e-12 "vak_y on the line"
+  below "$(max_abs "$work/l.csv" 27 '0')" 1e-15 "vak_lambda on the line"
+  grep -q '"vakonomic"' <("$exe" --headless --preset circle --summary -) || fail "summary lacks models.vakonomic"
+  ;;
 speed_mode)
   run 0 --preset catenary --vs 0.5 --times 0,2,4,8 --csv "$work/c.csv"
   below "$(max_abs "$work/c.csv" 2 '0.5*$1')" 1e-12 "s = v_s t"

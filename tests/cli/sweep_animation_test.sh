@@ -50,6 +50,13 @@ sweep_columns_and_plots)
   # duration scales as 1/v_T and lambda as v_T (energy mode: time law (112), lambda = m(b Psidot - a phidot))
   awk -F, 'NR==2 {t=$2; l=$3} NR==5 {r=t/$2; q=$3/l; if (r < 4-1e-9 || r > 4+1e-9 || q < 4-1e-9 || q > 4+1e-9) exit 1}' \
     "$work/s.csv" || fail "scaling with vT: $(cat "$work/s.csv")"
+  # the disk's and the carriage's own parameters
+  run 0 --preset circle --system disk --sweep R=0.2:0.6:3 --csv "$work/d.csv"
+  [ "$(wc -l < "$work/d.csv")" -eq 4 ] && head -1 "$work/d.csv" | grep -q '^R,duration,' || fail "disk sweep: $(cat "$work/d.csv")"
+  run 0 --preset line --system carriage --sweep M=0.5:2:4 --csv "$work/c.csv"
+  [ "$(wc -l < "$work/c.csv")" -eq 5 ] || fail "carriage sweep: $(cat "$work/c.csv")"
+  run 2 --preset line --system disk --sweep R=-1:1:3
+  expect_err "R = -1 (value 1 of 3) is invalid"
   for q in duration max_abs_lambda max_abs_control_couple max_abs_force_lateral max_abs_control_power final_separation; do
     head -c 8 "$work/plots/sweep_$q.png" | od -An -c | grep -q 'P   N   G' || fail "sweep_$q.png"
     grep -q '<svg' "$work/plots/sweep_$q.svg" || fail "sweep_$q.svg"

@@ -19,6 +19,7 @@
 
 #include <QDockWidget>
 #include <QPlainTextEdit>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTextBrowser>
 #include <QUndoStack>
@@ -385,6 +386,13 @@ void TestInstruments::notesEditedSavedLoadedAndShown() {
     QVERIFY(notes->note().isEmpty());
     QVERIFY(m_window->openFile(path));
     QVERIFY(notes->view()->toPlainText().contains(QStringLiteral("slows in bends")));
+    // a note too long to load again is not kept, and the window says why
+    std::string kept = m_window->document()->scene().note;
+    notes->editor()->setPlainText(QString(int(kMaxNoteBytes) + 1, u'x'));
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->scene().note, kept);
+    QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("at most")));
+    notes->editor()->setPlainText(QString::fromStdString(kept));
     // presentation mode enlarges the text
     double before = notes->view()->font().pointSizeF();
     notes->setFontScale(2.5);
@@ -447,6 +455,10 @@ void TestInstruments::equationsFollowTimeSystemAndMode() {
     dock->show();
     dock->raise();
     QVERIFY(panel->view()->toPlainText().contains(QStringLiteral("Rolling disk")));
+    // presentation mode enlarges it
+    double points = panel->view()->font().pointSizeF();
+    panel->setFontScale(2);
+    QVERIFY(std::fabs(panel->view()->font().pointSizeF() - 2 * points) < 0.01);
 }
 
 void TestInstruments::screenshotShowsArrowsAndEquations() {

@@ -41,6 +41,7 @@ class TestSweepAnimation : public QObject {
     void clickingAPointLoadsItsValueAsOneUndoStep();
     void exportWritesFramesRenderedOffscreen();
     void exportDialogPathWithCancelLeavesNoFiles();
+    void exportGifAndMissingFfmpeg();
 
   private:
     void load(const char* preset);
@@ -229,6 +230,34 @@ void TestSweepAnimation::exportDialogPathWithCancelLeavesNoFiles() {
     QVERIFY(cancelled);
     QVERIFY(m_window->lastFileError().isEmpty());
     QVERIFY(QDir(folder).entryList({QStringLiteral("*.png")}, QDir::Files).isEmpty());
+}
+
+void TestSweepAnimation::exportGifAndMissingFfmpeg() {
+    load("circle");
+    QTemporaryDir dir;
+    AnimationSettings s;
+    s.file = dir.filePath(QStringLiteral("circle.gif"));
+    s.fps = 2;
+    s.size = QSize(200, 150);
+    // without ffmpeg on PATH: refused with the reason, nothing written
+    const QByteArray path = qgetenv("PATH");
+    qputenv("PATH", "/nonexistent");
+    const bool written = m_window->exportAnimationTo(s);
+    qputenv("PATH", path);
+    QVERIFY(!written);
+    QVERIFY2(m_window->lastFileError().contains(QLatin1String("needs the ffmpeg program")),
+             qPrintable(m_window->lastFileError()));
+    QVERIFY(QDir(dir.path())
+                .entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden)
+                .isEmpty());
+    if (findFfmpeg().isEmpty())
+        QSKIP("ffmpeg is not installed");
+    QVERIFY2(m_window->exportAnimationTo(s), qPrintable(m_window->lastFileError()));
+    QFile gif(s.file);
+    QVERIFY(gif.open(QIODevice::ReadOnly));
+    QCOMPARE(gif.read(6), QByteArray("GIF89a"));
+    QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden),
+             QStringList{QStringLiteral("circle.gif")});
 }
 
 QTEST_MAIN(TestSweepAnimation)

@@ -21,8 +21,11 @@ double boardSemiAxis(const DerivedSystem& d) {
     return std::max(4.0 * std::sqrt(k2) / std::sqrt(5.0), 0.1 * d.b);
 }
 
+// pen widths scale with the look (presentation mode); set by paintBody for one body
+double t_lineScale = 1;
+
 QPen cosmeticPen(const QColor& c, double width) {
-    QPen pen(c, width);
+    QPen pen(c, width * t_lineScale);
     pen.setCosmetic(true);
     pen.setJoinStyle(Qt::RoundJoin);
     pen.setCapStyle(Qt::RoundCap);
@@ -103,6 +106,26 @@ void paintCarriage(QPainter& p, const SystemSpec& spec, const QColor& fill, cons
     paintCentreOfMass(p, QPointF(0, 0), 0.18 * r, ink);
 }
 
+// a fixed-size marker: the knife edge through P along s-hat and the centre of mass at its true
+// offset a, drawn no further than two marker radii away
+void paintMarker(QPainter& p, const DerivedSystem& d, const QColor& ink) {
+    double pxPerM = std::sqrt(std::abs(p.transform().determinant()));
+    if (!(pxPerM > 0) || !std::isfinite(pxPerM))
+        return;
+    double r = kMarkerRadiusPx * t_lineScale / pxPerM; // metres
+    p.setPen(cosmeticPen(ink, 1.5));
+    p.setBrush(Qt::NoBrush);
+    p.drawEllipse(QPointF(0, 0), r, r);
+    p.setPen(cosmeticPen(ink, 4));
+    p.drawLine(QPointF(-1.3 * r, 0), QPointF(1.3 * r, 0));
+    double a = std::clamp(d.a, -2 * r, 2 * r);
+    if (std::abs(a) > 0.2 * r) {
+        p.setPen(cosmeticPen(ink, 1.5));
+        p.drawLine(QPointF(0, 0), QPointF(a, 0));
+    }
+    paintCentreOfMass(p, QPointF(a, 0), 0.45 * r, ink);
+}
+
 } // namespace
 
 double bodyExtent(const SystemSpec& spec, const DerivedSystem& derived) {
@@ -118,17 +141,26 @@ double bodyExtent(const SystemSpec& spec, const DerivedSystem& derived) {
 }
 
 void paintBody(QPainter& painter, const SystemSpec& spec, const DerivedSystem& derived,
-               const BodyPose& pose, const QColor& color, bool ghost) {
+               const BodyPose& pose, const QColor& color, bool ghost, const BodyLook& look) {
     painter.save();
     painter.translate(pose.x, pose.y);
     painter.rotate(pose.phi * 180.0 / M_PI);
+    t_lineScale = std::clamp(look.lineScale, 0.5, 4.0);
+    double opacity = std::clamp(look.opacity, 0.05, 1.0);
     QColor fill = color.lighter(150);
     QColor ink = color.darker(140);
     if (ghost) {
-        fill.setAlpha(70);
-        ink.setAlpha(130);
+        fill.setAlphaF(opacity / 3);
+        ink.setAlpha(look.lineScale > 1 ? 220 : 130);
     } else {
-        fill.setAlpha(200);
+        fill.setAlphaF(opacity);
+    }
+    if (look.display == BodyDisplay::Outline)
+        fill = Qt::transparent;
+    if (look.display == BodyDisplay::Marker) {
+        paintMarker(painter, derived, ink);
+        painter.restore();
+        return;
     }
     switch (spec.kind) {
     case SystemKind::Sleigh:

@@ -1,4 +1,5 @@
 #pragma once
+#include "canvas/canvas_style.h"
 #include "systems/system.h"
 
 #include <QColor>
@@ -17,8 +18,17 @@ struct BodyPose {
 /// P + a s-hat; the disk seen from above; the carriage with its two wheels at +-a (its half-axle)
 /// across the heading on an axle through P, its centre of mass.
 /// ghost draws it translucent, for the free motion.
+/// look: to scale, outline only, or a marker of a fixed pixel size; fill opacity; pen scale.
+struct BodyLook {
+    BodyDisplay display = BodyDisplay::ToScale;
+    double opacity = 0.8; ///< of the fill (a ghost gets a third of it)
+    double lineScale = 1; ///< multiplies the pen widths and the marker size
+};
 void paintBody(QPainter& painter, const SystemSpec& spec, const DerivedSystem& derived,
-               const BodyPose& pose, const QColor& color, bool ghost);
+               const BodyPose& pose, const QColor& color, bool ghost, const BodyLook& look = {});
+
+/// The radius of the marker [px] before lineScale.
+constexpr double kMarkerRadiusPx = 9;
 
 /// The radius [m] of a circle around P that holds the whole body (for fitting the view).
 double bodyExtent(const SystemSpec& spec, const DerivedSystem& derived);

@@ -18,14 +18,15 @@ namespace chaplygin::ui {
 
 namespace {
 
-const QColor kControlled(0x1f, 0x77, 0xb4);
-const QColor kFree(0xd6, 0x27, 0x28);
 constexpr double kStrokeSpacingPx = 10;    // drawn points closer than this are dropped
 constexpr double kVertexPickPx = 8;        // how near a click must be to grab a vertex
-constexpr int kTopPx = 26, kLegendPx = 62; // the time line and the legend
+constexpr int kTopPx = 26, kLegendPx = 78; // the time line and the legend, before the scale
+
+// pen widths scale with the canvas style; set at the start of each paint
+double t_penScale = 1;
 
 QPen cosmetic(const QColor& c, double w, Qt::PenStyle style = Qt::SolidLine) {
-    QPen pen(c, w, style);
+    QPen pen(c, w * t_penScale, style);
     pen.setCosmetic(true);
     pen.setCapStyle(Qt::RoundCap);
     pen.setJoinStyle(Qt::RoundJoin);
@@ -55,7 +56,11 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
     setMouseTracking(false);
     setAutoFillBackground(false);
     setAttribute(Qt::WA_OpaquePaintEvent);
-    setToolTip(tr("Wheel or +/-: zoom; drag or arrows: pan; F: fit scene; B: follow body"));
+    setToolTip(
+        tr("Wheel or +/-: zoom; drag or arrows: pan; F: fit scene; B: follow body; L: legend"));
+    setAccessibleName(tr("Scene canvas"));
+    setAccessibleDescription(tr("The animation: the prescribed path, the controlled body and the "
+                                "free motion from the same start"));
     connect(document, &SceneDocument::solutionChanged, this, &SceneCanvas::onSolutionChanged);
 }
 
@@ -99,40 +104,77 @@ void SceneCanvas::centreOnBody() {
     m_centre = QPointF(m.x, m.y);
 }
 
-void SceneCanvas::fitScene() {
+QRectF SceneCanvas::sceneBounds() const {
     const auto& solution = m_document->solution();
     if (!solution)
-        return;
+        return {};
     const PlotSeries& s = m_document->series();
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
     auto extend = [&](const QVector<double>& xs, const QVector<double>& ys) {
         for (int i = 0; i < std::min(xs.size(), ys.size()); ++i) {
+            if (!std::isfinite(xs[i]) || !std::isfinite(ys[i]))
+                continue;
             x0 = std::min(x0, xs[i]);
             x1 = std::max(x1, xs[i]);
             y0 = std::min(y0, ys[i]);
             y1 = std::max(y1, ys[i]);
         }
     };
+    // everything that moves, over the whole horizon
     extend(s.pathX, s.pathY);
     extend(s.x, s.y);
+    extend(s.freeX, s.freeY);
+    if (m_showVakonomic)
+        extend(s.vakX, s.vakY);
     if (x0 > x1)
-        return;
-    // the free motion may run far off: it widens the view by at most half the path's size
-    QRectF path(QPointF(x0, y0), QPointF(x1, y1));
-    double grow = 0.5 * std::max(path.width(), path.height());
-    QRectF limit = path.adjusted(-grow, -grow, grow, grow);
-    for (int i = 0; i < std::min(s.freeX.size(), s.freeY.size()); ++i) {
-        QPointF f(s.freeX[i], s.freeY[i]);
-        if (limit.contains(f))
-            extend({f.x()}, {f.y()});
-    }
+        return {};
     QRectF box(QPointF(x0, y0), QPointF(x1, y1));
-    double pad = bodyExtent(solution->scene().system, solution->system());
-    box.adjust(-pad, -pad, pad, pad);
+    double pad = m_style.body == BodyDisplay::Marker
+                     ? 0.05 * std::max({box.width(), box.height(), 1e-3})
+                     : bodyExtent(solution->scene().system, solution->system());
+    return box.adjusted(-pad, -pad, pad, pad);
+}
+
+int SceneCanvas::topBandPx() const {
+    return int(std::lround(kTopPx * m_style.lineScale * (m_style.largeTime ? 2.2 : 1.0)));
+}
+
+int SceneCanvas::legendBandPx() const {
+    return m_legendVisible ? int(std::lround(kLegendPx * m_style.lineScale)) : 0;
+}
+
+QRectF SceneCanvas::drawingArea() const {
+    return QRectF(0, topBandPx(), width(), std::max(height() - topBandPx() - legendBandPx(), 0));
+}
+
+void SceneCanvas::setCanvasStyle(const CanvasStyle& style) {
+    m_style = style.sanitized();
+    if (m_autoFit)
+        fitScene();
+    update();
+}
+
+void SceneCanvas::setLegendVisible(bool visible) {
+    m_legendVisible = visible;
+    if (m_autoFit)
+        fitScene();
+    update();
+}
+
+void SceneCanvas::fitScene() {
+    const auto& solution = m_document->solution();
+    if (!solution)
+        return;
+    QRectF box = sceneBounds();
+    if (box.isNull())
+        return;
     // the scene goes between the time line at the top and the legend at the bottom
-    double w = std::max(width(), 100), h = std::max(height() - kTopPx - kLegendPx, 100);
-    m_scale = std::clamp(std::min(w / box.width(), h / box.height()) * 0.95, 1e-3, 1e5);
-    m_centre = box.center() - QPointF(0, 0.5 * (kTopPx - kLegendPx) / m_scale);
+    QRectF area = drawingArea();
+    double w = std::max(area.width(), 100.0), h = std::max(area.height(), 100.0);
+    m_scale = std::clamp(
+        std::min(w / std::max(box.width(), 1e-9), h / std::max(box.height(), 1e-9)) * 0.95, 1e-3,
+        1e5);
+    m_centre = box.center() + QPointF(0, (area.center().y() - height() / 2.0) / m_scale);
     m_fittedPath = solution->path();
     m_autoFit = true;
     setFollowBody(false);
@@ -158,6 +200,11 @@ void SceneCanvas::setDrawMode(bool on) {
     update();
 }
 
+void SceneCanvas::setShowVakonomic(bool show) {
+    m_showVakonomic = show;
+    update();
+}
+
 void SceneCanvas::zoomBy(double factor) {
     m_autoFit = false;
     m_scale = std::clamp(m_scale * factor, 1e-3, 1e5);
@@ -180,26 +227,35 @@ void SceneCanvas::paintGrid(QPainter& p) const {
         }
     QPointF a = toWorld(QPointF(0, height())), b = toWorld(QPointF(width(), 0));
     p.setPen(cosmetic(QColor(232, 232, 232), 1));
-    for (double x = std::floor(a.x() / step) * step; x <= b.x(); x += step)
-        p.drawLine(toPixel({x, a.y()}), toPixel({x, b.y()}));
-    for (double y = std::floor(a.y() / step) * step; y <= b.y(); y += step)
-        p.drawLine(toPixel({a.x(), y}), toPixel({b.x(), y}));
+    // counted, not accumulated: far from the origin x + step may round back to x
+    const double kx0 = std::floor(a.x() / step), kx1 = std::ceil(b.x() / step);
+    const double ky0 = std::floor(a.y() / step), ky1 = std::ceil(b.y() / step);
+    const bool countable =
+        std::max({std::abs(kx0), std::abs(kx1), std::abs(ky0), std::abs(ky1)}) < 1e15;
+    if (countable && kx1 - kx0 < 2000 && ky1 - ky0 < 2000) {
+        for (double k = kx0; k <= kx1; ++k)
+            p.drawLine(toPixel({k * step, a.y()}), toPixel({k * step, b.y()}));
+        for (double k = ky0; k <= ky1; ++k)
+            p.drawLine(toPixel({a.x(), k * step}), toPixel({b.x(), k * step}));
+    }
     p.setPen(cosmetic(QColor(200, 200, 200), 1));
     p.drawLine(toPixel({a.x(), 0}), toPixel({b.x(), 0}));
     p.drawLine(toPixel({0, a.y()}), toPixel({0, b.y()}));
     // scale bar, top right: one grid step
     double len = step * m_scale;
-    QPointF right(width() - 14, 24), left = right - QPointF(len, 0);
+    QPointF right(width() - 14, topBandPx() - 2), left = right - QPointF(len, 0);
     p.setPen(cosmetic(QColor(60, 60, 60), 1.5));
     p.drawLine(left, right);
     p.drawLine(left, left - QPointF(0, 5));
     p.drawLine(right, right - QPointF(0, 5));
     QFont f = font();
-    f.setPointSizeF(8);
+    f.setPointSizeF(8 * m_style.lineScale);
     p.setFont(f);
     QString label =
         step >= 1 ? QStringLiteral("%1 m").arg(step) : QStringLiteral("%1 cm").arg(step * 100);
-    p.drawText(QRectF(left.x() - 40, left.y() - 20, len + 80, 14), Qt::AlignCenter, label);
+    p.drawText(QRectF(left.x() - 40, left.y() - 8 - 14 * m_style.lineScale, len + 80,
+                      14 * m_style.lineScale),
+               Qt::AlignCenter, label);
 }
 
 void SceneCanvas::paintPath(QPainter& p) const {
@@ -215,7 +271,10 @@ void SceneCanvas::paintPath(QPainter& p) const {
         for (std::size_t i = 1; i < nodes.size(); ++i) {
             // a wide pale band, so that the trail on top of it stays visible
             QPen pen =
-                cosmetic(pale(curvatureColor(0.5 * (nodes[i - 1].kappa + nodes[i].kappa))), 6);
+                cosmetic(m_style.highContrast
+                             ? m_style.path()
+                             : pale(curvatureColor(0.5 * (nodes[i - 1].kappa + nodes[i].kappa))),
+                         6);
             pen.setCapStyle(Qt::FlatCap);
             p.setPen(pen);
             p.drawLine(toPixel({nodes[i - 1].x, nodes[i - 1].y}),
@@ -242,35 +301,63 @@ void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now) const {
         p.setPen(pen);
         p.drawPolyline(line);
     };
-    QColor free = kFree;
-    free.setAlpha(150);
-    trail(s.freeT, s.freeX, s.freeY, {now.free.x, now.free.y}, cosmetic(free, 1.5, Qt::DashLine));
-    trail(s.t, s.x, s.y, {now.x, now.y}, cosmetic(kControlled.darker(150), 2));
+    QColor free = m_style.free();
+    free.setAlpha(m_style.highContrast ? 255 : 150);
+    double w = m_style.trailWidth;
+    trail(s.freeT, s.freeX, s.freeY, {now.free.x, now.free.y},
+          cosmetic(free, std::max(0.75 * w, 1.5), Qt::DashLine));
+    trail(s.t, s.x, s.y, {now.x, now.y}, cosmetic(m_style.controlled().darker(150), w));
+    if (m_showVakonomic)
+        trail(s.vakT, s.vakX, s.vakY, {now.vak.x, now.vak.y},
+              cosmetic(m_style.vakonomic(), std::max(0.75 * w, 1.5), Qt::DashDotLine));
 }
 
 void SceneCanvas::paintLegend(QPainter& p) const {
+    // the legend has its own strip under the drawing area: nothing moves under it
+    const double k = m_style.lineScale;
     QFont f = font();
-    f.setPointSizeF(9);
+    f.setPointSizeF(9 * k);
     p.setFont(f);
-    int y = height() - 54;
-    p.setPen(cosmetic(kControlled.darker(150), 2));
-    p.drawLine(10, y, 34, y);
-    p.setPen(cosmetic(kFree, 2, Qt::DashLine));
-    p.drawLine(10, y + 16, 34, y + 16);
-    for (int i = 0; i < 24; ++i) {
-        QPen pen = cosmetic(pale(curvatureColor((i - 11.5) / 4.0)), 6);
-        pen.setCapStyle(Qt::FlatCap);
-        p.setPen(pen);
-        p.drawLine(10 + i, y + 32, 11 + i, y + 32);
+    if (m_legendVisible) {
+        QRectF band(0, height() - legendBandPx(), width(), legendBandPx());
+        p.fillRect(band, QColor(246, 246, 246));
+        p.setPen(cosmetic(QColor(200, 200, 200), 1));
+        p.drawLine(band.topLeft(), band.topRight());
+        double y = band.top() + 8 * k, dy = 16 * k, x = 10, len = 24 * k;
+        p.setPen(cosmetic(m_style.controlled().darker(150), 2));
+        p.drawLine(QPointF(x, y), QPointF(x + len, y));
+        p.setPen(cosmetic(m_style.free(), 2, Qt::DashLine));
+        p.drawLine(QPointF(x, y + dy), QPointF(x + len, y + dy));
+        if (m_showVakonomic) {
+            p.setPen(cosmetic(m_style.vakonomic(), 2, Qt::DashDotLine));
+            p.drawLine(QPointF(x, y + 3 * dy), QPointF(x + len, y + 3 * dy));
+        }
+        for (int i = 0; i < 24; ++i) {
+            QColor c =
+                m_style.highContrast ? m_style.path() : pale(curvatureColor((i - 11.5) / 4.0));
+            QPen pen = cosmetic(c, 6);
+            pen.setCapStyle(Qt::FlatCap);
+            p.setPen(pen);
+            p.drawLine(QPointF(x + i * k, y + 2 * dy), QPointF(x + (i + 1) * k, y + 2 * dy));
+        }
+        p.setPen(Qt::black);
+        double tx = x + len + 6;
+        auto text = [&](double row, const QString& s) {
+            QRectF r(tx, y + row * dy - 0.5 * dy, width() - tx - 4, dy);
+            p.drawText(r, Qt::AlignLeft | Qt::AlignVCenter,
+                       p.fontMetrics().elidedText(s, Qt::ElideRight, int(r.width())));
+        };
+        text(0, tr("controlled body and its trail (tracks the path)"));
+        text(1, tr("free motion from the same start (ghost)"));
+        if (m_showVakonomic)
+            text(3, tr("genuine vakonomic body: \u03bb obeys its own equation (21)"));
+        text(2, m_style.highContrast
+                    ? tr("path (\u25cf start, \u25a1 end)")
+                    : tr("path (\u25cf start, \u25a1 end), coloured by its curvature \u03ba: red "
+                         "right turn, grey straight, blue left turn"));
     }
-    p.setPen(Qt::black);
-    p.drawText(40, y + 4, tr("controlled body and its trail (tracks the path)"));
-    p.drawText(40, y + 20, tr("free motion from the same start (translucent ghost)"));
-    p.drawText(40, y + 36,
-               tr("path (\u25cf start, \u25a1 end), coloured by its curvature \u03ba: red right "
-                  "turn, grey straight, blue left turn"));
     if (m_drawMode)
-        p.drawText(QRectF(8, 24, width() - 16, 20), Qt::AlignLeft,
+        p.drawText(QRectF(8, topBandPx(), width() - 16, 20 * k), Qt::AlignLeft,
                    tr("Draw mode: drag to draw a new path; drag a square to move a point, "
                       "right-click it to delete it"));
 }
@@ -278,7 +365,16 @@ void SceneCanvas::paintLegend(QPainter& p) const {
 void SceneCanvas::paintBackground() {
     // grid, path and legend change only with the view or the solution: cached between frames
     qreal dpr = devicePixelRatioF();
-    BackgroundKey key{m_document->solution().get(), size(), m_scale, m_centre, m_drawMode, dpr};
+    BackgroundKey key{m_document->solution().get(),
+                      size(),
+                      m_scale,
+                      m_centre,
+                      m_drawMode,
+                      dpr,
+                      m_showVakonomic,
+                      m_style,
+                      m_legendVisible};
+    t_penScale = m_style.lineScale;
     if (key == m_backgroundKey && !m_background.isNull())
         return;
     m_backgroundKey = key;
@@ -296,32 +392,32 @@ void SceneCanvas::paintBackground() {
 
 void SceneCanvas::paintEvent(QPaintEvent*) {
     paintBackground();
+    t_penScale = m_style.lineScale;
     QPainter p(this);
     p.drawPixmap(0, 0, m_background);
     p.setRenderHint(QPainter::Antialiasing, true);
     const auto& solution = m_document->solution();
     if (solution) {
         MotionSample now = solution->at(m_time);
+        p.save();
+        p.setClipRect(drawingArea());
         paintTrails(p, now);
         paintPinnedRuns(p, *PinSet::of(m_document), worldTransform(), m_time, QPointF(10, 42));
         const SystemSpec& spec = solution->scene().system;
-        p.save();
         p.setTransform(worldTransform());
         // the translucent ghost on top, so that both stay visible where they overlap
-        paintBody(p, spec, solution->system(), {now.x, now.y, now.phi}, kControlled, false);
-        paintBody(p, spec, solution->system(), {now.free.x, now.free.y, now.free.phi}, kFree, true);
+        BodyLook look{m_style.body, m_style.bodyOpacity, m_style.lineScale};
+        paintBody(p, spec, solution->system(), {now.x, now.y, now.phi}, m_style.controlled(), false,
+                  look);
+        paintBody(p, spec, solution->system(), {now.free.x, now.free.y, now.free.phi},
+                  m_style.free(), true, look);
+        if (m_showVakonomic)
+            paintBody(p, spec, solution->system(), {now.vak.x, now.vak.y, now.vak.phi},
+                      m_style.vakonomic(), true, look);
         p.restore();
         m_vectors.paint(p, solution, m_document->scene().vectors, now, worldTransform(), m_scale,
                         rect());
-        QFont f = font();
-        f.setPointSizeF(9);
-        p.setFont(f);
-        p.setPen(Qt::black);
-        p.drawText(QRectF(8, 6, width() - 16, 20), Qt::AlignLeft,
-                   tr("t = %1 s of %2 s    scale %3 px/m")
-                       .arg(m_time, 0, 'f', 2)
-                       .arg(solution->tEnd(), 0, 'f', 2)
-                       .arg(m_scale, 0, 'g', 3));
+        paintTimeReadout(p, solution->tEnd());
     }
     if (m_drawMode)
         paintVertices(p);
@@ -332,6 +428,35 @@ void SceneCanvas::paintEvent(QPaintEvent*) {
         p.setPen(cosmetic(QColor(40, 40, 40), 2));
         p.drawPolyline(line);
     }
+}
+
+void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
+    QFont f = font();
+    p.setPen(Qt::black);
+    if (m_style.largeTime) {
+        // presentation: the time large enough for the back of the room
+        f.setPointSizeF(9 * m_style.lineScale * 2);
+        f.setBold(true);
+        p.setFont(f);
+        const QString now = tr("t = %1 s").arg(m_time, 0, 'f', 2);
+        QRectF band(10, 0, width() - 20, topBandPx());
+        p.drawText(band, Qt::AlignLeft | Qt::AlignVCenter, now);
+        double after =
+            10 + p.fontMetrics().horizontalAdvance(now) + p.fontMetrics().averageCharWidth();
+        f.setPointSizeF(9 * m_style.lineScale);
+        f.setBold(false);
+        p.setFont(f);
+        p.drawText(band.adjusted(after - 10, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter,
+                   tr("of %1 s").arg(tEnd, 0, 'f', 2));
+        return;
+    }
+    f.setPointSizeF(9 * m_style.lineScale);
+    p.setFont(f);
+    p.drawText(QRectF(8, 6, width() - 16, topBandPx()), Qt::AlignLeft,
+               tr("t = %1 s of %2 s    scale %3 px/m")
+                   .arg(m_time, 0, 'f', 2)
+                   .arg(tEnd, 0, 'f', 2)
+                   .arg(m_scale, 0, 'g', 3));
 }
 
 std::vector<std::pair<double, double>> SceneCanvas::drawnPoints() const {
@@ -465,6 +590,9 @@ void SceneCanvas::keyPressEvent(QKeyEvent* e) {
         break;
     case Qt::Key_B:
         setFollowBody(!m_follow);
+        break;
+    case Qt::Key_L:
+        setLegendVisible(!m_legendVisible);
         break;
     case Qt::Key_Left:
     case Qt::Key_Right:

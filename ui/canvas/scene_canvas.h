@@ -1,5 +1,6 @@
 #pragma once
 #include "canvas/vector_layer.h"
+#include "canvas/canvas_style.h"
 #include "paths/path_source.h"
 #include "scene/solution.h"
 
@@ -27,6 +28,8 @@ class SceneCanvas : public QWidget {
     double time() const { return m_time; }
     bool followsBody() const { return m_follow; }
     bool drawMode() const { return m_drawMode; }
+    /// Whether the genuine vakonomic body (a third body) is drawn.
+    bool showsVakonomic() const { return m_showVakonomic; }
     /// Pixels per metre.
     double scale() const { return m_scale; }
     /// World point (metres) <-> widget pixel.
@@ -36,6 +39,15 @@ class SceneCanvas : public QWidget {
     QSize sizeHint() const override { return {800, 500}; }
     /// The arrows of View > Vectors as last painted.
     const VectorLayer& vectorLayer() const { return m_vectors; }
+    QSize minimumSizeHint() const override { return {240, 180}; }
+
+    const CanvasStyle& canvasStyle() const { return m_style; }
+    void setCanvasStyle(const CanvasStyle& style);
+    bool legendVisible() const { return m_legendVisible; }
+    /// The part of the widget the scene is drawn in: between the time line and the legend.
+    QRectF drawingArea() const;
+    /// The world rectangle Fit frames: the path and every body over the whole horizon.
+    QRectF sceneBounds() const;
 
   public slots:
     void setTime(double t);
@@ -43,6 +55,9 @@ class SceneCanvas : public QWidget {
     void setFollowBody(bool follow);
     void setDrawMode(bool on);
     void zoomBy(double factor);
+    void setShowVakonomic(bool show);
+    /// Shows or collapses the legend strip under the drawing area (key L).
+    void setLegendVisible(bool visible);
 
   signals:
     /// The user finished drawing a stroke: sampled points in metres, in order.
@@ -67,6 +82,7 @@ class SceneCanvas : public QWidget {
     void paintPath(QPainter& p) const;
     void paintTrails(QPainter& p, const MotionSample& now) const;
     void paintLegend(QPainter& p) const;
+    void paintTimeReadout(QPainter& p, double tEnd) const;
     void paintBackground();
     void centreOnBody();
     /// The vertices of the current drawn path (empty unless it is a polyline).
@@ -83,6 +99,7 @@ class SceneCanvas : public QWidget {
     std::shared_ptr<const Path> m_fittedPath; // the path the view was last fitted to
     bool m_autoFit = true; // refit on resize and new solutions until the user zooms or pans
     bool m_drawMode = false;
+    bool m_showVakonomic = true;
     bool m_panning = false;
     QPointF m_lastMouse;
     std::vector<QPointF> m_stroke; // world points of the stroke being drawn
@@ -95,11 +112,18 @@ class SceneCanvas : public QWidget {
         QPointF centre;
         bool drawMode = false;
         qreal dpr = 0;
+        bool vakonomic = true;
+        CanvasStyle style;
+        bool legend = true;
         bool operator==(const BackgroundKey&) const = default;
     };
     BackgroundKey m_backgroundKey;
     QPixmap m_background; // grid, path and legend
     VectorLayer m_vectors;
+    CanvasStyle m_style;
+    bool m_legendVisible = true;
+    int topBandPx() const;
+    int legendBandPx() const;
 };
 
 } // namespace chaplygin::ui

@@ -134,7 +134,8 @@ void AccuracyReadout::onSolutionChanged() {
            "free velocities: %5\nfree position: %6")
             .arg(QString::fromStdString(m.path), QString::fromStdString(m.timeLaw),
                  QString::fromStdString(m.inversion), QString::fromStdString(m.control),
-                 QString::fromStdString(m.freeVelocity), QString::fromStdString(m.freePosition)));
+                 QString::fromStdString(m.freeVelocity), QString::fromStdString(m.freePosition)) +
+        tr("\nvakonomic body: %1").arg(QString::fromStdString(m.vakonomic)));
     refresh();
 }
 

@@ -7,6 +7,8 @@
 #include <QTextBrowser>
 #include <QVBoxLayout>
 
+#include <algorithm>
+
 namespace chaplygin::ui {
 
 EquationsPanel::EquationsPanel(SceneDocument* document, QWidget* parent)
@@ -16,6 +18,7 @@ EquationsPanel::EquationsPanel(SceneDocument* document, QWidget* parent)
     m_view = new QTextBrowser;
     m_view->setObjectName(QStringLiteral("equationsView"));
     layout->addWidget(m_view);
+    m_basePoints = m_view->font().pointSizeF();
     connect(document, &SceneDocument::solutionChanged, this, &EquationsPanel::refresh);
 }
 
@@ -41,6 +44,15 @@ QString EquationsPanel::html() {
     m_view->setHtml(m_html);
     m_view->verticalScrollBar()->setValue(scroll);
     return m_html;
+}
+
+void EquationsPanel::setFontScale(double scale) {
+    QFont f = m_view->font();
+    f.setPointSizeF(m_basePoints * std::clamp(scale, 0.5, 6.0));
+    m_view->setFont(f);
+    m_view->document()->setDefaultFont(f);
+    m_stale = true;
+    html();
 }
 
 void EquationsPanel::showEvent(QShowEvent* e) {

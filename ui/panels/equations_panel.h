@@ -18,6 +18,8 @@ class EquationsPanel : public QWidget {
     QTextBrowser* view() const { return m_view; }
     /// The page as shown (rebuilt now if it was skipped while hidden).
     QString html();
+    /// Enlarges the text (presentation mode): 1 is the normal size.
+    void setFontScale(double scale);
 
   public slots:
     void setTime(double t);
@@ -31,6 +33,7 @@ class EquationsPanel : public QWidget {
     QTextBrowser* m_view;
     double m_time = 0;
     bool m_stale = true;
+    double m_basePoints = 0;
     QString m_html;
 };
 

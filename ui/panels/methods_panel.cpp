@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 #include "document/job_runner.h"
 #include "document/scene_document.h"
+#include "plots/plot_context_menu.h"
 #include "plots/work_precision_plot.h"
 
 #include <qcustomplot.h>
@@ -52,7 +53,7 @@ MethodsPanel::MethodsPanel(SceneDocument* document, QWidget* parent)
     m_references->setTextInteractionFlags(Qt::TextSelectableByMouse);
 
     m_plot = new QCustomPlot;
-    m_plot->setMinimumHeight(200);
+    m_plot->setMinimumHeight(120); // the tabified plots dock may be low on a 1280 x 800 screen
     m_plot->setNoAntialiasingOnDrag(true);
 
     m_table = new QTableWidget(0, 5);
@@ -67,6 +68,10 @@ MethodsPanel::MethodsPanel(SceneDocument* document, QWidget* parent)
     m_table->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     m_table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
     m_table->setMaximumHeight(m_table->horizontalHeader()->sizeHint().height() * 4);
+    m_table->setTabKeyNavigation(false); // Tab leaves the table
+    installPlotExportMenu(
+        m_plot, [] { return QStringLiteral("work_precision"); },
+        [this](const QString& error) { m_status->setText(error); });
 
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(m_run);
@@ -162,7 +167,22 @@ void MethodsPanel::onSceneChanged() {
     if (isRunning() && m_document->solution() && m_document->solution()->scene() != m_runScene) {
         m_cancelReason = tr("cancelled: the scene changed");
         cancel();
+    } else if (!isRunning() && m_report && m_document->solution() &&
+               m_document->solution()->scene() != m_runScene) {
+        clearReport();
     }
+}
+
+void MethodsPanel::clearReport() {
+    // a diagram of another scene would be read as this one's
+    m_report.reset();
+    m_plot->clearPlottables();
+    m_plot->plotLayout()->clear();
+    m_plot->replot();
+    m_table->setRowCount(0);
+    m_references->clear();
+    m_progress->setValue(0);
+    m_status->setText(tr("The scene changed: press Compute for this scene's diagram."));
 }
 
 void MethodsPanel::onFinished() {
@@ -182,6 +202,9 @@ void MethodsPanel::onFinished() {
     m_progress->setValue(m_progress->maximum());
     m_report = std::move(out.report);
     showReport(*m_report);
+    if (m_document->solution() && m_document->solution()->scene() != m_runScene &&
+        !m_report->cancelled)
+        clearReport();
     emit finished();
 }
 

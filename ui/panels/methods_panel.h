@@ -62,6 +62,7 @@ class MethodsPanel : public QWidget {
     void onFinished();
     void onSceneChanged();
     void showReport(const WorkPrecisionReport& report);
+    void clearReport();
 
     SceneDocument* m_document;
     QPushButton* m_run;

@@ -262,6 +262,23 @@ void ParametersPanel::updateDerived() {
 void ParametersPanel::showError(const QString& message) {
     m_error->setText(message);
     m_error->setVisible(!message.isEmpty());
+    // the entry that was refused stays marked until a value is accepted: what is shown red is
+    // not what is used
+    for (auto& [name, row] : m_rows) {
+        bool invalid = !message.isEmpty() && name == m_lastEdited;
+        if (row.spin->property("invalid").toBool() == invalid)
+            continue;
+        row.spin->setProperty("invalid", invalid);
+        row.spin->setStyleSheet(invalid ? QStringLiteral("QDoubleSpinBox { border: 2px solid "
+                                                         "#b00020; background: #fdecee; }")
+                                        : QString());
+        row.spin->setAccessibleDescription(invalid ? tr("invalid: %1").arg(message) : QString());
+    }
+}
+
+bool ParametersPanel::isMarkedInvalid(const QString& name) const {
+    auto it = m_rows.find(name);
+    return it != m_rows.end() && it->second.spin->property("invalid").toBool();
 }
 
 QString ParametersPanel::errorText() const {
@@ -279,6 +296,7 @@ QSlider* ParametersPanel::slider(const QString& name) const {
 }
 
 void ParametersPanel::onValueChanged(const QString& name, double value) {
+    m_lastEdited = name;
     if (name == QStringLiteral("speed"))
         m_scene.speed = value;
     else

@@ -28,6 +28,8 @@ class ParametersPanel : public QWidget {
     /// Shows an error under the parameters (empty clears it).
     void showError(const QString& message);
     QString errorText() const;
+    /// Whether the parameter's spin box is marked invalid (its value was refused).
+    bool isMarkedInvalid(const QString& name) const;
 
     /// The spin box of a parameter ("m", "a", "b", ..., or "speed"), or null.
     QDoubleSpinBox* spinBox(const QString& name) const;
@@ -65,6 +67,7 @@ class ParametersPanel : public QWidget {
     QLabel* m_speedLabel;
     QLabel* m_error;
     std::map<QString, Row> m_rows;
+    QString m_lastEdited; // the parameter of the last edit, marked when it is refused
 };
 
 } // namespace chaplygin::ui

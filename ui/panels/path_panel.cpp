@@ -8,6 +8,7 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -67,7 +68,7 @@ PathPanel::PathPanel(QWidget* parent) : QWidget(parent) {
         s->setDecimals(4);
         s->setKeyboardTracking(false);
         s->setToolTip(tr("The range of x [m] (graph) or of u (parametric), traversed from the "
-                         "first to the second"));
+                         "first to the second; Enter applies the path"));
         range->addWidget(s);
     }
     m_rangeLabel = new QLabel(tr("x from, to"));
@@ -90,12 +91,14 @@ PathPanel::PathPanel(QWidget* parent) : QWidget(parent) {
     m_draw->setCheckable(true);
     m_draw->setToolTip(
         tr("Press and drag on the canvas to draw a new path; it is sampled and smoothed"));
-    dv->addRow(m_draw);
     m_corners = new QComboBox;
     m_corners->addItem(tr("smooth (spline through the points)"), int(CornerMode::Smooth));
     m_corners->addItem(tr("pivot (straight segments, turn in place)"), int(CornerMode::Pivot));
     m_corners->setToolTip(tr("How a drawn path's corners are followed"));
-    dv->addRow(tr("Corners"), m_corners);
+    auto* drawRow = new QHBoxLayout; // one row: the dock fits a 1280 x 800 screen unscrolled
+    drawRow->addWidget(m_draw);
+    drawRow->addWidget(m_corners, 1);
+    dv->addRow(drawRow);
     m_smoothing = new QDoubleSpinBox;
     m_smoothing->setRange(0, 20);
     m_smoothing->setDecimals(1);
@@ -137,6 +140,18 @@ PathPanel::PathPanel(QWidget* parent) : QWidget(parent) {
 
 CornerMode PathPanel::drawCorners() const {
     return static_cast<CornerMode>(m_corners->currentData().toInt());
+}
+
+void PathPanel::keyPressEvent(QKeyEvent* e) {
+    // a spin box passes Enter on to its parent: in the range fields it applies the typed path
+    bool enter = e->key() == Qt::Key_Return || e->key() == Qt::Key_Enter;
+    QWidget* focus = focusWidget();
+    if (enter && (focus == m_from || focus == m_to)) {
+        applyTyped();
+        e->accept();
+        return;
+    }
+    QWidget::keyPressEvent(e);
 }
 
 double PathPanel::drawSmoothing() const {

@@ -48,6 +48,9 @@ class PathPanel : public QWidget {
     /// The corner mode or the smoothing changed while the current path is a polyline.
     void drawOptionsChanged(CornerMode mode, double smoothing);
 
+  protected:
+    void keyPressEvent(QKeyEvent* e) override;
+
   private:
     void applyTyped();
     void updateKind();

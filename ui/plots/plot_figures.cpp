@@ -4,12 +4,21 @@
 
 #include <qcustomplot.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace chaplygin::ui {
 namespace {
 
-const QColor kControlled(0x1f, 0x77, 0xb4);
-const QColor kFree(0xd6, 0x27, 0x28);
-const QColor kPath(0x7f, 0x7f, 0x7f);
+// the look of the plot being drawn (setPlotLook); set by drawPlot
+CanvasStyle t_look;
+struct Palette {
+    QColor controlled, free, path, vakonomic;
+} t_palette;
+const QColor& kControlled = t_palette.controlled;
+const QColor& kFree = t_palette.free;
+const QColor& kPath = t_palette.path;
+const QColor& kVakonomic = t_palette.vakonomic;
 
 QCPGraph* addGraph(QCPAxisRect* rect, const QVector<double>& x, const QVector<double>& y,
                    const QString& name, const QColor& color, Qt::PenStyle style = Qt::SolidLine) {
@@ -17,7 +26,7 @@ QCPGraph* addGraph(QCPAxisRect* rect, const QVector<double>& x, const QVector<do
         rect->parentPlot()->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
     g->setData(x, y, true);
     g->setName(name);
-    g->setPen(QPen(color, 1.5, style));
+    g->setPen(QPen(color, 1.5 * t_look.lineScale, style));
     return g;
 }
 
@@ -26,7 +35,7 @@ QCPCurve* addCurve(QCPAxisRect* rect, const QVector<double>& x, const QVector<do
     auto* c = new QCPCurve(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
     c->setData(x, y);
     c->setName(name);
-    c->setPen(QPen(color, 1.5, style));
+    c->setPen(QPen(color, 1.5 * t_look.lineScale, style));
     return c;
 }
 
@@ -50,7 +59,12 @@ void legendIn(QCPAxisRect* rect, QCustomPlot& plot) {
         legend->setBrush(QColor(255, 255, 255, 210));
     }
     legend->setLayer("legend");
-    legend->setFont(QFont(plot.font().family(), 8));
+    // compact: small entries with short lines
+    QFont font = plot.font();
+    font.setPointSizeF(std::max(7.0, 0.85 * font.pointSizeF()));
+    legend->setFont(font);
+    legend->setIconSize(int(20 * t_look.lineScale), int(10 * t_look.lineScale));
+    legend->setRowSpacing(0);
     for (int i = 0; i < plot.plottableCount(); ++i) {
         QCPAbstractPlottable* p = plot.plottable(i);
         if (p->keyAxis()->axisRect() == rect)
@@ -63,16 +77,16 @@ void rescale(QCPAxisRect* rect, bool equalAspect = false) {
         p->rescaleAxes(p != rect->plottables().first());
     QCPAxis* x = rect->axis(QCPAxis::atBottom);
     QCPAxis* y = rect->axis(QCPAxis::atLeft);
-    // a little margin; a flat series gets a visible band around it
-    for (QCPAxis* a : {x, y}) {
-        QCPRange r = a->range();
-        double pad = r.size() > 1e-12 * std::max(1.0, std::abs(r.center()))
-                         ? 0.05 * r.size()
-                         : 0.5 * std::max(1e-3, std::abs(r.center()));
-        a->setRange(r.lower - pad, r.upper + pad);
+    for (QCPAxis* a : {x, y})
+        a->setRange(paddedRange(a->range().lower, a->range().upper));
+    if (equalAspect) {
+        // equal scales on x and y whatever the size: redone after every layout
+        QRectF data(QPointF(x->range().lower, y->range().lower),
+                    QPointF(x->range().upper, y->range().upper));
+        QObject::connect(rect->parentPlot(), &QCustomPlot::afterLayout, rect,
+                         [rect, data] { fitEqualAspect(*rect, data); });
+        fitEqualAspect(*rect, data);
     }
-    if (equalAspect)
-        y->setScaleRatio(x, 1.0);
 }
 
 void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSeries& s) {
@@ -82,6 +96,9 @@ void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSer
                  kControlled);
         addGraph(rect, s.freeT, s.freePsi,
                  QCoreApplication::translate("PlotFigures", "free \u03a8"), kFree, Qt::DashLine);
+        addGraph(rect, s.vakT, s.vakPsi,
+                 QCoreApplication::translate("PlotFigures", "vakonomic \u03a8"), kVakonomic,
+                 Qt::DashDotLine);
         labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03a8 [rad]"));
         break;
     case PlotKind::Chi:
@@ -90,11 +107,17 @@ void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSer
         addGraph(rect, s.freeT, s.freeChi,
                  QCoreApplication::translate("PlotFigures", "free \u03c7 (constant)"), kFree,
                  Qt::DashLine);
+        addGraph(rect, s.vakT, s.vakChi,
+                 QCoreApplication::translate("PlotFigures", "vakonomic \u03c7"), kVakonomic,
+                 Qt::DashDotLine);
         labels(rect, QStringLiteral("t [s]"),
                QStringLiteral("\u03c7 = \u03a8 \u2212 (a/b)\u03c6 [rad]"));
         break;
     case PlotKind::Lambda:
         addGraph(rect, s.t, s.lambda, QStringLiteral("\u03bb = m b d\u03c7/dt"), kControlled);
+        addGraph(rect, s.vakT, s.vakLambda,
+                 QCoreApplication::translate("PlotFigures", "vakonomic \u03bb (eq. 21)"),
+                 kVakonomic, Qt::DashDotLine);
         labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03bb [kg m/s]"));
         break;
     case PlotKind::Energy:
@@ -102,6 +125,9 @@ void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSer
                  kControlled);
         addGraph(rect, s.freeT, s.freeEnergy, QCoreApplication::translate("PlotFigures", "free T"),
                  kFree, Qt::DashLine);
+        addGraph(rect, s.vakT, s.vakEnergy,
+                 QCoreApplication::translate("PlotFigures", "vakonomic T"), kVakonomic,
+                 Qt::DashDotLine);
         labels(rect, QStringLiteral("t [s]"),
                QCoreApplication::translate("PlotFigures", "kinetic energy T [J]"));
         break;
@@ -119,6 +145,8 @@ void trajectoryPlot(QCustomPlot& plot, QCPAxisRect* rect, const PlotSeries& s) {
              kControlled);
     addCurve(rect, s.freeX, s.freeY, QCoreApplication::translate("PlotFigures", "free body (P)"),
              kFree, Qt::DashLine);
+    addCurve(rect, s.vakX, s.vakY, QCoreApplication::translate("PlotFigures", "vakonomic body (P)"),
+             kVakonomic, Qt::DashDotLine);
     labels(rect, QStringLiteral("x [m]"), QStringLiteral("y [m]"));
     rescale(rect, true);
     legendIn(rect, plot);
@@ -153,6 +181,46 @@ void paperFigure(QCustomPlot& plot, const PlotSeries& s) {
 }
 
 } // namespace
+
+QCPRange paddedRange(double lower, double upper) {
+    if (!std::isfinite(lower) || !std::isfinite(upper) || lower > upper)
+        return QCPRange(-1, 1);
+    double centre = 0.5 * (lower + upper), size = upper - lower;
+    double magnitude = std::max(std::abs(lower), std::abs(upper));
+    // flat (to rounding): a band of +-10 % around the value, not an axis that magnifies noise
+    if (size <= 1e-6 * magnitude || size < 1e-12) {
+        double half = std::max(0.1 * magnitude, 1e-3);
+        return QCPRange(centre - half, centre + half);
+    }
+    return QCPRange(lower - 0.05 * size, upper + 0.05 * size);
+}
+
+void fitEqualAspect(QCPAxisRect& rect, const QRectF& data) {
+    QCPAxis* x = rect.axis(QCPAxis::atBottom);
+    QCPAxis* y = rect.axis(QCPAxis::atLeft);
+    double w = rect.width(), h = rect.height();
+    if (w < 2 || h < 2 || !(data.width() >= 0) || !(data.height() >= 0))
+        return;
+    // metres per pixel: the larger of the two, so that the whole data box stays in view
+    double u = std::max(data.width() / w, data.height() / h);
+    if (!(u > 0) || !std::isfinite(u))
+        return;
+    QPointF c = data.center();
+    x->setRange(c.x() - 0.5 * u * w, c.x() + 0.5 * u * w);
+    y->setRange(c.y() - 0.5 * u * h, c.y() + 0.5 * u * h);
+}
+
+void setPlotLook(QCustomPlot& plot, const CanvasStyle& look) {
+    QFont font = plot.font();
+    double base = plot.property("chaplyginBaseFont").isValid()
+                      ? plot.property("chaplyginBaseFont").toDouble()
+                      : font.pointSizeF();
+    plot.setProperty("chaplyginBaseFont", base);
+    font.setPointSizeF(base * look.lineScale);
+    plot.setFont(font);
+    plot.setProperty("chaplyginLineScale", look.lineScale);
+    plot.setProperty("chaplyginHighContrast", look.highContrast);
+}
 
 QString plotFileStem(PlotKind kind) {
     switch (kind) {
@@ -192,6 +260,13 @@ QString plotTitle(PlotKind kind) {
 }
 
 void drawPlot(QCustomPlot& plot, PlotKind kind, const PlotSeries& series) {
+    t_look = CanvasStyle();
+    if (plot.property("chaplyginLineScale").isValid()) {
+        t_look.lineScale = plot.property("chaplyginLineScale").toDouble();
+        t_look.highContrast = plot.property("chaplyginHighContrast").toBool();
+        t_look = t_look.sanitized();
+    }
+    t_palette = {t_look.controlled(), t_look.free(), t_look.path(), t_look.vakonomic()};
     plot.setAutoAddPlottableToLegend(false);
     plot.clearPlottables();
     plot.clearItems();

@@ -1,9 +1,13 @@
 #pragma once
+#include "canvas/canvas_style.h"
 #include "plots/plot_series.h"
 
 #include <QString>
 
+class QCPAxisRect;
+class QCPRange;
 class QCustomPlot;
+class QRectF;
 
 namespace chaplygin::ui {
 
@@ -17,6 +21,14 @@ QString plotTitle(PlotKind kind);
 /// free motion where it means something. PaperFigure is the paper's 2x2 layout of Figs. 2 and 3:
 /// s(t), x(t), y(t) and y(x) with the prescribed path.
 void drawPlot(QCustomPlot& plot, PlotKind kind, const PlotSeries& series);
+
+/// The axis range drawn for data in [lower, upper]: 5 % margins; a series flat to rounding
+/// (relative spread <= 1e-6) gets a band of +-10 % around its value instead.
+QCPRange paddedRange(double lower, double upper);
+/// Sets the axis ranges of rect so that one metre is as long on x as on y and data stays whole.
+void fitEqualAspect(QCPAxisRect& rect, const QRectF& data);
+/// The font and line scale and the palette drawPlot uses for this plot from now on.
+void setPlotLook(QCustomPlot& plot, const CanvasStyle& look);
 
 /// Adds the caption line above the plot(s).
 void addCaption(QCustomPlot& plot, const QString& caption);

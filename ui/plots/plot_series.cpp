@@ -34,6 +34,14 @@ PlotSeries collectSeries(const Solution& solution, int freeSamples, int exactSam
         p.freePsi << psi;
         p.freeChi << psi - (sys.a / sys.b) * f.phi;
         p.freeEnergy << f.energy;
+        VakonomicState v = solution.vakonomicAt(t);
+        p.vakT << t;
+        p.vakX << v.x;
+        p.vakY << v.y;
+        p.vakPsi << v.psi;
+        p.vakChi << v.chi;
+        p.vakLambda << v.lambda;
+        p.vakEnergy << v.energy;
     }
     for (const PathPiece& piece : solution.path()->pieces()) {
         if (piece.kind != PathPiece::Kind::Curve)

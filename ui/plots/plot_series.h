@@ -12,6 +12,8 @@ namespace chaplygin::ui {
 struct PlotSeries {
     QVector<double> t, s, x, y, psi, chi, lambda, energy;
     QVector<double> freeT, freeX, freeY, freePsi, freeChi, freeEnergy;
+    /// the genuine vakonomic body, at the free motion's times
+    QVector<double> vakT, vakX, vakY, vakPsi, vakChi, vakLambda, vakEnergy;
     QVector<double> pathX, pathY; ///< the prescribed path, whole
     double tEnd = 0;
 };

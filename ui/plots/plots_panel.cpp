@@ -3,6 +3,7 @@
 #include "document/pin_set.h"
 #include "document/scene_document.h"
 #include "plots/pinned_plots.h"
+#include "plots/plot_context_menu.h"
 
 #include <QGridLayout>
 #include <QPalette>
@@ -45,6 +46,9 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
         connect(plot, &QCustomPlot::mouseMove, this, seek);
         m_grid->addWidget(plot, i / 2, i % 2);
         m_plots[i] = plot;
+        installPlotExportMenu(
+            plot, [i] { return plotFileStem(kKinds[i]); },
+            [this](const QString& error) { emit exportFailed(error); });
     }
     connect(document, &SceneDocument::solutionChanged, this, &PlotsPanel::refresh);
 }
@@ -89,6 +93,12 @@ void PlotsPanel::setTime(double t) {
     m_time = t;
     for (int i = 0; i < 4; ++i)
         placeCursor(i);
+}
+
+void PlotsPanel::setLook(const CanvasStyle& look) {
+    for (QCustomPlot* plot : m_plots)
+        setPlotLook(*plot, look);
+    refresh();
 }
 
 void PlotsPanel::replotNow() {

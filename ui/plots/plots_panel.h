@@ -34,9 +34,13 @@ class PlotsPanel : public QWidget {
     void setTime(double t);
     /// Repaints every plot now (for screenshots and the benchmark).
     void replotNow();
+    /// Font and line scale and palette of the plots (presentation mode).
+    void setLook(const CanvasStyle& look);
 
   signals:
     void seekRequested(double t);
+    /// Exporting a plot from its context menu failed.
+    void exportFailed(const QString& message);
 
   protected:
     void resizeEvent(QResizeEvent* e) override;

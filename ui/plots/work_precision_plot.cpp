@@ -46,6 +46,7 @@ void panel(QCustomPlot& plot, QCPAxisRect* rect, const WorkPrecisionReport& repo
     legend->setFont(QFont(plot.font().family(), 7));
     legend->setBrush(QColor(255, 255, 255, 210));
     int colour = 0;
+    bool starInLegend = false; // one legend entry for every chosen star: the table has the details
     double xmin = INFINITY, xmax = 0, ymin = INFINITY, ymax = 0;
     for (auto& [name, rows] : byMethod) {
         std::sort(rows.begin(), rows.end(),
@@ -75,24 +76,29 @@ void panel(QCustomPlot& plot, QCPAxisRect* rect, const WorkPrecisionReport& repo
                 star->setLineStyle(QCPCurve::lsNone);
                 star->setScatterStyle(
                     QCPScatterStyle(QCPScatterStyle::ssStar, QPen(Qt::black, 2), Qt::NoBrush, 16));
-                star->setName(QCoreApplication::translate("WorkPrecisionPlot", "chosen: ") +
-                              QString::fromStdString(name));
-                star->addToLegend(legend);
+                star->setName(
+                    QCoreApplication::translate("WorkPrecisionPlot", "chosen: see the table"));
+                if (!starInLegend)
+                    star->addToLegend(legend);
+                starInLegend = true;
             }
     }
     if (xmax > 0) {
         rect->axis(QCPAxis::atBottom)->setRange(xmin / 2, xmax * 2);
         rect->axis(QCPAxis::atLeft)->setRange(ymin / 10, ymax * 10);
     }
-    auto* title = new QCPTextElement(
-        &plot,
+    // the title is the top axis's label: above the frame, never on the tick labels or the curves
+    QCPAxis* top = rect->axis(QCPAxis::atTop);
+    top->setVisible(true);
+    top->setTicks(false);
+    top->setTickLabels(false);
+    top->setLabelFont(QFont(plot.font().family(), 10, QFont::Bold));
+    top->setLabel(
         problem == MotionProblem::Controlled
             ? QCoreApplication::translate("WorkPrecisionPlot", "controlled, t \u2264 %1 s")
                   .arg(report.controlledEnd, 0, 'g', 4)
             : QCoreApplication::translate("WorkPrecisionPlot", "free, t \u2264 %1 s")
-                  .arg(report.freeEnd, 0, 'g', 4),
-        QFont(plot.font().family(), 10, QFont::Bold));
-    rect->insetLayout()->addElement(title, Qt::AlignTop | Qt::AlignLeft);
+                  .arg(report.freeEnd, 0, 'g', 4));
 }
 
 } // namespace

@@ -114,6 +114,15 @@ void installInstruments(MainWindow* window) {
     QObject::connect(notes, &NotesPanel::noteEdited, window, [window, doc](const QString& text) {
         Scene next = doc->scene();
         next.note = text.toStdString();
+        if (next.note.size() > kMaxNoteBytes) {
+            // a longer note would save a file that does not open again
+            window->statusBar()->showMessage(
+                MainWindow::tr("The note is %1 bytes; a note is at most %2 bytes (not kept)")
+                    .arg(next.note.size())
+                    .arg(kMaxNoteBytes),
+                10000);
+            return;
+        }
         window->editScene(next, MainWindow::tr("Edit the note"), QStringLiteral("note"));
     });
     QObject::connect(window->playback(), &Playback::timeChanged, equations,

@@ -3,6 +3,7 @@
 #include "canvas/scene_canvas.h"
 #include "common/atomic_file.h"
 #include "common/input_error.h"
+#include "document/file_dialogs.h"
 #include "document/pin_set.h"
 #include "document/scene_command.h"
 #include "document/scene_document.h"
@@ -18,11 +19,16 @@
 #include "scene/presets.h"
 #include "scene/scene_json.h"
 #include "shell/animation_dialog.h"
+#include "shell/body_display_menu.h"
+#include "shell/elided_label.h"
 #include "shell/gallery_menu.h"
 #include "shell/instruments.h"
 #include "shell/language_menu.h"
 #include "shell/playback.h"
+#include "shell/presentation_mode.h"
+#include "shell/space_to_play.h"
 #include "shell/timeline_bar.h"
+#include "shell/window_layout.h"
 
 #include <QAction>
 #include <QApplication>
@@ -33,6 +39,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
@@ -103,10 +110,17 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
 
     m_timeline = new TimelineBar(m_playback, this);
     addToolBar(Qt::BottomToolBarArea, m_timeline);
-    m_status = new QLabel;
+    m_status = new ElidedLabel;
     statusBar()->addWidget(m_status, 1);
+    m_presentation = new PresentationMode(
+        this, m_canvas, m_plots, {m_pathDock, m_parametersDock, m_methodsDock, m_accuracyDock},
+        {m_timeline});
+    m_timeline->addAction(m_presentation->toggleAction());
+    new SpaceToPlay(this, m_timeline->playAction());
 
     buildMenus();
+    setUserStyle(m_useSettings ? CanvasStyle::load(QSettings()) : CanvasStyle());
+    connect(m_plots, &PlotsPanel::exportFailed, this, &MainWindow::showFileError);
 
     connect(m_document, &SceneDocument::solutionChanged, this, &MainWindow::onSolutionChanged);
     connect(m_document, &SceneDocument::errorChanged, this, &MainWindow::onDocumentError);
@@ -150,7 +164,14 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
         restored = restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray());
         restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
     }
-    if (!restored) {
+    if (!restored && m_useSettings && screen()) {
+        // first start: sized to the screen
+        FirstStart first = firstStartGeometry(screen()->availableGeometry());
+        setGeometry(first.geometry);
+        if (first.maximised)
+            setWindowState(Qt::WindowMaximized);
+        balanceDocks();
+    } else if (!restored) {
         resize(1280, 800);
         balanceDocks();
     }
@@ -163,8 +184,17 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::balanceDocks() {
-    // the canvas gets most of the height; the plots a third
-    resizeDocks({m_plotsDock}, {std::max(220, height() / 3)}, Qt::Vertical);
+    // a narrow window: the accuracy dock joins the path and parameters tabs, the canvas keeps
+    // its width
+    if (width() < 1200 && dockWidgetArea(m_accuracyDock) == Qt::RightDockWidgetArea &&
+        !m_accuracyDock->isFloating()) {
+        addDockWidget(Qt::LeftDockWidgetArea, m_accuracyDock);
+        tabifyDockWidget(m_parametersDock, m_accuracyDock);
+        m_pathDock->raise();
+    }
+    // the canvas gets most of the height; the plots a third (a quarter on low screens)
+    resizeDocks({m_plotsDock}, {height() < 900 ? std::max(200, height() / 4) : height() / 3},
+                Qt::Vertical);
     resizeDocks({m_pathDock}, {std::max(360, width() / 4)}, Qt::Horizontal);
 }
 
@@ -194,7 +224,13 @@ void MainWindow::buildMenus() {
     QAction* undo = m_undo->createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
     QAction* redo = m_undo->createRedoAction(this, tr("&Redo"));
-    redo->setShortcut(QKeySequence::Redo);
+    // Ctrl+Y and Ctrl+Shift+Z on every platform
+    QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+    for (const QKeySequence& k : {QKeySequence(tr("Ctrl+Y")), QKeySequence(tr("Ctrl+Shift+Z"))})
+        if (!redoKeys.contains(k))
+            redoKeys << k;
+    redo->setShortcuts(redoKeys);
+    m_redoAction = redo;
     edit->addAction(undo);
     edit->addAction(redo);
 
@@ -214,10 +250,30 @@ void MainWindow::buildMenus() {
     m_followAction->setShortcut(QKeySequence(tr("Ctrl+B")));
     connect(m_followAction, &QAction::toggled, m_canvas, &SceneCanvas::setFollowBody);
     connect(m_canvas, &SceneCanvas::followBodyChanged, m_followAction, &QAction::setChecked);
+    QAction* vakonomic = view->addAction(tr("Genuine &vakonomic body"));
+    vakonomic->setObjectName(QStringLiteral("showVakonomicAction"));
+    vakonomic->setCheckable(true);
+    vakonomic->setChecked(m_canvas->showsVakonomic());
+    vakonomic->setToolTip(tr("Draw a third body whose multiplier obeys its own equation (21): it "
+                             "cannot follow the path"));
+    connect(vakonomic, &QAction::toggled, m_canvas, &SceneCanvas::setShowVakonomic);
     view->addAction(tr("Zoom &in"), QKeySequence::ZoomIn, this, [this] { m_canvas->zoomBy(1.25); });
     view->addAction(tr("Zoom &out"), QKeySequence::ZoomOut, this,
                     [this] { m_canvas->zoomBy(0.8); });
     view->addSeparator();
+    m_bodyMenu = new BodyDisplayMenu(this);
+    view->addMenu(m_bodyMenu);
+    connect(m_bodyMenu, &BodyDisplayMenu::styleChosen, this, &MainWindow::setUserStyle);
+    view->addAction(m_presentation->toggleAction());
+    QMenu* scaleMenu = view->addMenu(tr("Presentation &scale"));
+    for (double f : {1.4, 1.6, 2.0, 2.5}) {
+        QAction* a = scaleMenu->addAction(QStringLiteral("\u00d7%1").arg(f), this,
+                                          [this, f] { m_presentation->setScale(f); });
+        a->setCheckable(true);
+        a->setChecked(std::abs(m_presentation->scale() - f) < 1e-9);
+        connect(scaleMenu, &QMenu::aboutToShow, a,
+                [this, a, f] { a->setChecked(std::abs(m_presentation->scale() - f) < 1e-9); });
+    }
     view->addMenu(new LanguageMenu(view));
 
     QMenu* play = menuBar()->addMenu(tr("&Animation"));
@@ -225,6 +281,29 @@ void MainWindow::buildMenus() {
     play->addAction(m_timeline->stepBackAction());
     play->addAction(m_timeline->stepForwardAction());
     play->addAction(m_timeline->loopAction());
+    play->addAction(m_timeline->startAction());
+    play->addAction(m_timeline->endAction());
+    play->addAction(m_timeline->secondBackAction());
+    play->addAction(m_timeline->secondForwardAction());
+    m_playNewScenes = play->addAction(tr("Play &new scenes at once"));
+    m_playNewScenes->setCheckable(true);
+    if (m_useSettings)
+        m_playNewScenes->setChecked(
+            QSettings().value(QStringLiteral("animation/playNewScenes"), false).toBool());
+    connect(m_playNewScenes, &QAction::toggled, this, [this](bool on) {
+        if (m_useSettings)
+            QSettings().setValue(QStringLiteral("animation/playNewScenes"), on);
+    });
+    play->addSeparator();
+    // keyboard control of a demo: the paper's presets on 1 ... 4, the gallery on Page Up/Down
+    const std::vector<std::string> presets = presetNames();
+    for (int i = 0; i < int(presets.size()) && i < 9; ++i)
+        play->addAction(tr("Preset %1: %2").arg(i + 1).arg(QString::fromStdString(presets[i])),
+                        QKeySequence(Qt::Key_1 + i), this, [this, i] { choosePresetNumber(i); });
+    play->addAction(tr("Ne&xt gallery scene"), QKeySequence(Qt::Key_PageDown), this,
+                    [this] { stepGallery(1); });
+    play->addAction(tr("Pre&vious gallery scene"), QKeySequence(Qt::Key_PageUp), this,
+                    [this] { stepGallery(-1); });
 
     QMenu* methods = menuBar()->addMenu(tr("&Methods"));
     methods->addAction(tr("Compute &work-precision"), QKeySequence(tr("Ctrl+Shift+W")), this,
@@ -238,33 +317,30 @@ void MainWindow::buildMenus() {
     connect(gallery, &GalleryMenu::entryChosen, this, &MainWindow::loadGalleryEntry);
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
-    help->addAction(tr("&Physics notes"), QKeySequence::HelpContents, this, [this] {
-        QMessageBox::information(this, tr("Physics notes"),
-                                 tr("<p>The knife point P follows the prescribed path. The control "
-                                    "angle \u03a8 satisfies "
-                                    "tan \u03a8 = \u03c1/b (eq. 45); \u03c7 = \u03a8 \u2212 "
-                                    "(a/b)\u03c6 is the driving angle and "
-                                    "\u03bb = m b d\u03c7/dt the control multiplier. The control "
-                                    "is workless, so the kinetic "
-                                    "energy stays constant in the energy mode.</p>"
-                                    "<p>The ghost is the free (Lagrange\u2013"
-                                    "d'Alembert, "
-                                    "Neimark\u2013"
-                                    "Fufaev) sleigh from the same "
-                                    "initial state: it turns away and ends on a straight line.</p>"
-                                    "<p>Disk and carriage reduce to a sleigh with effective mass "
-                                    "m_eff, offset a and radius of "
-                                    "gyration b (Apps. A, B).</p><p>Models in use: %1</p>")
-                                     .arg(m_status->text().toHtmlEscaped()));
-    });
-    help->addAction(tr("&About Chaplygin Lab"), this, [this] {
-        QMessageBox::about(
-            this, tr("About Chaplygin Lab"),
-            tr("<b>Chaplygin Lab %1</b><p>Control of nonholonomic Chaplygin systems "
-               "(Antunes, Sigaud, de Moraes, Braz. J. Phys. 2009): sleigh, rolling disk and "
-               "two-wheeled carriage.</p>")
-                .arg(QCoreApplication::applicationVersion()));
-    });
+    help->addAction(tr("&Help for this part of the window"), QKeySequence::HelpContents, this,
+                    &MainWindow::showContextHelp);
+    help->addAction(tr("&User guide"), this, [this] { showHelp(QStringLiteral("user-guide.md")); });
+    help->addAction(tr("&Physics notes"), this, [this] { showHelp(QStringLiteral("physics.md")); });
+    help->addAction(tr("&Numerical methods"), this,
+                    [this] { showHelp(QStringLiteral("numerics.md")); });
+    help->addAction(tr("&About Chaplygin Lab"), this,
+                    [this] { QMessageBox::about(this, tr("About Chaplygin Lab"), aboutText()); });
+}
+
+void MainWindow::setUserStyle(const CanvasStyle& style) {
+    m_presentation->setBaseStyle(style);
+    m_bodyMenu->setStyle(m_presentation->baseStyle());
+    if (m_useSettings) {
+        QSettings settings;
+        m_presentation->baseStyle().save(settings);
+    }
+}
+
+void MainWindow::startNewScene() {
+    m_playback->pause();
+    m_playback->seek(0);
+    if (m_playNewScenes && m_playNewScenes->isChecked())
+        m_playback->play();
 }
 
 void MainWindow::rebuildRecentMenu() {
@@ -290,6 +366,7 @@ void MainWindow::applyScene(const Scene& scene) {
     if (pathChanged) {
         m_path->setScene(scene);
         m_path->showError({});
+        statusBar()->clearMessage(); // messages belong to the scene that produced them
     }
     m_parameters->setScene(scene);
     m_parameters->showError({});
@@ -320,6 +397,7 @@ void MainWindow::choosePreset(const QString& name) {
         m_document->pathFor(next.path);
         editScene(next, tr("Preset %1").arg(name));
         m_document->flush();
+        startNewScene();
         m_canvas->fitScene();
     } catch (const InputError& e) {
         m_path->showError(QString::fromStdString(e.what()));
@@ -340,8 +418,10 @@ void MainWindow::setPath(const PathSource& source, const QString& description, b
         next.preset.clear();
         editScene(next, description);
         m_document->flush();
-        if (refit)
+        if (refit) { // a new path, not an edit of the drawn one
+            startNewScene();
             m_canvas->fitScene();
+        }
     });
     if (m_document->pathPending())
         statusBar()->showMessage(tabulating);
@@ -366,10 +446,10 @@ void MainWindow::onSolutionChanged() {
     m_canvas->setTime(m_playback->time());
     m_plots->setTime(m_playback->time());
     const ModelReport& m = solution->models();
-    m_status->setText(tr("path: %1; time law: %2; free motion: %3, %4")
-                          .arg(QString::fromStdString(m.path), QString::fromStdString(m.timeLaw),
-                               QString::fromStdString(m.freeVelocity),
-                               QString::fromStdString(m.freePosition)));
+    m_status->setFullText(
+        tr("path: %1; time law: %2; free motion: %3, %4")
+            .arg(QString::fromStdString(m.path), QString::fromStdString(m.timeLaw),
+                 QString::fromStdString(m.freeVelocity), QString::fromStdString(m.freePosition)));
     if (m_noteScene && m_document->scene() != *m_noteScene) {
         m_noteScene.reset();
         m_accuracy->setNote({}, {});
@@ -408,7 +488,7 @@ bool MainWindow::loadGalleryEntry(const QString& name) {
     statusBar()->clearMessage(); // an earlier refusal no longer applies
     editScene(entry.scene, tr("Gallery: %1").arg(title));
     m_document->flush();
-    m_playback->seek(0);
+    startNewScene();
     m_canvas->fitScene();
     return true;
 }
@@ -512,8 +592,8 @@ bool MainWindow::exportCsvTo(const QString& path) {
 void MainWindow::openDialog() {
     if (!maybeSave())
         return;
-    QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), {},
-                                                tr("Scenes (*.json);;All files (*)"));
+    QString path = chooseOpenFile(this, tr("Open scene"), QStringLiteral("scene"),
+                                  tr("Scenes (*.json);;All files (*)"));
     if (!path.isEmpty())
         openFile(path);
 }
@@ -521,19 +601,23 @@ void MainWindow::openDialog() {
 bool MainWindow::saveDialog(bool askName) {
     QString path = m_document->fileName();
     if (askName || path.isEmpty())
-        path = QFileDialog::getSaveFileName(this, tr("Save scene"), path, tr("Scenes (*.json)"));
+        path =
+            chooseSaveFile(this, tr("Save scene"), QStringLiteral("scene"),
+                           sceneFileStem(m_current, m_document->fileName()), tr("Scenes (*.json)"));
     return !path.isEmpty() && saveFile(path);
 }
 
 void MainWindow::exportPlotsDialog() {
     QString dir =
-        QFileDialog::getExistingDirectory(this, tr("Export plots (PNG, PDF and SVG) into"));
+        chooseFolder(this, tr("Export plots (PNG, PDF and SVG) into"), QStringLiteral("plots"));
     if (!dir.isEmpty())
         exportPlotsTo(dir, {QStringLiteral("png"), QStringLiteral("pdf"), QStringLiteral("svg")});
 }
 
 void MainWindow::exportCsvDialog() {
-    QString path = QFileDialog::getSaveFileName(this, tr("Export CSV"), {}, tr("CSV (*.csv)"));
+    QString path =
+        chooseSaveFile(this, tr("Export CSV"), QStringLiteral("csv"),
+                       sceneFileStem(m_current, m_document->fileName()), tr("CSV (*.csv)"));
     if (!path.isEmpty())
         exportCsvTo(path);
 }

@@ -14,6 +14,11 @@ class QUndoStack;
 namespace chaplygin::ui {
 
 class AccuracyReadout;
+class BodyDisplayMenu;
+struct CanvasStyle;
+class ElidedLabel;
+class HelpWindow;
+class PresentationMode;
 class MethodsPanel;
 class ParametersPanel;
 class PathPanel;
@@ -83,6 +88,23 @@ class MainWindow : public QMainWindow {
     QUndoStack* undoStack() const { return m_undo; }
     QAction* followAction() const { return m_followAction; }
     QMenu* recentMenu() const { return m_recentMenu; }
+    PresentationMode* presentation() const { return m_presentation; }
+    BodyDisplayMenu* bodyDisplayMenu() const { return m_bodyMenu; }
+    ElidedLabel* statusLabel() const { return m_status; }
+    QAction* redoAction() const { return m_redoAction; }
+    /// Whether a new scene (preset, gallery, typed or drawn path) starts playing at t = 0
+    /// (QSettings "animation/playNewScenes"); otherwise it waits, paused, at t = 0.
+    QAction* playNewScenesAction() const { return m_playNewScenes; }
+    /// The help window (created on first use), showing document at section.
+    HelpWindow* showHelp(const QString& document = {}, const QString& section = {});
+    /// F1: the help section about the widget that has the focus.
+    void showContextHelp();
+    /// Loads the paper's preset number index (0 ... 3; keys 1 ... 4).
+    void choosePresetNumber(int index);
+    /// Loads the next (+1) or previous (-1) gallery scene (Page Down / Page Up).
+    void stepGallery(int direction);
+    /// The About text (version from the build, licence, credits, the paper).
+    static QString aboutText();
 
   protected:
     void closeEvent(QCloseEvent* e) override;
@@ -108,6 +130,9 @@ class MainWindow : public QMainWindow {
     void exportCsvDialog();
     void showFileError(const QString& message);
     void updateTitle();
+    /// A new scene starts at t = 0, paused or playing (playNewScenesAction).
+    void startNewScene();
+    void setUserStyle(const CanvasStyle& style);
 
     bool m_useSettings;
     SceneDocument* m_document;
@@ -130,7 +155,13 @@ class MainWindow : public QMainWindow {
     std::optional<Scene> m_noteScene; // the scene the accuracy dock's note is about
     QMenu* m_recentMenu = nullptr;
     QAction* m_followAction = nullptr;
-    QLabel* m_status;
+    ElidedLabel* m_status;
+    PresentationMode* m_presentation = nullptr;
+    BodyDisplayMenu* m_bodyMenu = nullptr;
+    HelpWindow* m_help = nullptr;
+    QAction* m_redoAction = nullptr;
+    QAction* m_playNewScenes = nullptr;
+    int m_galleryIndex = -1;
     Scene m_current;
     bool m_applied = false; // whether m_current has been shown yet
     QString m_lastFileError;

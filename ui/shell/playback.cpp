@@ -15,7 +15,22 @@ Playback::Playback(QObject* parent) : QObject(parent) {
 }
 
 double Playback::stepSize() const {
-    return std::max(m_tEnd / 400.0, 0.01);
+    return kFrameMs / 1000.0 * m_factor;
+}
+
+void Playback::stepBy(double dt) {
+    pause();
+    seek(m_time + dt);
+}
+
+void Playback::goToStart() {
+    pause();
+    seek(0);
+}
+
+void Playback::goToEnd() {
+    pause();
+    seek(m_tEnd);
 }
 
 void Playback::setTEnd(double tEnd) {

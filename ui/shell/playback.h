@@ -17,8 +17,10 @@ class Playback : public QObject {
     bool isPlaying() const { return m_timer.isActive(); }
     bool loops() const { return m_loop; }
     double speedFactor() const { return m_factor; }
-    /// Simulated seconds per single step.
+    /// Simulated seconds per single step: one display frame at the current speed.
     double stepSize() const;
+    /// Simulated seconds per large step (Shift with the step keys).
+    static constexpr double kLargeStep = 1.0;
 
   public slots:
     void setTEnd(double tEnd);
@@ -28,6 +30,10 @@ class Playback : public QObject {
     void togglePlay();
     void stepForward();
     void stepBackward();
+    /// Pauses and moves by dt simulated seconds (clamped to [0, tEnd]).
+    void stepBy(double dt);
+    void goToStart();
+    void goToEnd();
     void setLoop(bool loop);
     void setSpeedFactor(double factor);
     /// Advances by dt real seconds (what one tick does); public for benchmarks and tests.

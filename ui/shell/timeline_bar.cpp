@@ -21,14 +21,14 @@ TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
     setObjectName(QStringLiteral("timeline"));
     m_stepBack = addAction(style()->standardIcon(QStyle::SP_MediaSeekBackward), tr("Step &back"));
     m_stepBack->setShortcut(Qt::Key_Comma);
-    m_stepBack->setToolTip(tr("One step back (,)"));
+    m_stepBack->setToolTip(tr("One frame back at the current speed (,); Shift+, one second"));
     m_play = addAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("&Play"));
     m_play->setShortcut(Qt::Key_Space);
     m_play->setToolTip(tr("Play or pause (Space)"));
     m_stepForward =
         addAction(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("Step &forward"));
     m_stepForward->setShortcut(Qt::Key_Period);
-    m_stepForward->setToolTip(tr("One step forward (.)"));
+    m_stepForward->setToolTip(tr("One frame forward at the current speed (.); Shift+. one second"));
     m_loop = addAction(tr("Loop"));
     m_loop->setCheckable(true);
     m_loop->setToolTip(tr("Start again at the end"));
@@ -42,11 +42,33 @@ TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
     m_slider->setRange(0, kSliderSteps);
     m_slider->setToolTip(tr("Scrub through time"));
     m_slider->setMinimumWidth(200);
+    m_slider->setAccessibleName(tr("Time"));
+    m_slider->setAccessibleDescription(tr("The animation time; arrows and Page Up/Down scrub"));
     addWidget(m_slider);
     m_timeLabel = new QLabel;
     m_timeLabel->setMinimumWidth(150);
+    m_timeLabel->setAccessibleName(tr("Time read-out"));
     addWidget(m_timeLabel);
 
+    // Home/End and one-second steps: window shortcuts without buttons of their own
+    m_start = new QAction(tr("Go to the &start"), this);
+    m_start->setShortcut(Qt::Key_Home);
+    m_end = new QAction(tr("Go to the &end"), this);
+    m_end->setShortcut(Qt::Key_End);
+    m_secondBack = new QAction(tr("One second back"), this);
+    m_secondBack->setShortcuts(
+        {QKeySequence(Qt::SHIFT | Qt::Key_Comma), QKeySequence(Qt::SHIFT | Qt::Key_Less)});
+    m_secondForward = new QAction(tr("One second forward"), this);
+    m_secondForward->setShortcuts(
+        {QKeySequence(Qt::SHIFT | Qt::Key_Period), QKeySequence(Qt::SHIFT | Qt::Key_Greater)});
+    connect(m_start, &QAction::triggered, playback, &Playback::goToStart);
+    connect(m_end, &QAction::triggered, playback, &Playback::goToEnd);
+    connect(m_secondBack, &QAction::triggered, this,
+            [playback] { playback->stepBy(-Playback::kLargeStep); });
+    connect(m_secondForward, &QAction::triggered, this,
+            [playback] { playback->stepBy(Playback::kLargeStep); });
+    setAccessibleName(tr("Timeline"));
+    m_play->setObjectName(QStringLiteral("playAction"));
     connect(m_play, &QAction::triggered, playback, &Playback::togglePlay);
     connect(m_stepBack, &QAction::triggered, playback, &Playback::stepBackward);
     connect(m_stepForward, &QAction::triggered, playback, &Playback::stepForward);

@@ -21,6 +21,11 @@ class TimelineBar : public QToolBar {
     QAction* stepForwardAction() const { return m_stepForward; }
     QAction* stepBackAction() const { return m_stepBack; }
     QAction* loopAction() const { return m_loop; }
+    /// Home and End; Shift+, and Shift+. step one second.
+    QAction* startAction() const { return m_start; }
+    QAction* endAction() const { return m_end; }
+    QAction* secondBackAction() const { return m_secondBack; }
+    QAction* secondForwardAction() const { return m_secondForward; }
     QSlider* slider() const { return m_slider; }
     QComboBox* speedBox() const { return m_speed; }
     QLabel* timeLabel() const { return m_timeLabel; }
@@ -35,6 +40,10 @@ class TimelineBar : public QToolBar {
     QAction* m_stepBack;
     QAction* m_stepForward;
     QAction* m_loop;
+    QAction* m_start = nullptr;
+    QAction* m_end = nullptr;
+    QAction* m_secondBack = nullptr;
+    QAction* m_secondForward = nullptr;
     QComboBox* m_speed;
     QSlider* m_slider;
     QLabel* m_timeLabel;

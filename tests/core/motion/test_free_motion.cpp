@@ -234,6 +234,8 @@ TEST(FreeMotion, LongHorizonWithLargeRatioStaysFinite) {
     FreeState far = free.at(3000);
     EXPECT_TRUE(std::isfinite(far.phi) && std::isfinite(far.x));
     EXPECT_NEAR(far.phi, free.totalTurn(), 1e-14);
+}
+
 TEST(FreeMotion, ConstantsAreThoseOfTheClosedForm) {
     // the Equations panel shows V, k and c: they reproduce the motion's velocities
     DerivedSystem sys{1.0, 0.5, 1.0};

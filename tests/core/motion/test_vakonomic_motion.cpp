@@ -243,3 +243,41 @@ TEST(VakonomicMotion, SolutionForTheDiskAndTheCarriageMatchesRk8pd) {
         checkSolution(scene, 1e-8);
     }
 }
+
+TEST(VakonomicMotion, CircleAgreesWithAnMpmathTaylorReference) {
+    // mpmath.odefun (Taylor series, 30 digits) of (19) corrected, (20), (21) from the circle
+    // R = 2 (m = 1, a = 0.5, b = 1, v_T = 1): (x, y, phi, sdot, phidot, lambda) at t = 1, 2, 3, 5
+    const double ref[4][7] = {{1, 1.8033883089176463, 0.82820446590019877, 2.0772100047608542,
+                               0.78216732319747718, 0.62306843807249078, -0.7453709147203395},
+                              {2, 1.4107865665211125, 1.2010854905009278, 2.8866206158319359,
+                               0.22559095075668825, 0.97422211170589505, -1.3526217276165564},
+                              {3, 1.5832661726533946, 1.3079961075165383, 3.83608999376306,
+                               -0.57243276621692034, 0.81995166208822617, -1.0972317718414587},
+                              {5, 1.952883231159542, 2.8393874329488581, 4.9363759935369996,
+                               -0.87208405157006599, 0.48935611470292112, -0.046008968167615734}};
+    Solution sol = Solution::compute(presetScene("circle"));
+    for (const auto& r : ref) {
+        VakonomicState v = sol.vakonomicAt(r[0]);
+        const double got[6] = {v.x, v.y, v.phi, v.sdot, v.phidot, v.lambda};
+        for (int i = 0; i < 6; ++i)
+            EXPECT_NEAR(got[i], r[i + 1], 1e-13) << "t = " << r[0] << ", column " << i;
+    }
+    // sdot changes sign between t = 2 and 3: the vakonomic body backs up
+    EXPECT_LT(sol.vakonomicAt(3).sdot, 0);
+}
+
+TEST(VakonomicMotion, ModulusNextToOneStaysFinite) {
+    // k^2 one ulp from 1 on either side: sqrt(1 + 2^-52) rounds to 1, yet K(1/k) must stay finite
+    DerivedSystem sys{1.0, 0.0, 1.0};
+    for (double k2 : {1 - 0x1p-53, 1 + 0x1p-52}) {
+        // sin Psi0 = 0.6, (b Psidot0/v_T)^2 = k2 - 0.36, v_T = 1
+        const double L0 = std::sqrt(k2 - 0.36);
+        VakonomicMotion vak(sys, {0, 0, 0, 0.6, 0.8, L0});
+        EXPECT_NE(vak.kind(), VakonomicMotion::Case::Line);
+        for (double t : {0.0, 1.0, 7.5}) {
+            VakonomicState s = vak.at(t);
+            for (double v : {s.x, s.y, s.phi, s.sdot, s.phidot, s.lambda, s.psi})
+                EXPECT_TRUE(std::isfinite(v)) << "k^2 - 1 = " << k2 - 1 << ", t = " << t;
+        }
+    }
+}

@@ -4,9 +4,17 @@ registry (docs/numerics.md §5): the controlled time law ds/dt = v_T/sqrt(1 + b^
 kappa = -x0/(s^2 + x0^2) (docs/physics.md §7, erratum to paper (99)), s in [0, 5], and the free sleigh,
 eqs. (D12)-(D13), from the catenary's initial state over [0, 10]. Both at rtol = atol = 1e-10,
 100 evenly spaced outputs from DOP853's own dense output. Prints the median wall time of one
-solve, its RHS count and its error against DOP853 at 1e-13."""
+solve, its RHS count and its error against DOP853 at 1e-13.
+
+With the path of chaplygin-bench-numerics as argument it also runs the app's chosen methods
+(BM_Solve/controlled/quadrature_gauss_newton and BM_Solve/free/closed_form, 100 outputs, median
+wall time of 5 repetitions) in the same run, interleaved with the DOP853 timings, and prints the
+ratios DOP853/app. Usage: dop853_catenary.py [build/release/tests/perf/numerics/chaplygin-bench-numerics]"""
+import json
 import math
 import statistics
+import subprocess
+import sys
 import time
 
 import numpy as np
@@ -48,12 +56,29 @@ def solve(problem, tol, t_end, y0):
     return x, y, r.nfev
 
 
+def app_medians(bench):
+    """Median wall time [s] of the app's two chosen solves, from Google Benchmark's JSON."""
+    out = subprocess.run([bench, "--benchmark_filter=BM_Solve/(controlled/quadrature_gauss_newton|free/closed_form)$",
+                          "--benchmark_repetitions=5", "--benchmark_min_time=0.2",
+                          "--benchmark_format=json"], check=True, capture_output=True, text=True).stdout
+    medians = {}
+    for b in json.loads(out)["benchmarks"]:
+        if b.get("aggregate_name") == "median":
+            problem = "controlled" if "/controlled/" in b["run_name"] else "free"
+            scale = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}[b["time_unit"]]
+            medians[problem] = b["real_time"] * scale
+    return medians
+
+
 def main():
+    bench = sys.argv[1] if len(sys.argv) > 1 else None
     sdot0 = VT / math.sqrt(2.0)
     cases = {
         "controlled": (duration(), [0.0]),
         "free": (10.0, [X0, 0.0, math.pi / 2, sdot0, -sdot0]),
     }
+    dop = {}
+    app = []
     for problem, (t_end, y0) in cases.items():
         xr, yr, _ = solve(problem, 1e-13, t_end, y0)
         samples = []
@@ -61,8 +86,15 @@ def main():
             start = time.perf_counter()
             x, y, nfev = solve(problem, 1e-10, t_end, y0)
             samples.append(time.perf_counter() - start)
+        if bench:
+            app.append(app_medians(bench))  # interleaved: the same load on the machine
         err = float(np.max(np.hypot(x - xr, y - yr)))
-        print(f"{problem},DOP853,1e-10,{err:.3e},{statistics.median(samples):.6e},{nfev},t_end={t_end:.6f}")
+        dop[problem] = statistics.median(samples)
+        print(f"{problem},DOP853,1e-10,{err:.3e},{dop[problem]:.6e},{nfev},t_end={t_end:.6f}")
+    if bench:
+        for problem in cases:
+            seconds = statistics.median(a[problem] for a in app)
+            print(f"{problem},app_chosen,-,-,{seconds:.6e},0,DOP853/app={dop[problem] / seconds:.0f}x")
 
 
 if __name__ == "__main__":

@@ -1,0 +1,335 @@
+// A randomized GUI test: a seeded stream of random events (clicks, drags and wheel turns on the
+// canvas, slider moves, typed garbage, menu actions, undo and redo, playback) through QTest on
+// the offscreen platform. After each event: no crash, the document valid, nothing non-finite
+// about to be drawn. The seed is printed with every failure; CHAPLYGIN_GUI_SEED and
+// CHAPLYGIN_GUI_EVENTS replay or lengthen a run.
+#include "canvas/scene_canvas.h"
+#include "document/file_dialogs.h"
+#include "document/scene_document.h"
+#include "gui_test_support.h"
+#include "panels/parameters_panel.h"
+#include "panels/path_panel.h"
+#include "plots/plots_panel.h"
+#include "shell/main_window.h"
+#include "shell/playback.h"
+#include "shell/presentation_mode.h"
+#include "shell/timeline_bar.h"
+#include "systems/system.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QLineEdit>
+#include <QMenu>
+#include <QPushButton>
+#include <QSet>
+#include <QSlider>
+#include <QWidget>
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <random>
+
+using namespace chaplygin;
+using namespace chaplygin::ui;
+
+namespace {
+
+constexpr unsigned kDefaultSeed = 20261130;
+constexpr int kDefaultEvents = 5000;
+
+unsigned envNumber(const char* name, unsigned fallback) {
+    bool ok = false;
+    unsigned v = qEnvironmentVariable(name).toUInt(&ok);
+    return ok ? v : fallback;
+}
+
+bool isFinite(double v) {
+    return std::isfinite(v);
+}
+
+} // namespace
+
+class TestRandomEvents : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void initTestCase();
+    void randomEventStream();
+
+  private:
+    /// One random event; returns a short description for the failure message.
+    QString randomEvent();
+    /// Empty when the window is consistent, else what is wrong.
+    QString check();
+
+    std::unique_ptr<MainWindow> m_window;
+    std::mt19937 m_rng;
+    QList<QAction*> m_actions;
+
+    int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(m_rng); }
+    double uniform(double lo, double hi) {
+        return std::uniform_real_distribution<double>(lo, hi)(m_rng);
+    }
+    QPoint pointIn(const QWidget* w) {
+        return {pick(std::max(w->width(), 1)), pick(std::max(w->height(), 1))};
+    }
+    QString garbage();
+};
+
+void TestRandomEvents::initTestCase() {
+    test::useTestSettings(QStringLiteral("ui_random_tests"));
+    // every file dialog is cancelled; nothing modal may open
+    setDialogHook([](const QString&, const QString&, const QString&) { return DialogChoice{}; });
+}
+
+QString TestRandomEvents::garbage() {
+    static const QString alphabet =
+        QStringLiteral("0123456789.,-+*/^()eExXuU sincoqrtlgpa\u00e9\u03c0%$#@!\\\"'");
+    static const QStringList words = {QStringLiteral("sin(x)"), QStringLiteral("x^2"),
+                                      QStringLiteral("1e308"),  QStringLiteral("-0"),
+                                      QStringLiteral("nan"),    QStringLiteral("inf"),
+                                      QStringLiteral("0.5*x"),  QStringLiteral("1/0"),
+                                      QStringLiteral("cos(u)"), QStringLiteral("1e-300")};
+    if (pick(3) == 0)
+        return words[pick(int(words.size()))];
+    QString s;
+    for (int i = 0, n = pick(12); i < n; ++i)
+        s += alphabet[pick(int(alphabet.size()))];
+    return s;
+}
+
+QString TestRandomEvents::randomEvent() {
+    SceneCanvas* canvas = m_window->canvas();
+    Playback* playback = m_window->playback();
+    switch (pick(16)) {
+    case 0: { // click on the canvas
+        QPoint p = pointIn(canvas);
+        QTest::mouseClick(canvas, pick(2) ? Qt::LeftButton : Qt::RightButton, {}, p);
+        return QStringLiteral("click canvas %1,%2").arg(p.x()).arg(p.y());
+    }
+    case 1: { // drag on the canvas (pan, or draw in draw mode)
+        if (pick(4) == 0)
+            m_window->pathPanel()->drawButton()->toggle();
+        QPoint a = pointIn(canvas);
+        QTest::mousePress(canvas, Qt::LeftButton, {}, a);
+        for (int i = 0, n = 1 + pick(8); i < n; ++i) {
+            QPoint b = pointIn(canvas);
+            QMouseEvent move(QEvent::MouseMove, b, canvas->mapToGlobal(b), Qt::NoButton,
+                             Qt::LeftButton, Qt::NoModifier);
+            QApplication::sendEvent(canvas, &move);
+        }
+        QTest::mouseRelease(canvas, Qt::LeftButton, {}, pointIn(canvas));
+        return QStringLiteral("drag canvas (draw mode %1)").arg(canvas->drawMode());
+    }
+    case 2: { // wheel
+        QPoint p = pointIn(canvas);
+        QWheelEvent wheel(p, canvas->mapToGlobal(p), {}, QPoint(0, (pick(9) - 4) * 120),
+                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QApplication::sendEvent(canvas, &wheel);
+        return QStringLiteral("wheel");
+    }
+    case 3: { // canvas keys
+        static const Qt::Key keys[] = {Qt::Key_Plus,  Qt::Key_Minus, Qt::Key_F,    Qt::Key_B,
+                                       Qt::Key_L,     Qt::Key_Left,  Qt::Key_Up,   Qt::Key_Down,
+                                       Qt::Key_Right, Qt::Key_Space, Qt::Key_Home, Qt::Key_End};
+        Qt::Key k = keys[pick(int(std::size(keys)))];
+        QTest::keyClick(canvas, k);
+        return QStringLiteral("key %1 on canvas").arg(int(k));
+    }
+    case 4: { // a parameter slider
+        auto sliders = m_window->parametersPanel()->findChildren<QSlider*>();
+        if (sliders.isEmpty())
+            return QStringLiteral("no slider");
+        QSlider* s = sliders[pick(int(sliders.size()))];
+        int v = s->minimum() + pick(s->maximum() - s->minimum() + 1);
+        s->setValue(v);
+        return QStringLiteral("slider %1 = %2").arg(s->objectName()).arg(v);
+    }
+    case 5: { // typed into a spin box
+        auto spins = m_window->findChildren<QDoubleSpinBox*>();
+        QDoubleSpinBox* s = spins[pick(int(spins.size()))];
+        if (!s->isVisible())
+            return QStringLiteral("hidden spin box");
+        s->setFocus();
+        s->selectAll();
+        // garbage goes into the parameters; the path's range gets numbers of a classroom's size
+        // (a range of 10^4 m is valid, only slow to tabulate)
+        const bool range =
+            s == m_window->pathPanel()->fromSpin() || s == m_window->pathPanel()->toSpin();
+        QString text = pick(2) && !range ? garbage() : QString::number(uniform(-5, 20), 'g', 4);
+        // QTest types ASCII only; the rest goes into the path fields as text
+        if (std::any_of(text.begin(), text.end(), [](QChar c) { return c.unicode() > 126; }))
+            text = QString::number(uniform(-5, 20), 'g', 4);
+        QTest::keyClicks(s, text);
+        QTest::keyClick(s, Qt::Key_Return);
+        return QStringLiteral("spin %1 <- '%2'").arg(s->objectName(), text);
+    }
+    case 6: { // typed path
+        PathPanel* panel = m_window->pathPanel();
+        QLineEdit* edit = pick(3) ? panel->graphEdit() : panel->xOfUEdit();
+        if (!edit->isEnabled())
+            edit = panel->graphEdit()->isEnabled() ? panel->graphEdit() : panel->yOfUEdit();
+        QString text = garbage();
+        edit->setText(text);
+        QTest::keyClick(edit, Qt::Key_Return);
+        return QStringLiteral("path <- '%1'").arg(text);
+    }
+    case 7: { // a menu action
+        QAction* a = m_actions[pick(int(m_actions.size()))];
+        if (a->isEnabled())
+            a->trigger();
+        return QStringLiteral("action '%1'").arg(a->text());
+    }
+    case 8:
+        QTest::keyClick(m_window.get(), Qt::Key_Z, Qt::ControlModifier);
+        return QStringLiteral("undo");
+    case 9:
+        QTest::keyClick(m_window.get(), Qt::Key_Y, Qt::ControlModifier);
+        return QStringLiteral("redo");
+    case 10: { // playback
+        switch (pick(4)) {
+        case 0:
+            playback->togglePlay();
+            break;
+        case 1:
+            playback->advance(uniform(0, 0.2));
+            break;
+        case 2:
+            playback->seek(uniform(-1, playback->tEnd() + 1));
+            break;
+        default:
+            QTest::keyClick(m_window.get(), Qt::Key_Period,
+                            pick(2) ? Qt::ShiftModifier : Qt::NoModifier);
+        }
+        return QStringLiteral("playback");
+    }
+    case 11: { // time slider
+        QSlider* s = m_window->timeline()->slider();
+        s->setValue(pick(s->maximum() + 1));
+        return QStringLiteral("time slider");
+    }
+    case 12: { // click in a plot
+        QCustomPlot* plot = m_window->plotsPanel()->plot(pick(4));
+        if (!plot->isVisible())
+            return QStringLiteral("hidden plot");
+        QTest::mouseClick(plot, Qt::LeftButton, {}, pointIn(plot));
+        return QStringLiteral("plot click");
+    }
+    case 13: // presentation mode (never full screen here: the window keeps its size)
+        m_window->presentation()->toggle();
+        return QStringLiteral("presentation %1").arg(m_window->presentation()->isActive());
+    case 14: { // combo boxes: system, gyration, mode, corners, speed, preset
+        auto combos = m_window->findChildren<QComboBox*>();
+        QComboBox* c = combos[pick(int(combos.size()))];
+        if (!c->isVisible() || c->count() == 0)
+            return QStringLiteral("hidden combo");
+        int i = pick(c->count());
+        c->setCurrentIndex(i);
+        emit c->activated(i);
+        return QStringLiteral("combo %1 -> %2").arg(c->objectName()).arg(i);
+    }
+    default: // window size
+        m_window->resize(640 + pick(1300), 480 + pick(600));
+        return QStringLiteral("resize");
+    }
+}
+
+QString TestRandomEvents::check() {
+    SceneDocument* document = m_window->document();
+    const auto& solution = document->solution();
+    if (!solution)
+        return QStringLiteral("no solution");
+    const Scene& scene = solution->scene();
+    try {
+        deriveSystem(scene.system);
+    } catch (const std::exception& e) {
+        return QStringLiteral("the shown scene's system is invalid: %1").arg(e.what());
+    }
+    if (!(solution->tEnd() > 0) || !isFinite(solution->tEnd()))
+        return QStringLiteral("t_end = %1").arg(solution->tEnd());
+    Playback* playback = m_window->playback();
+    double t = playback->time();
+    if (!(t >= 0 && t <= playback->tEnd()) || !isFinite(t))
+        return QStringLiteral("time %1 outside [0, %2]").arg(t).arg(playback->tEnd());
+    MotionSample m = solution->at(std::clamp(t, 0.0, solution->tEnd()));
+    for (double v : {m.x, m.y, m.phi, m.free.x, m.free.y, m.free.phi})
+        if (!isFinite(v))
+            return QStringLiteral("non-finite pose at t = %1").arg(t);
+    SceneCanvas* canvas = m_window->canvas();
+    QPointF p = canvas->toPixel({m.x, m.y});
+    if (!isFinite(canvas->scale()) || !(canvas->scale() > 0) || !isFinite(p.x()) ||
+        !isFinite(p.y()))
+        return QStringLiteral("canvas maps the body to %1,%2 at scale %3")
+            .arg(p.x())
+            .arg(p.y())
+            .arg(canvas->scale());
+    for (int i = 0; i < 4; ++i) {
+        QCustomPlot* plot = m_window->plotsPanel()->plot(i);
+        for (QCPAxisRect* rect : plot->axisRects())
+            for (QCPAxis* axis : rect->axes())
+                if (!isFinite(axis->range().lower) || !isFinite(axis->range().upper))
+                    return QStringLiteral("plot %1 has a non-finite axis range").arg(i);
+    }
+    return {};
+}
+
+void TestRandomEvents::randomEventStream() {
+    const unsigned seed = envNumber("CHAPLYGIN_GUI_SEED", kDefaultSeed);
+    const int events = int(envNumber("CHAPLYGIN_GUI_EVENTS", kDefaultEvents));
+    std::printf("random GUI events: seed %u, %d events (CHAPLYGIN_GUI_SEED=%u replays)\n", seed,
+                events, seed);
+    m_rng.seed(seed);
+    m_window = test::showTestWindow();
+    QVERIFY(m_window);
+    m_window->presentation()->setFullScreen(false);
+    // menu actions without modal boxes or long sweeps
+    QSet<QAction*> seen;
+    for (QMenu* menu : m_window->findChildren<QMenu*>())
+        for (QAction* a : menu->actions()) {
+            const QString text = a->text();
+            if (a->menu() || a->isSeparator() || text.contains(QStringLiteral("Quit")) ||
+                text.contains(QStringLiteral("About")) ||
+                text.contains(QStringLiteral("work-prec")) || text.isEmpty() || seen.contains(a))
+                continue;
+            seen.insert(a);
+            m_actions << a;
+        }
+    QVERIFY(m_actions.size() > 20);
+    QStringList recent;
+    for (int i = 0; i < events; ++i) {
+        if (i % 1000 == 0)
+            std::printf("  event %d\n", i);
+        QElapsedTimer clock;
+        clock.start();
+        QString what = randomEvent();
+        if (qEnvironmentVariableIsSet("CHAPLYGIN_GUI_TRACE"))
+            std::printf("  %d %lld ms %s\n", i, clock.elapsed(), qPrintable(what));
+        recent << what;
+        if (recent.size() > 8)
+            recent.removeFirst();
+        if (i % 8 == 0)
+            QCoreApplication::processEvents();
+        if (i % 50 == 0) {
+            m_window->document()->flush();
+            QImage shot = m_window->canvas()->grab().toImage(); // paint it
+            QVERIFY2(!shot.isNull(), qPrintable(QStringLiteral("seed %1").arg(seed)));
+        }
+        QString problem = check();
+        QVERIFY2(problem.isEmpty(),
+                 qPrintable(QStringLiteral("seed %1, event %2 (%3): %4\nlast events: %5")
+                                .arg(seed)
+                                .arg(i)
+                                .arg(what, problem, recent.join(QStringLiteral("; ")))));
+    }
+    m_window->document()->flush();
+    QVERIFY2(check().isEmpty(), qPrintable(QStringLiteral("seed %1 at the end").arg(seed)));
+    m_window.reset();
+}
+
+QTEST_MAIN(TestRandomEvents)
+#include "test_random_events.moc"

@@ -1,0 +1,44 @@
+#pragma once
+#include <QColor>
+
+class QSettings;
+
+namespace chaplygin::ui {
+
+/// How the bodies are drawn: to scale (the default), as an outline only, or as a small marker
+/// with the knife and the centre of mass (so that a large body never hides the path).
+enum class BodyDisplay { ToScale, Outline, Marker };
+
+/// The look of the canvas and the plots: line and font scale, palette, body display, trail width
+/// and body opacity. Presentation mode uses a scaled, high-contrast copy.
+struct CanvasStyle {
+    double lineScale = 1;      ///< multiplies pen widths and font sizes (>= 1)
+    bool highContrast = false; ///< a palette whose colours differ in greyscale too
+    bool largeTime = false;    ///< a large time read-out on the canvas
+    BodyDisplay body = BodyDisplay::ToScale;
+    double trailWidth = 2;    ///< px, before lineScale
+    double bodyOpacity = 0.8; ///< of the controlled body's fill, 0.1 ... 1
+
+    QColor controlled() const;
+    QColor free() const;
+    /// The third (vakonomic) body, for the canvas and the plots.
+    QColor vakonomic() const;
+    /// The path where the palette does not colour it by curvature.
+    QColor path() const;
+
+    /// Clamps the numbers into their ranges.
+    CanvasStyle sanitized() const;
+    /// The user's choices (body display, trail width, opacity) from and to QSettings.
+    static CanvasStyle load(const QSettings& settings);
+    void save(QSettings& settings) const;
+    /// A presentation copy: scaled by factor, high contrast, large time read-out.
+    CanvasStyle presentation(double factor) const;
+
+    bool operator==(const CanvasStyle&) const = default;
+};
+
+/// Relative luminance (ITU-R BT.709) of a colour, 0 (black) ... 1 (white): what a greyscale
+/// projector or print shows.
+double luminance(const QColor& c);
+
+} // namespace chaplygin::ui

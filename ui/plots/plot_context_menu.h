@@ -1,0 +1,24 @@
+#pragma once
+#include <QString>
+
+#include <functional>
+
+class QCustomPlot;
+class QMenu;
+
+namespace chaplygin::ui {
+
+/// Writes the plot as shown to path; the format follows the extension (png, pdf or svg), the
+/// file is written atomically. Throws InputError for another extension, IoError when the file
+/// cannot be written.
+void exportPlotFile(QCustomPlot& plot, const QString& path);
+
+/// Gives the plot a context menu "Export this plot…" (a save dialog proposing stem()).
+/// onError receives the message when the export fails.
+void installPlotExportMenu(QCustomPlot* plot, std::function<QString()> stem,
+                           std::function<void(const QString&)> onError);
+
+/// The context menu installPlotExportMenu shows (for tests).
+QMenu* plotExportMenu(QCustomPlot* plot);
+
+} // namespace chaplygin::ui

@@ -1,0 +1,115 @@
+#include "shell/presentation_mode.h"
+
+#include "canvas/scene_canvas.h"
+#include "plots/plots_panel.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QMainWindow>
+#include <QSettings>
+#include <QStatusBar>
+#include <QStyle>
+#include <QToolBar>
+
+#include <algorithm>
+#include <cmath>
+
+namespace chaplygin::ui {
+
+namespace {
+const QString kScaleKey = QStringLiteral("presentation/scale");
+}
+
+PresentationMode::PresentationMode(QMainWindow* window, SceneCanvas* canvas, PlotsPanel* plots,
+                                   QList<QDockWidget*> hidden, QList<QToolBar*> toolBars)
+    : QObject(window), m_window(window), m_canvas(canvas), m_plots(plots),
+      m_hidden(std::move(hidden)), m_toolBars(std::move(toolBars)) {
+    m_toggle = new QAction(window->style()->standardIcon(QStyle::SP_TitleBarMaxButton),
+                           tr("&Presentation mode"), window);
+    m_toggle->setObjectName(QStringLiteral("presentationAction"));
+    m_toggle->setCheckable(true);
+    m_toggle->setShortcut(Qt::Key_F11);
+    m_toggle->setToolTip(tr("Presentation mode: full screen, large fonts and lines, high "
+                            "contrast (F11; Esc leaves)"));
+    m_leave = new QAction(tr("Leave presentation mode"), window);
+    m_leave->setShortcut(Qt::Key_Escape);
+    m_leave->setEnabled(false);
+    window->addAction(m_leave);
+    connect(m_toggle, &QAction::toggled, this, &PresentationMode::setActive);
+    connect(m_leave, &QAction::triggered, this, [this] { setActive(false); });
+    m_scale = std::clamp(QSettings().value(kScaleKey, kDefaultScale).toDouble(), 1.0, 3.0);
+    if (!std::isfinite(m_scale))
+        m_scale = kDefaultScale;
+}
+
+void PresentationMode::setScale(double factor) {
+    if (!std::isfinite(factor))
+        return;
+    m_scale = std::clamp(factor, 1.0, 3.0);
+    QSettings().setValue(kScaleKey, m_scale);
+    if (m_active) {
+        QFont f = m_savedFont;
+        f.setPointSizeF(m_savedFont.pointSizeF() * m_scale);
+        m_window->setFont(f);
+        applyStyle();
+    }
+}
+
+void PresentationMode::setBaseStyle(const CanvasStyle& style) {
+    m_base = style.sanitized();
+    applyStyle();
+}
+
+CanvasStyle PresentationMode::currentStyle() const {
+    return m_active ? m_base.presentation(m_scale) : m_base;
+}
+
+void PresentationMode::applyStyle() {
+    m_canvas->setCanvasStyle(currentStyle());
+    m_plots->setLook(currentStyle());
+}
+
+void PresentationMode::setActive(bool on) {
+    if (on == m_active)
+        return;
+    m_active = on;
+    if (on) {
+        m_savedState = m_window->saveState();
+        m_savedWindowState = m_window->windowState();
+        m_savedFont = m_window->font();
+        m_wasVisible.clear();
+        for (QDockWidget* dock : m_hidden) {
+            if (dock->isVisible())
+                m_wasVisible << dock;
+            dock->hide();
+        }
+        m_statusWasVisible = m_window->statusBar()->isVisible();
+        m_window->statusBar()->hide();
+        QFont f = m_savedFont;
+        f.setPointSizeF(m_savedFont.pointSizeF() * m_scale);
+        m_window->setFont(f);
+        if (!m_toolBars.isEmpty()) {
+            m_savedIconSize = m_toolBars.first()->iconSize();
+            for (QToolBar* bar : m_toolBars)
+                bar->setIconSize(m_savedIconSize * m_scale);
+        }
+        if (m_fullScreen)
+            m_window->setWindowState(m_window->windowState() | Qt::WindowFullScreen);
+    } else {
+        m_window->setFont(m_savedFont);
+        for (QToolBar* bar : m_toolBars)
+            bar->setIconSize(m_savedIconSize);
+        m_window->setWindowState(m_savedWindowState);
+        m_window->restoreState(m_savedState);
+        for (QDockWidget* dock : m_wasVisible)
+            dock->show();
+        m_window->statusBar()->setVisible(m_statusWasVisible);
+    }
+    m_leave->setEnabled(on);
+    m_toggle->setChecked(on);
+    applyStyle();
+    m_canvas->fitScene();
+    emit activeChanged(on);
+}
+
+} // namespace chaplygin::ui
