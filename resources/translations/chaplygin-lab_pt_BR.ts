@@ -314,7 +314,7 @@
     </message>
     <message>
         <source>Control couple τ</source>
-        <translation>Binário de controle τ</translation>
+        <translation>Torque de controle τ</translation>
     </message>
     <message>
         <source>Centre of mass velocity v_C</source>
@@ -717,7 +717,7 @@ corpo vakonômico: %1</translation>
     </message>
     <message>
         <source>Save &amp;As…</source>
-        <translation>Salvar &amp;como…</translation>
+        <translation>Salvar c&amp;omo…</translation>
     </message>
     <message>
         <source>Export &amp;plots…</source>
@@ -757,7 +757,7 @@ corpo vakonômico: %1</translation>
     </message>
     <message>
         <source>&amp;Fit scene</source>
-        <translation>&amp;Ajustar a cena</translation>
+        <translation>A&amp;justar a cena</translation>
     </message>
     <message>
         <source>Ctrl+0</source>
@@ -773,7 +773,7 @@ corpo vakonômico: %1</translation>
     </message>
     <message>
         <source>Zoom &amp;in</source>
-        <translation>&amp;Ampliar</translation>
+        <translation>Am&amp;pliar</translation>
     </message>
     <message>
         <source>Zoom &amp;out</source>
@@ -909,7 +909,7 @@ corpo vakonômico: %1</translation>
     </message>
     <message>
         <source>Export &amp;animation…</source>
-        <translation>Exportar a&amp;nimação…</translation>
+        <translation>Exportar ani&amp;mação…</translation>
     </message>
     <message>
         <source>path: %1; time law: %2; free motion: %3, %4</source>
@@ -937,7 +937,7 @@ corpo vakonômico: %1</translation>
     </message>
     <message>
         <source>Genuine &amp;vakonomic body</source>
-        <translation>Corpo &amp;vakonômico genuíno</translation>
+        <translation>Corpo vak&amp;onômico genuíno</translation>
     </message>
     <message>
         <source>Draw a third body whose multiplier obeys its own equation (21): it cannot follow the path</source>
@@ -945,7 +945,7 @@ corpo vakonômico: %1</translation>
     </message>
     <message>
         <source>Presentation &amp;scale</source>
-        <translation>E&amp;scala da apresentação</translation>
+        <translation>Esca&amp;la da apresentação</translation>
     </message>
     <message>
         <source>Play &amp;new scenes at once</source>
@@ -1582,7 +1582,7 @@ O que os estudantes devem observar…</translation>
     </message>
     <message>
         <source>Go to the &amp;end</source>
-        <translation>Ir para o &amp;fim</translation>
+        <translation>Ir para o fi&amp;m</translation>
     </message>
     <message>
         <source>One second back</source>
