@@ -9,6 +9,7 @@
 #include "panels/sweep_panel.h"
 #include "plots/plots_panel.h"
 #include "runtime_directory.h"
+#include "shell/language_menu.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
@@ -66,6 +67,7 @@ struct ScreenshotOptions {
     std::optional<SweepSpec> sweep;
     std::string dock;          ///< --panel notes|equations: raise that dock
     bool presentation = false; ///< --presentation: presentation mode at the given size
+    std::string language;      ///< --language en|pt_BR: that catalogue instead of the system's
     Scene scene;
 };
 
@@ -99,6 +101,10 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
                 o.dock = panel + "Dock";
             o.showParameters = panel == "parameters";
             o.showMethods = panel == "methods";
+        } else if (arg == "--language") {
+            o.language = value(i, arg);
+            if (o.language != "en" && o.language != "pt_BR")
+                throw InputError("--language", "expected en or pt_BR, got '" + o.language + "'");
         } else if (arg == "--size") {
             std::string size = value(i, arg);
             auto x = size.find('x');
@@ -187,7 +193,8 @@ int runDesktop(int argc, char** argv) {
         Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
     QApplication app(argc, argv);
     describeApplication();
-    app::installTranslations(app, QLocale::system());
+    // View > Language, saved by the last session; the system locale unless one was chosen
+    app::installTranslations(app, languageLocale(savedLanguage()));
     // QApplication has taken its own options out; what is left is a scene file or scene options
     QStringList args = QCoreApplication::arguments().mid(1);
     const bool presentation = args.removeAll(QStringLiteral("--presentation")) > 0;
@@ -229,6 +236,13 @@ int runScreenshot(int argc, char** argv) {
         qInstallMessageHandler(quietOffscreenNoise);
         app = std::make_unique<QApplication>(argc, argv);
     }
+    // the system's locale (LANG) unless --language names one; a test's own application keeps its
+    // translators
+    if (!options->language.empty())
+        app::installTranslations(*QCoreApplication::instance(),
+                                 QLocale(QString::fromStdString(options->language)));
+    else if (app)
+        app::installTranslations(*app, QLocale::system());
     try {
         return renderScreenshot(*options);
     } catch (const InputError& e) {

@@ -17,10 +17,6 @@ constexpr double kMinArrowPx = 1.5; // shorter arrows are not drawn
 constexpr double kMaxSpanDeg = 340; // the couple's arc never closes
 constexpr double kDeg = 180 / std::numbers::pi;
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("VectorPainter", text);
-}
-
 QPen pen(const QColor& c, double width, bool ghost) {
     QPen p(c, width, ghost ? Qt::DashLine : Qt::SolidLine);
     p.setCosmetic(true);
@@ -69,15 +65,15 @@ VectorToggle VectorOverlay::*vectorToggle(VectorKind kind) {
 QString vectorName(VectorKind kind) {
     switch (kind) {
     case VectorKind::KnifeVelocity:
-        return tr("Knife point velocity v_P");
+        return QCoreApplication::translate("VectorPainter", "Knife point velocity v_P");
     case VectorKind::AxialForce:
-        return tr("Control force along the axis f_s");
+        return QCoreApplication::translate("VectorPainter", "Control force along the axis f_s");
     case VectorKind::LateralReaction:
-        return tr("Knife's lateral reaction N (at P)");
+        return QCoreApplication::translate("VectorPainter", "Knife's lateral reaction N (at P)");
     case VectorKind::ControlCouple:
-        return tr("Control couple \u03c4");
+        return QCoreApplication::translate("VectorPainter", "Control couple \u03c4");
     case VectorKind::CmVelocity:
-        return tr("Centre of mass velocity v_C");
+        return QCoreApplication::translate("VectorPainter", "Centre of mass velocity v_C");
     }
     return {};
 }
@@ -195,7 +191,8 @@ void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels) {
                 p.setPen(ink);
                 p.drawText(QRectF(c.centre.x() - 150, c.centre.y() + c.radius + 2, 300, 18),
                            Qt::AlignHCenter | Qt::AlignTop,
-                           tr("\u03c4 = 0 while turning in place"));
+                           QCoreApplication::translate("VectorPainter",
+                                                       "\u03c4 = 0 while turning in place"));
             }
             continue;
         }

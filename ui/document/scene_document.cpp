@@ -101,7 +101,7 @@ void SceneDocument::requestPath(const PathSource& source, PathDone done) {
             } catch (const InputError& e) {
                 job.error = QString::fromStdString(e.what());
             } catch (const std::exception& e) {
-                job.error = QStringLiteral("internal error: %1").arg(QString::fromUtf8(e.what()));
+                job.error = tr("internal error: %1").arg(QString::fromUtf8(e.what()));
             }
             return job;
         });
@@ -159,7 +159,7 @@ void SceneDocument::recompute() {
     } catch (const InputError& e) {
         error = QString::fromStdString(e.what());
     } catch (const std::exception& e) {
-        error = QStringLiteral("internal error: %1").arg(QString::fromUtf8(e.what()));
+        error = tr("internal error: %1").arg(QString::fromUtf8(e.what()));
     }
     if (error != m_error || !error.isEmpty()) {
         m_error = error;

@@ -6,6 +6,7 @@
 #include "scene/csv_writer.h"
 #include "scene/scene_json.h"
 
+#include <QCoreApplication>
 #include <QFileInfo>
 #include <QSettings>
 
@@ -18,11 +19,15 @@ constexpr int kMaxRecent = 8;
 
 Scene openSceneFile(const QString& path) {
     QFileInfo info(path);
-    std::string where = "cannot open '" + path.toStdString() + "'";
+    std::string where =
+        QCoreApplication::translate("SceneFiles", "cannot open '%1'").arg(path).toStdString();
     if (!info.exists())
-        throw InputError(where, "no such file");
+        throw InputError(where,
+                         QCoreApplication::translate("SceneFiles", "no such file").toStdString());
     if (info.isDir())
-        throw InputError(where, "it is a directory, not a scene file");
+        throw InputError(
+            where, QCoreApplication::translate("SceneFiles", "it is a directory, not a scene file")
+                       .toStdString());
     return loadSceneFile(path.toStdString());
 }
 

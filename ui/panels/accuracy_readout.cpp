@@ -130,12 +130,12 @@ void AccuracyReadout::onSolutionChanged() {
     m_freeT0 = solution->freeAt(0).energy;
     const ModelReport& m = solution->models();
     m_models->setText(
-        QStringLiteral("path: %1\ntime law: %2\ns(t): %3\ncontrol: %4\n"
-                       "free velocities: %5\nfree position: %6")
+        tr("path: %1\ntime law: %2\ns(t): %3\ncontrol: %4\n"
+           "free velocities: %5\nfree position: %6")
             .arg(QString::fromStdString(m.path), QString::fromStdString(m.timeLaw),
                  QString::fromStdString(m.inversion), QString::fromStdString(m.control),
                  QString::fromStdString(m.freeVelocity), QString::fromStdString(m.freePosition)) +
-        QStringLiteral("\nvakonomic body: %1").arg(QString::fromStdString(m.vakonomic)));
+        tr("\nvakonomic body: %1").arg(QString::fromStdString(m.vakonomic)));
     refresh();
 }
 

@@ -11,10 +11,6 @@ namespace chaplygin::ui {
 
 namespace {
 
-QString tr(const char* text) {
-    return QCoreApplication::translate("EquationsPanel", text);
-}
-
 QString num(double v) {
     if (std::isinf(v))
         return v > 0 ? QStringLiteral("\u221e") : QStringLiteral("\u2212\u221e");
@@ -49,18 +45,25 @@ QString systemLine(const Solution& s) {
     };
     switch (scene.system.kind) {
     case SystemKind::Sleigh:
-        return tr("<b>Chaplygin sleigh</b>: m = %1 kg, a = %2 m, b = %3 m "
-                  "(b\u00b2 = a\u00b2 + I/m, b is the radius of gyration about P)")
+        return QCoreApplication::translate(
+                   "EquationsPanel",
+                   "<b>Chaplygin sleigh</b>: m = %1 kg, a = %2 m, b = %3 m "
+                   "(b\u00b2 = a\u00b2 + I/m, b is the radius of gyration about P)")
             .arg(num(d.mass), num(d.a), num(d.b));
     case SystemKind::Disk:
-        return tr("<b>Rolling disk</b> (App. A) as a sleigh: M_eff = m + I1/R\u00b2 = %1 kg, "
-                  "b = R\u221a(I2/(I1 + mR\u00b2)) = %2 \u221a(%3/(%4 + %5\u00b7%2\u00b2)) = %6 m "
-                  "(A14); the contact point is under the centre, so a = 0")
+        return QCoreApplication::translate(
+                   "EquationsPanel",
+                   "<b>Rolling disk</b> (App. A) as a sleigh: M_eff = m + I1/R\u00b2 = %1 kg, "
+                   "b = R\u221a(I2/(I1 + mR\u00b2)) = %2 \u221a(%3/(%4 + %5\u00b7%2\u00b2)) = %6 m "
+                   "(A14); the contact point is under the centre, so a = 0")
             .arg(num(d.mass), p("R"), p("I2"), p("I1"), p("m"), num(d.b));
     case SystemKind::Carriage:
-        return tr("<b>Two-wheeled carriage</b> (App. B) as a sleigh: M_eff = M + 2(m + I1/R\u00b2) "
-                  "= %1 kg, b = \u221a(J/M_eff) = %2 m with J = I + 2I2 + 2a\u00b2(m + I1/R\u00b2) "
-                  "(B18); a = %3 m")
+        return QCoreApplication::translate("EquationsPanel",
+                                           "<b>Two-wheeled carriage</b> (App. B) as a sleigh: "
+                                           "M_eff = M + 2(m + I1/R\u00b2) "
+                                           "= %1 kg, b = \u221a(J/M_eff) = %2 m with J = I + 2I2 + "
+                                           "2a\u00b2(m + I1/R\u00b2) "
+                                           "(B18); a = %3 m")
             .arg(num(d.mass), num(d.b), num(d.a));
     }
     return {};
@@ -79,33 +82,45 @@ QString equationsHtml(const Solution& s, double t) {
     QString h;
     h += QStringLiteral("<html><body>");
     h += QStringLiteral("<p>") + systemLine(s) + QStringLiteral("</p>");
-    h += tr("<p>t = <b>%1 s</b>: s = %2 m, \u03c6 = %3 rad, \u03ba = %4 1/m; %5</p>")
+    h += QCoreApplication::translate(
+             "EquationsPanel",
+             "<p>t = <b>%1 s</b>: s = %2 m, \u03c6 = %3 rad, \u03ba = %4 1/m; %5</p>")
              .arg(num(t), num(m.s), num(m.phi), num(m.kappa),
-                  energy ? tr("constant energy, v_T = %1 m/s").arg(num(v))
-                         : tr("constant speed, v_s = %1 m/s (App. C)").arg(num(v)));
+                  energy ? QCoreApplication::translate("EquationsPanel",
+                                                       "constant energy, v_T = %1 m/s")
+                               .arg(num(v))
+                         : QCoreApplication::translate("EquationsPanel",
+                                                       "constant speed, v_s = %1 m/s (App. C)")
+                               .arg(num(v)));
 
-    h += section(tr("Control angle"));
+    h += section(QCoreApplication::translate("EquationsPanel", "Control angle"));
     if (pivot) {
         h += row(QStringLiteral("\u03a8"),
-                 tr("%1 (corner: b\u03ba \u2192 %2)")
+                 QCoreApplication::translate("EquationsPanel", "%1 (corner: b\u03ba \u2192 %2)")
                      .arg(c.psi < 1 ? QStringLiteral("0") : QStringLiteral("\u03c0"),
                           m.kappa > 0 ? QStringLiteral("+\u221e") : QStringLiteral("\u2212\u221e")),
-                 c.psi, QStringLiteral("rad"), tr("pivot about P, docs/physics.md \u00a72.8"));
+                 c.psi, QStringLiteral("rad"),
+                 QCoreApplication::translate("EquationsPanel",
+                                             "pivot about P, docs/physics.md \u00a7"
+                                             "2.8"));
     } else {
         h += row(QStringLiteral("\u03a8 = atan2(1, b\u03ba)"),
                  QStringLiteral("atan2(1, %1 \u00b7 %2)").arg(num(d.b), num(m.kappa)), c.psi,
                  QStringLiteral("rad"),
-                 tr("(45) tan \u03a8 = \u03c1/b on the branch \u03a8 \u2208 (0, \u03c0) "
-                    "(erratum to (47))"));
+                 QCoreApplication::translate(
+                     "EquationsPanel",
+                     "(45) tan \u03a8 = \u03c1/b on the branch \u03a8 \u2208 (0, \u03c0) "
+                     "(erratum to (47))"));
     }
 
-    h += section(tr("Velocities and time law"));
+    h += section(QCoreApplication::translate("EquationsPanel", "Velocities and time law"));
     if (pivot) {
         h += row(QStringLiteral("\u1e61"), {}, c.sdot, QStringLiteral("m/s"),
-                 tr("turning in place"));
+                 QCoreApplication::translate("EquationsPanel", "turning in place"));
         h += row(QStringLiteral("\u03c6\u0307 = \u00b1v_T/b"),
                  QStringLiteral("\u00b1%1/%2").arg(num(v), num(d.b)), c.phidot,
-                 QStringLiteral("rad/s"), tr("(35) with \u03a8 = 0 or \u03c0"));
+                 QStringLiteral("rad/s"),
+                 QCoreApplication::translate("EquationsPanel", "(35) with \u03a8 = 0 or \u03c0"));
     } else if (energy) {
         h += row(QStringLiteral("\u1e61 = v_T sin \u03a8"),
                  QStringLiteral("%1 \u00b7 sin %2").arg(num(v), num(c.psi)), c.sdot,
@@ -116,7 +131,9 @@ QString equationsHtml(const Solution& s, double t) {
         h += row(
             QStringLiteral("dt/ds = \u221a(1 + b\u00b2\u03ba\u00b2)/v_T = 1/\u1e61"),
             QStringLiteral("1/%1").arg(num(c.sdot)), 1 / c.sdot, QStringLiteral("s/m"),
-            tr("(51); (52)\u2013(53) corrected: 1/sin \u03a8 = \u221a(1 + b\u00b2\u03ba\u00b2)"));
+            QCoreApplication::translate(
+                "EquationsPanel",
+                "(51); (52)\u2013(53) corrected: 1/sin \u03a8 = \u221a(1 + b\u00b2\u03ba\u00b2)"));
     } else {
         h += row(QStringLiteral("\u1e61 = v_s"), num(v), c.sdot, QStringLiteral("m/s"),
                  QStringLiteral("(C17)\u2013(C18)"));
@@ -125,16 +142,18 @@ QString equationsHtml(const Solution& s, double t) {
                  QStringLiteral("rad/s"), QStringLiteral("(C16)"));
         h += row(QStringLiteral("v_T = v_s/sin \u03a8 = v_s\u221a(1 + b\u00b2\u03ba\u00b2)"),
                  QStringLiteral("%1/sin %2").arg(num(v), num(c.psi)), c.vT, QStringLiteral("m/s"),
-                 tr("(C15): the energy varies"));
+                 QCoreApplication::translate("EquationsPanel", "(C15): the energy varies"));
         h += row(QStringLiteral("dt/ds = 1/v_s"), QStringLiteral("1/%1").arg(num(v)), 1 / v,
-                 QStringLiteral("s/m"), tr("t = s/v_s"));
+                 QStringLiteral("s/m"), QCoreApplication::translate("EquationsPanel", "t = s/v_s"));
     }
     h += row(QStringLiteral("T = (m/2)(\u1e61\u00b2 + b\u00b2\u03c6\u0307\u00b2)"),
              QStringLiteral("(%1/2)(%2\u00b2 + %3\u00b2\u00b7%4\u00b2)")
                  .arg(num(d.mass), num(c.sdot), num(d.b), num(c.phidot)),
-             c.energy, QStringLiteral("J"), tr("(49) with \u1e61\u00b2 (erratum)"));
+             c.energy, QStringLiteral("J"),
+             QCoreApplication::translate("EquationsPanel", "(49) with \u1e61\u00b2 (erratum)"));
 
-    h += section(tr("Driving angle and control multiplier"));
+    h += section(
+        QCoreApplication::translate("EquationsPanel", "Driving angle and control multiplier"));
     h += row(QStringLiteral("\u03c7 = \u03a8 \u2212 (a/b)\u03c6"),
              QStringLiteral("%1 \u2212 (%2/%3) \u00b7 %4")
                  .arg(num(c.psi), num(d.a), num(d.b), num(m.phi)),
@@ -142,54 +161,68 @@ QString equationsHtml(const Solution& s, double t) {
     if (!pivot)
         h += row(
             QStringLiteral("\u03a8\u0307 = \u2212b\u03ba\u209b\u1e61/(1 + b\u00b2\u03ba\u00b2)"),
-            {}, c.psidot, QStringLiteral("rad/s"), tr("docs/physics.md \u00a72.5"));
+            {}, c.psidot, QStringLiteral("rad/s"),
+            QCoreApplication::translate("EquationsPanel", "docs/physics.md \u00a7"
+                                                          "2.5"));
     h += row(QStringLiteral("\u03bb = m b\u03c7\u0307 = m(b\u03a8\u0307 \u2212 a\u03c6\u0307)"),
              QStringLiteral("%1 (%2 \u00b7 %3 \u2212 %4 \u00b7 %5)")
                  .arg(num(d.mass), num(d.b), num(c.psidot), num(d.a), num(c.phidot)),
              c.lambda, QStringLiteral("kg m/s"), QStringLiteral("(25), (33)"));
 
-    h += section(tr("Forces on the body"));
+    h += section(QCoreApplication::translate("EquationsPanel", "Forces on the body"));
     h += row(QStringLiteral("f_s = F_cs = m(s\u0308 \u2212 a\u03c6\u0307\u00b2)"),
              QStringLiteral("%1 (%2 \u2212 %3 \u00b7 %4\u00b2)")
                  .arg(num(d.mass), num(c.sddot), num(d.a), num(c.phidot)),
              c.forceAxial, QStringLiteral("N"),
-             energy ? tr("= \u03bb\u03c6\u0307 (docs/physics.md \u00a72.7)")
-                    : tr("docs/physics.md \u00a72.7"));
+             energy ? QCoreApplication::translate("EquationsPanel",
+                                                  "= \u03bb\u03c6\u0307 (docs/physics.md \u00a7"
+                                                  "2.7)")
+                    : QCoreApplication::translate("EquationsPanel", "docs/physics.md \u00a7"
+                                                                    "2.7"));
     h += row(QStringLiteral("N = F_c\u03c6 = m(\u1e61\u03c6\u0307 + a\u03c6\u0308)"),
              QStringLiteral("%1 (%2 \u00b7 %3 + %4 \u00b7 %5)")
                  .arg(num(d.mass), num(c.sdot), num(c.phidot), num(d.a), num(c.phiddot)),
-             c.knifeReaction, QStringLiteral("N"), tr("(69)\u2013(70), at P"));
+             c.knifeReaction, QStringLiteral("N"),
+             QCoreApplication::translate("EquationsPanel", "(69)\u2013(70), at P"));
     h += row(
         QStringLiteral("\u03c4 = I\u03c6\u0308 + aN"),
         QStringLiteral("%1 \u00b7 %2 + %3 \u00b7 %4")
             .arg(num(d.inertia()), num(c.phiddot), num(d.a), num(c.knifeReaction)),
         c.controlCouple, QStringLiteral("N m"),
         energy
-            ? tr("= \u2212\u03bb\u1e61: workless (S_c = I\u03c6\u0308, erratum to (66)\u2013(68))")
-            : tr("S_c = I\u03c6\u0308 (erratum to (66)\u2013(68))"));
+            ? QCoreApplication::translate(
+                  "EquationsPanel",
+                  "= \u2212\u03bb\u1e61: workless (S_c = I\u03c6\u0308, erratum to (66)\u2013(68))")
+            : QCoreApplication::translate("EquationsPanel",
+                                          "S_c = I\u03c6\u0308 (erratum to (66)\u2013(68))"));
     h += row(QStringLiteral("power f_s\u1e61 + \u03c4\u03c6\u0307"),
              QStringLiteral("%1 \u00b7 %2 + %3 \u00b7 %4")
                  .arg(num(c.forceAxial), num(c.sdot), num(c.controlCouple), num(c.phidot)),
              c.forceAxial * c.sdot + c.controlCouple * c.phidot, QStringLiteral("W"),
-             energy ? tr("0: the control does no work")
-                    : tr("dT/dt = m b\u00b2\u03c6\u0307\u03c6\u0308 (App. C)"));
+             energy ? QCoreApplication::translate("EquationsPanel", "0: the control does no work")
+                    : QCoreApplication::translate(
+                          "EquationsPanel", "dT/dt = m b\u00b2\u03c6\u0307\u03c6\u0308 (App. C)"));
 
-    h += section(tr("Free body (Lagrange\u2013d'Alembert ghost)"));
+    h += section(QCoreApplication::translate("EquationsPanel", "Free body (Lagrange\u2013"
+                                                               "d'Alembert ghost)"));
     const FreeMotion::Constants k = s.freeMotion().constants();
     const FreeState& f = m.free;
     if (k.general) {
         h += row(
             QStringLiteral("\u1e61 = V tanh(kt + c)"),
             QStringLiteral("%1 tanh(%2 \u00b7 %3 + %4)").arg(num(k.v), num(k.k), num(t), num(k.c)),
-            f.sdot, QStringLiteral("m/s"), tr("(D12)\u2013(D14) in closed form"));
+            f.sdot, QStringLiteral("m/s"),
+            QCoreApplication::translate("EquationsPanel", "(D12)\u2013(D14) in closed form"));
         h += row(
             QStringLiteral("\u03c6\u0307 = \u03c3(V/b) sech(kt + c)"),
             QStringLiteral("%1 (%2/%3) sech(%4)")
                 .arg(k.sigma > 0 ? QStringLiteral("+") : QStringLiteral("\u2212"), num(k.v),
                      num(d.b), num(k.k * t + k.c)),
             f.phidot, QStringLiteral("rad/s"),
-            tr("V = \u221a(\u1e61\u2080\u00b2 + b\u00b2\u03c6\u0307\u2080\u00b2), k = aV/b\u00b2, "
-               "c = atanh(\u1e61\u2080/V)"));
+            QCoreApplication::translate(
+                "EquationsPanel",
+                "V = \u221a(\u1e61\u2080\u00b2 + b\u00b2\u03c6\u0307\u2080\u00b2), k = aV/b\u00b2, "
+                "c = atanh(\u1e61\u2080/V)"));
     } else {
         h += row(QStringLiteral("\u1e61"), {}, f.sdot, QStringLiteral("m/s"),
                  QString::fromStdString(s.models().freeVelocity));

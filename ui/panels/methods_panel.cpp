@@ -139,7 +139,7 @@ void MethodsPanel::start() {
         } catch (const InputError& e) {
             out->error = QString::fromStdString(e.what());
         } catch (const std::exception& e) {
-            out->error = QStringLiteral("internal error: %1").arg(QString::fromUtf8(e.what()));
+            out->error = tr("internal error: %1").arg(QString::fromUtf8(e.what()));
         }
     });
 }

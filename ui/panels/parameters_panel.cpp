@@ -29,27 +29,40 @@ struct ParamInfo {
 
 ParamInfo paramInfo(SystemKind kind, const std::string& name) {
     if (kind == SystemKind::Carriage && name == "a") // App. B: a is half the axle, not an offset
-        return {"half-axle a (wheels at \u00b1a across the heading)", "m", 0, 2};
+        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "half-axle a (wheels at \u00b1"
+                                                                    "a across the heading)"),
+                "m", 0, 2};
     if (kind == SystemKind::Carriage && name == "m")
-        return {"wheel mass m", "kg", 0, 10};
+        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "wheel mass m"), "kg", 0, 10};
     if (kind == SystemKind::Carriage && name == "I")
-        return {"body's moment of inertia I about the axle's centre", "kg m\u00b2", 0, 10};
+        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel",
+                                  "body's moment of inertia I about the axle's centre"),
+                "kg m\u00b2", 0, 10};
     if (name == "m")
-        return {"mass m", "kg", 0.05, 10};
+        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "mass m"), "kg", 0.05, 10};
     if (name == "a")
-        return {"CM offset a", "m", -2, 2};
+        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "CM offset a"), "m", -2, 2};
     if (name == "b")
-        return {"gyration radius b about P", "m", 0.05, 5};
+        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "gyration radius b about P"),
+                "m", 0.05, 5};
     if (name == "I")
-        return {"moment of inertia I about the CM", "kg m\u00b2", 0, 10};
+        return {
+            QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "moment of inertia I about the CM"),
+            "kg m\u00b2", 0, 10};
     if (name == "R")
-        return {"wheel radius R", "m", 0.05, 2};
+        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "wheel radius R"), "m", 0.05,
+                2};
     if (name == "I1")
-        return {"wheel inertia I1 about its axle", "kg m\u00b2", 0, 2};
+        return {
+            QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "wheel inertia I1 about its axle"),
+            "kg m\u00b2", 0, 2};
     if (name == "I2")
-        return {"wheel inertia I2 about a diameter", "kg m\u00b2", 0, 2};
+        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel",
+                                  "wheel inertia I2 about a diameter"),
+                "kg m\u00b2", 0, 2};
     if (name == "M")
-        return {"carriage body mass M", "kg", 0, 20};
+        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "carriage body mass M"), "kg",
+                0, 20};
     return {"", "", 0, 10};
 }
 
@@ -185,8 +198,8 @@ void ParametersPanel::rebuildRows() {
             continue; // the sleigh has b or I, not both
         ParamInfo info = paramInfo(m_scene.system.kind, name);
         QString qname = QString::fromStdString(name);
-        m_rows[qname] = addRow(qname, qname, QString::fromUtf8(info.label),
-                               QString::fromUtf8(info.unit), info.lo, info.hi, it->second);
+        m_rows[qname] = addRow(qname, qname, tr(info.label), QString::fromUtf8(info.unit), info.lo,
+                               info.hi, it->second);
     }
     bool energy = m_scene.mode == SpeedMode::Energy;
     QString speedName = energy ? QStringLiteral("v_T") : QStringLiteral("v_s");

@@ -1,5 +1,7 @@
 #include "plots/plot_figures.h"
 
+#include <QCoreApplication>
+
 #include <qcustomplot.h>
 
 #include <algorithm>
@@ -90,33 +92,44 @@ void rescale(QCPAxisRect* rect, bool equalAspect = false) {
 void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSeries& s) {
     switch (kind) {
     case PlotKind::Psi:
-        addGraph(rect, s.t, s.psi, QStringLiteral("controlled \u03a8"), kControlled);
-        addGraph(rect, s.freeT, s.freePsi, QStringLiteral("free \u03a8"), kFree, Qt::DashLine);
-        addGraph(rect, s.vakT, s.vakPsi, QStringLiteral("vakonomic \u03a8"), kVakonomic,
+        addGraph(rect, s.t, s.psi, QCoreApplication::translate("PlotFigures", "controlled \u03a8"),
+                 kControlled);
+        addGraph(rect, s.freeT, s.freePsi,
+                 QCoreApplication::translate("PlotFigures", "free \u03a8"), kFree, Qt::DashLine);
+        addGraph(rect, s.vakT, s.vakPsi,
+                 QCoreApplication::translate("PlotFigures", "vakonomic \u03a8"), kVakonomic,
                  Qt::DashDotLine);
         labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03a8 [rad]"));
         break;
     case PlotKind::Chi:
-        addGraph(rect, s.t, s.chi, QStringLiteral("controlled \u03c7"), kControlled);
-        addGraph(rect, s.freeT, s.freeChi, QStringLiteral("free \u03c7 (constant)"), kFree,
+        addGraph(rect, s.t, s.chi, QCoreApplication::translate("PlotFigures", "controlled \u03c7"),
+                 kControlled);
+        addGraph(rect, s.freeT, s.freeChi,
+                 QCoreApplication::translate("PlotFigures", "free \u03c7 (constant)"), kFree,
                  Qt::DashLine);
-        addGraph(rect, s.vakT, s.vakChi, QStringLiteral("vakonomic \u03c7"), kVakonomic,
+        addGraph(rect, s.vakT, s.vakChi,
+                 QCoreApplication::translate("PlotFigures", "vakonomic \u03c7"), kVakonomic,
                  Qt::DashDotLine);
         labels(rect, QStringLiteral("t [s]"),
                QStringLiteral("\u03c7 = \u03a8 \u2212 (a/b)\u03c6 [rad]"));
         break;
     case PlotKind::Lambda:
         addGraph(rect, s.t, s.lambda, QStringLiteral("\u03bb = m b d\u03c7/dt"), kControlled);
-        addGraph(rect, s.vakT, s.vakLambda, QStringLiteral("vakonomic \u03bb (eq. 21)"), kVakonomic,
-                 Qt::DashDotLine);
+        addGraph(rect, s.vakT, s.vakLambda,
+                 QCoreApplication::translate("PlotFigures", "vakonomic \u03bb (eq. 21)"),
+                 kVakonomic, Qt::DashDotLine);
         labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03bb [kg m/s]"));
         break;
     case PlotKind::Energy:
-        addGraph(rect, s.t, s.energy, QStringLiteral("controlled T"), kControlled);
-        addGraph(rect, s.freeT, s.freeEnergy, QStringLiteral("free T"), kFree, Qt::DashLine);
-        addGraph(rect, s.vakT, s.vakEnergy, QStringLiteral("vakonomic T"), kVakonomic,
+        addGraph(rect, s.t, s.energy, QCoreApplication::translate("PlotFigures", "controlled T"),
+                 kControlled);
+        addGraph(rect, s.freeT, s.freeEnergy, QCoreApplication::translate("PlotFigures", "free T"),
+                 kFree, Qt::DashLine);
+        addGraph(rect, s.vakT, s.vakEnergy,
+                 QCoreApplication::translate("PlotFigures", "vakonomic T"), kVakonomic,
                  Qt::DashDotLine);
-        labels(rect, QStringLiteral("t [s]"), QStringLiteral("kinetic energy T [J]"));
+        labels(rect, QStringLiteral("t [s]"),
+               QCoreApplication::translate("PlotFigures", "kinetic energy T [J]"));
         break;
     default:
         break;
@@ -126,11 +139,14 @@ void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSer
 }
 
 void trajectoryPlot(QCustomPlot& plot, QCPAxisRect* rect, const PlotSeries& s) {
-    addCurve(rect, s.pathX, s.pathY, QStringLiteral("prescribed path"), kPath, Qt::DotLine);
-    addCurve(rect, s.x, s.y, QStringLiteral("controlled body (P)"), kControlled);
-    addCurve(rect, s.freeX, s.freeY, QStringLiteral("free body (P)"), kFree, Qt::DashLine);
-    addCurve(rect, s.vakX, s.vakY, QStringLiteral("vakonomic body (P)"), kVakonomic,
-             Qt::DashDotLine);
+    addCurve(rect, s.pathX, s.pathY, QCoreApplication::translate("PlotFigures", "prescribed path"),
+             kPath, Qt::DotLine);
+    addCurve(rect, s.x, s.y, QCoreApplication::translate("PlotFigures", "controlled body (P)"),
+             kControlled);
+    addCurve(rect, s.freeX, s.freeY, QCoreApplication::translate("PlotFigures", "free body (P)"),
+             kFree, Qt::DashLine);
+    addCurve(rect, s.vakX, s.vakY, QCoreApplication::translate("PlotFigures", "vakonomic body (P)"),
+             kVakonomic, Qt::DashDotLine);
     labels(rect, QStringLiteral("x [m]"), QStringLiteral("y [m]"));
     rescale(rect, true);
     legendIn(rect, plot);
@@ -153,8 +169,10 @@ void paperFigure(QCustomPlot& plot, const PlotSeries& s) {
     labels(rects[1], QStringLiteral("t [s]"), QStringLiteral("(b) x [m]"));
     addGraph(rects[2], s.t, s.y, QStringLiteral("y(t)"), kControlled);
     labels(rects[2], QStringLiteral("t [s]"), QStringLiteral("(c) y [m]"));
-    addCurve(rects[3], s.pathX, s.pathY, QStringLiteral("path"), kPath, Qt::DotLine);
-    addCurve(rects[3], s.x, s.y, QStringLiteral("tracked y(x)"), kControlled);
+    addCurve(rects[3], s.pathX, s.pathY, QCoreApplication::translate("PlotFigures", "path"), kPath,
+             Qt::DotLine);
+    addCurve(rects[3], s.x, s.y, QCoreApplication::translate("PlotFigures", "tracked y(x)"),
+             kControlled);
     labels(rects[3], QStringLiteral("x [m]"), QStringLiteral("(d) y [m]"));
     for (QCPAxisRect* r : rects) {
         rescale(r);
@@ -225,17 +243,18 @@ QString plotFileStem(PlotKind kind) {
 QString plotTitle(PlotKind kind) {
     switch (kind) {
     case PlotKind::Psi:
-        return QStringLiteral("Control angle \u03a8(t)");
+        return QCoreApplication::translate("PlotFigures", "Control angle \u03a8(t)");
     case PlotKind::Chi:
-        return QStringLiteral("Driving angle \u03c7(t)");
+        return QCoreApplication::translate("PlotFigures", "Driving angle \u03c7(t)");
     case PlotKind::Lambda:
-        return QStringLiteral("Control multiplier \u03bb(t)");
+        return QCoreApplication::translate("PlotFigures", "Control multiplier \u03bb(t)");
     case PlotKind::Energy:
-        return QStringLiteral("Kinetic energy T(t)");
+        return QCoreApplication::translate("PlotFigures", "Kinetic energy T(t)");
     case PlotKind::Trajectory:
-        return QStringLiteral("Trajectories of the knife point P");
+        return QCoreApplication::translate("PlotFigures", "Trajectories of the knife point P");
     case PlotKind::PaperFigure:
-        return QStringLiteral("s(t), x(t), y(t) and y(x), as in the paper's Figs. 2-3");
+        return QCoreApplication::translate(
+            "PlotFigures", "s(t), x(t), y(t) and y(x), as in the paper's Figs. 2-3");
     }
     return {};
 }

@@ -1,5 +1,7 @@
 #include "plots/plot_series.h"
 
+#include <QCoreApplication>
+
 #include <cmath>
 
 namespace chaplygin::ui {
@@ -55,9 +57,15 @@ PlotSeries collectSeries(const Solution& solution, int freeSamples, int exactSam
 QString sceneCaption(const Solution& solution) {
     const Scene& scene = solution.scene();
     const DerivedSystem& sys = solution.system();
-    QString system = QString::fromStdString(systemKindName(scene.system.kind));
-    QString mode = scene.mode == SpeedMode::Energy ? QStringLiteral("constant energy, v_T = %1 m/s")
-                                                   : QStringLiteral("constant speed, v_s = %1 m/s");
+    // systemKindName's words, for lupdate
+    [[maybe_unused]] static const char* const kSystemNames[] = {
+        QT_TRANSLATE_NOOP("PlotSeries", "sleigh"), QT_TRANSLATE_NOOP("PlotSeries", "disk"),
+        QT_TRANSLATE_NOOP("PlotSeries", "carriage")};
+    QString system =
+        QCoreApplication::translate("PlotSeries", systemKindName(scene.system.kind).c_str());
+    QString mode = scene.mode == SpeedMode::Energy
+                       ? QCoreApplication::translate("PlotSeries", "constant energy, v_T = %1 m/s")
+                       : QCoreApplication::translate("PlotSeries", "constant speed, v_s = %1 m/s");
     QString caption = QStringLiteral("%1: m_eff = %2 kg, a = %3 m, b = %4 m; %5")
                           .arg(system)
                           .arg(sys.mass, 0, 'g', 6)
@@ -65,8 +73,9 @@ QString sceneCaption(const Solution& solution) {
                           .arg(sys.b, 0, 'g', 6)
                           .arg(mode.arg(scene.speed, 0, 'g', 6));
     if (!scene.preset.empty())
-        caption =
-            QStringLiteral("preset %1 \u2014 ").arg(QString::fromStdString(scene.preset)) + caption;
+        caption = QCoreApplication::translate("PlotSeries", "preset %1 \u2014 ")
+                      .arg(QString::fromStdString(scene.preset)) +
+                  caption;
     return caption;
 }
 

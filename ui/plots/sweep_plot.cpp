@@ -1,5 +1,7 @@
 #include "plots/sweep_plot.h"
 
+#include <QCoreApplication>
+
 #include "common/atomic_file.h"
 #include "plots/plot_export.h"
 #include "plots/plot_figures.h"
@@ -55,7 +57,7 @@ void exportSweep(const SweepReport& report, const QString& caption, const QStrin
         grid->addElement(
             0, 0,
             new QCPTextElement(&plot,
-                               QStringLiteral("Sweep of %1: %2")
+                               QCoreApplication::translate("SweepPlot", "Sweep of %1: %2")
                                    .arg(QString::fromStdString(report.spec.parameter),
                                         QString::fromStdString(sweepQuantityLabel(quantity))),
                                QFont(plot.font().family(), 12, QFont::Bold)));

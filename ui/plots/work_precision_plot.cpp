@@ -1,5 +1,7 @@
 #include "plots/work_precision_plot.h"
 
+#include <QCoreApplication>
+
 #include "common/atomic_file.h"
 #include "plots/plot_export.h"
 
@@ -35,8 +37,10 @@ void panel(QCustomPlot& plot, QCPAxisRect* rect, const WorkPrecisionReport& repo
         axis->setNumberFormat("eb");
         axis->setNumberPrecision(0);
     }
-    rect->axis(QCPAxis::atBottom)->setLabel(QStringLiteral("seconds per solve"));
-    rect->axis(QCPAxis::atLeft)->setLabel(QStringLiteral("max position error [m]"));
+    rect->axis(QCPAxis::atBottom)
+        ->setLabel(QCoreApplication::translate("WorkPrecisionPlot", "seconds per solve"));
+    rect->axis(QCPAxis::atLeft)
+        ->setLabel(QCoreApplication::translate("WorkPrecisionPlot", "max position error [m]"));
     auto* legend = new QCPLegend;
     rect->insetLayout()->addElement(legend, Qt::AlignTop | Qt::AlignRight);
     legend->setFont(QFont(plot.font().family(), 7));
@@ -72,7 +76,8 @@ void panel(QCustomPlot& plot, QCPAxisRect* rect, const WorkPrecisionReport& repo
                 star->setLineStyle(QCPCurve::lsNone);
                 star->setScatterStyle(
                     QCPScatterStyle(QCPScatterStyle::ssStar, QPen(Qt::black, 2), Qt::NoBrush, 16));
-                star->setName(QStringLiteral("chosen: see the table"));
+                star->setName(
+                    QCoreApplication::translate("WorkPrecisionPlot", "chosen: see the table"));
                 if (!starInLegend)
                     star->addToLegend(legend);
                 starInLegend = true;
@@ -90,8 +95,10 @@ void panel(QCustomPlot& plot, QCPAxisRect* rect, const WorkPrecisionReport& repo
     top->setLabelFont(QFont(plot.font().family(), 10, QFont::Bold));
     top->setLabel(
         problem == MotionProblem::Controlled
-            ? QStringLiteral("controlled, t \u2264 %1 s").arg(report.controlledEnd, 0, 'g', 4)
-            : QStringLiteral("free, t \u2264 %1 s").arg(report.freeEnd, 0, 'g', 4));
+            ? QCoreApplication::translate("WorkPrecisionPlot", "controlled, t \u2264 %1 s")
+                  .arg(report.controlledEnd, 0, 'g', 4)
+            : QCoreApplication::translate("WorkPrecisionPlot", "free, t \u2264 %1 s")
+                  .arg(report.freeEnd, 0, 'g', 4));
 }
 
 } // namespace
@@ -122,7 +129,9 @@ void exportWorkPrecision(const WorkPrecisionReport& report, const QString& capti
     grid->insertRow(0);
     grid->addElement(
         0, 0,
-        new QCPTextElement(&plot, QStringLiteral("Work-precision: error against cost per solve"),
+        new QCPTextElement(&plot,
+                           QCoreApplication::translate(
+                               "WorkPrecisionPlot", "Work-precision: error against cost per solve"),
                            QFont(plot.font().family(), 12, QFont::Bold)));
     for (const QString& format : formats) {
         QByteArray bytes = renderPlot(plot, format, 1200, 600);

@@ -19,11 +19,12 @@ struct Doc {
     const char* file;
     const char* title;
 };
-constexpr Doc kDocs[] = {{"user-guide.md", "User guide"},
-                         {"physics.md", "Physics notes"},
-                         {"numerics.md", "Numerical methods"},
-                         {"robustness.md", "Robustness"},
-                         {"architecture.md", "Architecture"}};
+constexpr Doc kDocs[] = {
+    {"user-guide.md", QT_TRANSLATE_NOOP("chaplygin::ui::HelpWindow", "User guide")},
+    {"physics.md", QT_TRANSLATE_NOOP("chaplygin::ui::HelpWindow", "Physics notes")},
+    {"numerics.md", QT_TRANSLATE_NOOP("chaplygin::ui::HelpWindow", "Numerical methods")},
+    {"robustness.md", QT_TRANSLATE_NOOP("chaplygin::ui::HelpWindow", "Robustness")},
+    {"architecture.md", QT_TRANSLATE_NOOP("chaplygin::ui::HelpWindow", "Architecture")}};
 } // namespace
 
 QStringList HelpWindow::documents() {

@@ -23,6 +23,7 @@
 #include "shell/elided_label.h"
 #include "shell/gallery_menu.h"
 #include "shell/instruments.h"
+#include "shell/language_menu.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
 #include "shell/space_to_play.h"
@@ -279,6 +280,7 @@ void MainWindow::buildMenus() {
         connect(scaleMenu, &QMenu::aboutToShow, a,
                 [this, a, f] { a->setChecked(std::abs(m_presentation->scale() - f) < 1e-9); });
     }
+    view->addMenu(new LanguageMenu(view));
 
     QMenu* play = menuBar()->addMenu(tr("&Animation"));
     play->addAction(m_timeline->playAction());
@@ -450,9 +452,10 @@ void MainWindow::onSolutionChanged() {
     m_canvas->setTime(m_playback->time());
     m_plots->setTime(m_playback->time());
     const ModelReport& m = solution->models();
-    m_status->setFullText(QString::fromStdString("path: " + m.path + "; time law: " + m.timeLaw +
-                                                 "; free motion: " + m.freeVelocity + ", " +
-                                                 m.freePosition));
+    m_status->setFullText(
+        tr("path: %1; time law: %2; free motion: %3, %4")
+            .arg(QString::fromStdString(m.path), QString::fromStdString(m.timeLaw),
+                 QString::fromStdString(m.freeVelocity), QString::fromStdString(m.freePosition)));
     if (m_noteScene && m_document->scene() != *m_noteScene) {
         m_noteScene.reset();
         m_accuracy->setNote({}, {});

@@ -1,0 +1,1631 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="pt_BR">
+<context>
+    <name>AnimationDialog</name>
+    <message>
+        <source>Rendering %1 frames…</source>
+        <translation>Renderizando %1 quadros…</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+</context>
+<context>
+    <name>EquationsPanel</name>
+    <message>
+        <source>&lt;b&gt;Chaplygin sleigh&lt;/b&gt;: m = %1 kg, a = %2 m, b = %3 m (b² = a² + I/m, b is the radius of gyration about P)</source>
+        <translation>&lt;b&gt;Trenó de Chaplygin&lt;/b&gt;: m = %1 kg, a = %2 m, b = %3 m (b² = a² + I/m, b é o raio de giração em relação a P)</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Rolling disk&lt;/b&gt; (App. A) as a sleigh: M_eff = m + I1/R² = %1 kg, b = R√(I2/(I1 + mR²)) = %2 √(%3/(%4 + %5·%2²)) = %6 m (A14); the contact point is under the centre, so a = 0</source>
+        <translation>&lt;b&gt;Disco rolante&lt;/b&gt; (Apêndice A) como trenó: M_eff = m + I1/R² = %1 kg, b = R√(I2/(I1 + mR²)) = %2 √(%3/(%4 + %5·%2²)) = %6 m (A14); o ponto de contato fica sob o centro, logo a = 0</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Two-wheeled carriage&lt;/b&gt; (App. B) as a sleigh: M_eff = M + 2(m + I1/R²) = %1 kg, b = √(J/M_eff) = %2 m with J = I + 2I2 + 2a²(m + I1/R²) (B18); a = %3 m</source>
+        <translation>&lt;b&gt;Carrinho de duas rodas&lt;/b&gt; (Apêndice B) como trenó: M_eff = M + 2(m + I1/R²) = %1 kg, b = √(J/M_eff) = %2 m com J = I + 2I2 + 2a²(m + I1/R²) (B18); a = %3 m</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;t = &lt;b&gt;%1 s&lt;/b&gt;: s = %2 m, φ = %3 rad, κ = %4 1/m; %5&lt;/p&gt;</source>
+        <translation>&lt;p&gt;t = &lt;b&gt;%1 s&lt;/b&gt;: s = %2 m, φ = %3 rad, κ = %4 1/m; %5&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>constant energy, v_T = %1 m/s</source>
+        <translation>energia constante, v_T = %1 m/s</translation>
+    </message>
+    <message>
+        <source>constant speed, v_s = %1 m/s (App. C)</source>
+        <translation>velocidade constante, v_s = %1 m/s (Apêndice C)</translation>
+    </message>
+    <message>
+        <source>Control angle</source>
+        <translation>Ângulo de controle</translation>
+    </message>
+    <message>
+        <source>%1 (corner: bκ → %2)</source>
+        <translation>%1 (canto: bκ → %2)</translation>
+    </message>
+    <message>
+        <source>pivot about P, docs/physics.md §2.8</source>
+        <translation>pivô em torno de P, docs/physics.md §2.8</translation>
+    </message>
+    <message>
+        <source>(45) tan Ψ = ρ/b on the branch Ψ ∈ (0, π) (erratum to (47))</source>
+        <translation>(45) tan Ψ = ρ/b no ramo Ψ ∈ (0, π) (errata de (47))</translation>
+    </message>
+    <message>
+        <source>Velocities and time law</source>
+        <translation>Velocidades e lei horária</translation>
+    </message>
+    <message>
+        <source>turning in place</source>
+        <translation>girando no lugar</translation>
+    </message>
+    <message>
+        <source>(35) with Ψ = 0 or π</source>
+        <translation>(35) com Ψ = 0 ou π</translation>
+    </message>
+    <message>
+        <source>(51); (52)–(53) corrected: 1/sin Ψ = √(1 + b²κ²)</source>
+        <translation>(51); (52)–(53) corrigidas: 1/sin Ψ = √(1 + b²κ²)</translation>
+    </message>
+    <message>
+        <source>(C15): the energy varies</source>
+        <translation>(C15): a energia varia</translation>
+    </message>
+    <message>
+        <source>t = s/v_s</source>
+        <translation>t = s/v_s</translation>
+    </message>
+    <message>
+        <source>(49) with ṡ² (erratum)</source>
+        <translation>(49) com ṡ² (errata)</translation>
+    </message>
+    <message>
+        <source>Driving angle and control multiplier</source>
+        <translation>Ângulo de condução e multiplicador de controle</translation>
+    </message>
+    <message>
+        <source>docs/physics.md §2.5</source>
+        <translation>docs/physics.md §2.5</translation>
+    </message>
+    <message>
+        <source>Forces on the body</source>
+        <translation>Forças sobre o corpo</translation>
+    </message>
+    <message>
+        <source>= λφ̇ (docs/physics.md §2.7)</source>
+        <translation>= λφ̇ (docs/physics.md §2.7)</translation>
+    </message>
+    <message>
+        <source>docs/physics.md §2.7</source>
+        <translation>docs/physics.md §2.7</translation>
+    </message>
+    <message>
+        <source>(69)–(70), at P</source>
+        <translation>(69)–(70), em P</translation>
+    </message>
+    <message>
+        <source>= −λṡ: workless (S_c = Iφ̈, erratum to (66)–(68))</source>
+        <translation>= −λṡ: não realiza trabalho (S_c = Iφ̈, errata de (66)–(68))</translation>
+    </message>
+    <message>
+        <source>S_c = Iφ̈ (erratum to (66)–(68))</source>
+        <translation>S_c = Iφ̈ (errata de (66)–(68))</translation>
+    </message>
+    <message>
+        <source>0: the control does no work</source>
+        <translation>0: o controle não realiza trabalho</translation>
+    </message>
+    <message>
+        <source>dT/dt = m b²φ̇φ̈ (App. C)</source>
+        <translation>dT/dt = m b²φ̇φ̈ (Apêndice C)</translation>
+    </message>
+    <message>
+        <source>Free body (Lagrange–d&apos;Alembert ghost)</source>
+        <translation>Corpo livre (fantasma de Lagrange–d&apos;Alembert)</translation>
+    </message>
+    <message>
+        <source>(D12)–(D14) in closed form</source>
+        <translation>(D12)–(D14) em forma fechada</translation>
+    </message>
+    <message>
+        <source>V = √(ṡ₀² + b²φ̇₀²), k = aV/b², c = atanh(ṡ₀/V)</source>
+        <translation>V = √(ṡ₀² + b²φ̇₀²), k = aV/b², c = atanh(ṡ₀/V)</translation>
+    </message>
+</context>
+<context>
+    <name>PlotFigures</name>
+    <message>
+        <source>controlled Ψ</source>
+        <translation>Ψ controlado</translation>
+    </message>
+    <message>
+        <source>free Ψ</source>
+        <translation>Ψ livre</translation>
+    </message>
+    <message>
+        <source>controlled χ</source>
+        <translation>χ controlado</translation>
+    </message>
+    <message>
+        <source>free χ (constant)</source>
+        <translation>χ livre (constante)</translation>
+    </message>
+    <message>
+        <source>controlled T</source>
+        <translation>T controlado</translation>
+    </message>
+    <message>
+        <source>free T</source>
+        <translation>T livre</translation>
+    </message>
+    <message>
+        <source>kinetic energy T [J]</source>
+        <translation>energia cinética T [J]</translation>
+    </message>
+    <message>
+        <source>prescribed path</source>
+        <translation>caminho prescrito</translation>
+    </message>
+    <message>
+        <source>controlled body (P)</source>
+        <translation>corpo controlado (P)</translation>
+    </message>
+    <message>
+        <source>free body (P)</source>
+        <translation>corpo livre (P)</translation>
+    </message>
+    <message>
+        <source>path</source>
+        <translation>caminho</translation>
+    </message>
+    <message>
+        <source>tracked y(x)</source>
+        <translation>y(x) seguido</translation>
+    </message>
+    <message>
+        <source>Control angle Ψ(t)</source>
+        <translation>Ângulo de controle Ψ(t)</translation>
+    </message>
+    <message>
+        <source>Driving angle χ(t)</source>
+        <translation>Ângulo de condução χ(t)</translation>
+    </message>
+    <message>
+        <source>Control multiplier λ(t)</source>
+        <translation>Multiplicador de controle λ(t)</translation>
+    </message>
+    <message>
+        <source>Kinetic energy T(t)</source>
+        <translation>Energia cinética T(t)</translation>
+    </message>
+    <message>
+        <source>Trajectories of the knife point P</source>
+        <translation>Trajetórias do ponto da lâmina P</translation>
+    </message>
+    <message>
+        <source>s(t), x(t), y(t) and y(x), as in the paper&apos;s Figs. 2-3</source>
+        <translation>s(t), x(t), y(t) e y(x), como nas Figs. 2-3 do artigo</translation>
+    </message>
+    <message>
+        <source>vakonomic Ψ</source>
+        <translation>Ψ vakonômico</translation>
+    </message>
+    <message>
+        <source>vakonomic χ</source>
+        <translation>χ vakonômico</translation>
+    </message>
+    <message>
+        <source>vakonomic λ (eq. 21)</source>
+        <translation>λ vakonômico (eq. 21)</translation>
+    </message>
+    <message>
+        <source>vakonomic T</source>
+        <translation>T vakonômico</translation>
+    </message>
+    <message>
+        <source>vakonomic body (P)</source>
+        <translation>corpo vakonômico (P)</translation>
+    </message>
+</context>
+<context>
+    <name>PlotSeries</name>
+    <message>
+        <source>sleigh</source>
+        <translation>trenó</translation>
+    </message>
+    <message>
+        <source>disk</source>
+        <translation>disco</translation>
+    </message>
+    <message>
+        <source>carriage</source>
+        <translation>carrinho</translation>
+    </message>
+    <message>
+        <source>constant energy, v_T = %1 m/s</source>
+        <translation>energia constante, v_T = %1 m/s</translation>
+    </message>
+    <message>
+        <source>constant speed, v_s = %1 m/s</source>
+        <translation>velocidade constante, v_s = %1 m/s</translation>
+    </message>
+    <message>
+        <source>preset %1 — </source>
+        <translation>predefinição %1 — </translation>
+    </message>
+</context>
+<context>
+    <name>QObject</name>
+    <message>
+        <source>pin %1: %2</source>
+        <translation>execução %1: %2</translation>
+    </message>
+    <message>
+        <source>Export this plot…</source>
+        <translation>Exportar este gráfico…</translation>
+    </message>
+    <message>
+        <source>Export the plot</source>
+        <translation>Exportar o gráfico</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png);;PDF (*.pdf);;SVG (*.svg)</source>
+        <translation>Imagem PNG (*.png);;PDF (*.pdf);;SVG (*.svg)</translation>
+    </message>
+</context>
+<context>
+    <name>SceneFiles</name>
+    <message>
+        <source>cannot open &apos;%1&apos;</source>
+        <translation>não é possível abrir &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>no such file</source>
+        <translation>arquivo inexistente</translation>
+    </message>
+    <message>
+        <source>it is a directory, not a scene file</source>
+        <translation>é um diretório, não um arquivo de cena</translation>
+    </message>
+</context>
+<context>
+    <name>SweepPlot</name>
+    <message>
+        <source>Sweep of %1: %2</source>
+        <translation>Varredura de %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>VectorPainter</name>
+    <message>
+        <source>Knife point velocity v_P</source>
+        <translation>Velocidade do ponto da lâmina v_P</translation>
+    </message>
+    <message>
+        <source>Control force along the axis f_s</source>
+        <translation>Força de controle ao longo do eixo f_s</translation>
+    </message>
+    <message>
+        <source>Knife&apos;s lateral reaction N (at P)</source>
+        <translation>Reação lateral da lâmina N (em P)</translation>
+    </message>
+    <message>
+        <source>Control couple τ</source>
+        <translation>Torque de controle τ</translation>
+    </message>
+    <message>
+        <source>Centre of mass velocity v_C</source>
+        <translation>Velocidade do centro de massa v_C</translation>
+    </message>
+    <message>
+        <source>τ = 0 while turning in place</source>
+        <translation>τ = 0 durante o giro no lugar</translation>
+    </message>
+</context>
+<context>
+    <name>WorkPrecisionPlot</name>
+    <message>
+        <source>seconds per solve</source>
+        <translation>segundos por solução</translation>
+    </message>
+    <message>
+        <source>max position error [m]</source>
+        <translation>erro máximo de posição [m]</translation>
+    </message>
+    <message>
+        <source>controlled, t ≤ %1 s</source>
+        <translation>controlado, t ≤ %1 s</translation>
+    </message>
+    <message>
+        <source>free, t ≤ %1 s</source>
+        <translation>livre, t ≤ %1 s</translation>
+    </message>
+    <message>
+        <source>Work-precision: error against cost per solve</source>
+        <translation>Trabalho-precisão: erro em função do custo por solução</translation>
+    </message>
+    <message>
+        <source>chosen: see the table</source>
+        <translation>escolhido: veja a tabela</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::AccuracyReadout</name>
+    <message>
+        <source>Distance of the controlled knife point P from the prescribed path&apos;s own point at the same arc length: the tracking constraint residual</source>
+        <translation>Distância do ponto da lâmina P controlado ao ponto do caminho prescrito com o mesmo comprimento de arco: o resíduo do vínculo de rastreamento</translation>
+    </message>
+    <message>
+        <source>Distance from the paper&apos;s closed form (line and circle presets, constant energy)</source>
+        <translation>Distância da forma fechada do artigo (predefinições reta e círculo, energia constante)</translation>
+    </message>
+    <message>
+        <source>t</source>
+        <translation>t</translation>
+    </message>
+    <message>
+        <source>off the path</source>
+        <translation>fora do caminho</translation>
+    </message>
+    <message>
+        <source>vs closed form</source>
+        <translation>vs forma fechada</translation>
+    </message>
+    <message>
+        <source>energy drift</source>
+        <translation>deriva da energia</translation>
+    </message>
+    <message>
+        <source>free energy drift</source>
+        <translation>deriva da energia livre</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Models and methods&lt;/b&gt;</source>
+        <translation>&lt;b&gt;Modelos e métodos&lt;/b&gt;</translation>
+    </message>
+    <message>
+        <source>%1 (paper %2)</source>
+        <translation>%1 (artigo %2)</translation>
+    </message>
+    <message>
+        <source>no closed form for this scene</source>
+        <translation>sem forma fechada para esta cena</translation>
+    </message>
+    <message>
+        <source>T varies by design in constant-speed mode</source>
+        <translation>T varia por construção no modo de velocidade constante</translation>
+    </message>
+    <message>
+        <source>path: %1
+time law: %2
+s(t): %3
+control: %4
+free velocities: %5
+free position: %6</source>
+        <translation>caminho: %1
+lei horária: %2
+s(t): %3
+controle: %4
+velocidades livres: %5
+posição livre: %6</translation>
+    </message>
+    <message>
+        <source>
+vakonomic body: %1</source>
+        <translation>
+corpo vakonômico: %1</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::AnimationDialog</name>
+    <message>
+        <source>Export animation</source>
+        <translation>Exportar animação</translation>
+    </message>
+    <message>
+        <source>clip.gif, clip.mp4, or frames/ for PNG frames</source>
+        <translation>clipe.gif, clipe.mp4 ou quadros/ para quadros PNG</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Procurar…</translation>
+    </message>
+    <message>
+        <source> fps</source>
+        <translation> qps</translation>
+    </message>
+    <message>
+        <source>px</source>
+        <translation>px</translation>
+    </message>
+    <message>
+        <source> × real time</source>
+        <translation> × tempo real</translation>
+    </message>
+    <message>
+        <source>Plots beside the canvas</source>
+        <translation>Gráficos ao lado da tela de desenho</translation>
+    </message>
+    <message>
+        <source>GIF and MP4 need the ffmpeg program; a folder gets PNG frames.</source>
+        <translation>GIF e MP4 precisam do programa ffmpeg; uma pasta recebe quadros PNG.</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Exportar</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Arquivo</translation>
+    </message>
+    <message>
+        <source>Frame rate</source>
+        <translation>Taxa de quadros</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Tamanho</translation>
+    </message>
+    <message>
+        <source>Speed</source>
+        <translation>Velocidade</translation>
+    </message>
+    <message>
+        <source>GIF (*.gif);;MP4 video (*.mp4);;PNG frames into a folder (*)</source>
+        <translation>GIF (*.gif);;Vídeo MP4 (*.mp4);;Quadros PNG em uma pasta (*)</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::BodyDisplayMenu</name>
+    <message>
+        <source>&amp;Bodies</source>
+        <translation>&amp;Corpos</translation>
+    </message>
+    <message>
+        <source>To &amp;scale</source>
+        <translation>Em &amp;escala</translation>
+    </message>
+    <message>
+        <source>&amp;Outline only</source>
+        <translation>Só o &amp;contorno</translation>
+    </message>
+    <message>
+        <source>Small &amp;marker (knife and centre of mass)</source>
+        <translation>&amp;Marcador pequeno (lâmina e centro de massa)</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+1</source>
+        <translation>Ctrl+Shift+1</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+2</source>
+        <translation>Ctrl+Shift+2</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+3</source>
+        <translation>Ctrl+Shift+3</translation>
+    </message>
+    <message>
+        <source>&amp;Trail width</source>
+        <translation>Largura do &amp;rastro</translation>
+    </message>
+    <message>
+        <source>%1 px</source>
+        <translation>%1 px</translation>
+    </message>
+    <message>
+        <source>Body &amp;opacity</source>
+        <translation>&amp;Opacidade do corpo</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::CompareMenu</name>
+    <message>
+        <source>&amp;Compare</source>
+        <translation>&amp;Comparar</translation>
+    </message>
+    <message>
+        <source>&amp;Pin this run</source>
+        <translation>&amp;Fixar esta execução</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+P</source>
+        <translation>Ctrl+Shift+P</translation>
+    </message>
+    <message>
+        <source>At most %1 pinned runs: clear them first</source>
+        <translation>No máximo %1 execuções fixadas: limpe-as primeiro</translation>
+    </message>
+    <message>
+        <source>Pin this run</source>
+        <translation>Fixar esta execução</translation>
+    </message>
+    <message>
+        <source>Keep this motion as a faint overlay on the canvas and the plots</source>
+        <translation>Manter este movimento como uma sobreposição esmaecida na tela de desenho e nos gráficos</translation>
+    </message>
+    <message>
+        <source>&amp;Clear pins</source>
+        <translation>&amp;Limpar execuções fixadas</translation>
+    </message>
+    <message>
+        <source>Clear pins</source>
+        <translation>Limpar execuções fixadas</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::GalleryMenu</name>
+    <message>
+        <source>&amp;Gallery</source>
+        <translation>&amp;Galeria</translation>
+    </message>
+    <message>
+        <source> (refused)</source>
+        <translation> (recusado)</translation>
+    </message>
+    <message>
+        <source>A corner in constant-speed mode: cannot turn</source>
+        <translation>Um canto no modo de velocidade constante: não consegue girar</translation>
+    </message>
+    <message>
+        <source>A corner in constant-energy mode: pivot in place</source>
+        <translation>Um canto no modo de energia constante: pivô no lugar</translation>
+    </message>
+    <message>
+        <source>A cusp: the tangent vanishes</source>
+        <translation>Uma cúspide: a tangente se anula</translation>
+    </message>
+    <message>
+        <source>Very high curvature, b kappa = 1000</source>
+        <translation>Curvatura muito alta, b kappa = 1000</translation>
+    </message>
+    <message>
+        <source>A long horizon: t = 5000 s</source>
+        <translation>Um horizonte longo: t = 5000 s</translation>
+    </message>
+    <message>
+        <source>Open-loop integration of (36)-(37) drifts off the path</source>
+        <translation>A integração em malha aberta de (36)-(37) se afasta do caminho</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s printed branch reverses at inflections</source>
+        <translation>O ramo impresso no artigo se inverte nas inflexões</translation>
+    </message>
+    <message>
+        <source>The genuine vakonomic system leaves the circle</source>
+        <translation>O sistema vakonômico genuíno deixa o círculo</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::HelpWindow</name>
+    <message>
+        <source>User guide</source>
+        <translation>Guia do usuário</translation>
+    </message>
+    <message>
+        <source>Physics notes</source>
+        <translation>Notas de física</translation>
+    </message>
+    <message>
+        <source>Numerical methods</source>
+        <translation>Métodos numéricos</translation>
+    </message>
+    <message>
+        <source>Robustness</source>
+        <translation>Robustez</translation>
+    </message>
+    <message>
+        <source>Architecture</source>
+        <translation>Arquitetura</translation>
+    </message>
+    <message>
+        <source>Chaplygin Lab help</source>
+        <translation>Ajuda do Chaplygin Lab</translation>
+    </message>
+    <message>
+        <source>Help documents</source>
+        <translation>Documentos de ajuda</translation>
+    </message>
+    <message>
+        <source>Help text</source>
+        <translation>Texto de ajuda</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::LanguageMenu</name>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Idioma</translation>
+    </message>
+    <message>
+        <source>System</source>
+        <translation>Sistema</translation>
+    </message>
+    <message>
+        <source>Takes effect at the next start of Chaplygin Lab</source>
+        <translation>Vale a partir da próxima vez que o Chaplygin Lab for iniciado</translation>
+    </message>
+    <message>
+        <source>Takes effect at the next start</source>
+        <translation>Vale a partir do próximo início</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::MainWindow</name>
+    <message>
+        <source>Path</source>
+        <translation>Caminho</translation>
+    </message>
+    <message>
+        <source>System and parameters</source>
+        <translation>Sistema e parâmetros</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Gráficos</translation>
+    </message>
+    <message>
+        <source>Methods</source>
+        <translation>Métodos</translation>
+    </message>
+    <message>
+        <source>Accuracy</source>
+        <translation>Precisão</translation>
+    </message>
+    <message>
+        <source>Type a path</source>
+        <translation>Digitar um caminho</translation>
+    </message>
+    <message>
+        <source>Change the corners</source>
+        <translation>Alterar os cantos</translation>
+    </message>
+    <message>
+        <source>Draw a path</source>
+        <translation>Desenhar um caminho</translation>
+    </message>
+    <message>
+        <source>Edit the drawn path</source>
+        <translation>Editar o caminho desenhado</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Arquivo</translation>
+    </message>
+    <message>
+        <source>&amp;New</source>
+        <translation>&amp;Novo</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>&amp;Abrir…</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>Abrir &amp;recente</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Salvar</translation>
+    </message>
+    <message>
+        <source>Save &amp;As…</source>
+        <translation>Salvar c&amp;omo…</translation>
+    </message>
+    <message>
+        <source>Export &amp;plots…</source>
+        <translation>Exportar &amp;gráficos…</translation>
+    </message>
+    <message>
+        <source>Ctrl+E</source>
+        <translation>Ctrl+E</translation>
+    </message>
+    <message>
+        <source>Export &amp;CSV…</source>
+        <translation>Exportar &amp;CSV…</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+E</source>
+        <translation>Ctrl+Shift+E</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>Sa&amp;ir</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Editar</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Desfazer</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Refazer</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>E&amp;xibir</translation>
+    </message>
+    <message>
+        <source>&amp;Fit scene</source>
+        <translation>A&amp;justar a cena</translation>
+    </message>
+    <message>
+        <source>Ctrl+0</source>
+        <translation>Ctrl+0</translation>
+    </message>
+    <message>
+        <source>F&amp;ollow body</source>
+        <translation>&amp;Seguir o corpo</translation>
+    </message>
+    <message>
+        <source>Ctrl+B</source>
+        <translation>Ctrl+B</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;in</source>
+        <translation>Am&amp;pliar</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;out</source>
+        <translation>&amp;Reduzir</translation>
+    </message>
+    <message>
+        <source>&amp;Animation</source>
+        <translation>A&amp;nimação</translation>
+    </message>
+    <message>
+        <source>&amp;Methods</source>
+        <translation>&amp;Métodos</translation>
+    </message>
+    <message>
+        <source>Compute &amp;work-precision</source>
+        <translation>Calcular &amp;trabalho-precisão</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+W</source>
+        <translation>Ctrl+Shift+W</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel work-precision</source>
+        <translation>&amp;Cancelar trabalho-precisão</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>A&amp;juda</translation>
+    </message>
+    <message>
+        <source>&amp;Physics notes</source>
+        <translation>Notas de &amp;física</translation>
+    </message>
+    <message>
+        <source>&amp;About Chaplygin Lab</source>
+        <translation>&amp;Sobre o Chaplygin Lab</translation>
+    </message>
+    <message>
+        <source>About Chaplygin Lab</source>
+        <translation>Sobre o Chaplygin Lab</translation>
+    </message>
+    <message>
+        <source>Preset %1</source>
+        <translation>Predefinição %1</translation>
+    </message>
+    <message>
+        <source>Tabulating the path…</source>
+        <translation>Tabulando o caminho…</translation>
+    </message>
+    <message>
+        <source>Refused: %1</source>
+        <translation>Recusado: %1</translation>
+    </message>
+    <message>
+        <source>Gallery: %1</source>
+        <translation>Galeria: %1</translation>
+    </message>
+    <message>
+        <source>Chaplygin Lab</source>
+        <translation>Chaplygin Lab</translation>
+    </message>
+    <message>
+        <source>The scene has unsaved changes. Save them?</source>
+        <translation>A cena tem alterações não salvas. Salvá-las?</translation>
+    </message>
+    <message>
+        <source>cannot save &apos;%1&apos;: the scene does not solve (%2); fix it or undo first</source>
+        <translation>não é possível salvar &apos;%1&apos;: a cena não tem solução (%2); corrija-a ou desfaça antes</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>%1 salvo</translation>
+    </message>
+    <message>
+        <source>Plots written to %1</source>
+        <translation>Gráficos gravados em %1</translation>
+    </message>
+    <message>
+        <source>CSV written to %1</source>
+        <translation>CSV gravado em %1</translation>
+    </message>
+    <message>
+        <source>Open scene</source>
+        <translation>Abrir cena</translation>
+    </message>
+    <message>
+        <source>Scenes (*.json);;All files (*)</source>
+        <translation>Cenas (*.json);;Todos os arquivos (*)</translation>
+    </message>
+    <message>
+        <source>Save scene</source>
+        <translation>Salvar cena</translation>
+    </message>
+    <message>
+        <source>Scenes (*.json)</source>
+        <translation>Cenas (*.json)</translation>
+    </message>
+    <message>
+        <source>Export plots (PNG, PDF and SVG) into</source>
+        <translation>Exportar gráficos (PNG, PDF e SVG) para</translation>
+    </message>
+    <message>
+        <source>Export CSV</source>
+        <translation>Exportar CSV</translation>
+    </message>
+    <message>
+        <source>CSV (*.csv)</source>
+        <translation>CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>untitled</source>
+        <translation>sem título</translation>
+    </message>
+    <message>
+        <source>%1%2 — Chaplygin Lab</source>
+        <translation>%1%2 — Chaplygin Lab</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notas</translation>
+    </message>
+    <message>
+        <source>Equations</source>
+        <translation>Equações</translation>
+    </message>
+    <message>
+        <source>Edit the note</source>
+        <translation>Editar a nota</translation>
+    </message>
+    <message>
+        <source>Sweep</source>
+        <translation>Varredura</translation>
+    </message>
+    <message>
+        <source>Export &amp;animation…</source>
+        <translation>Exportar ani&amp;mação…</translation>
+    </message>
+    <message>
+        <source>path: %1; time law: %2; free motion: %3, %4</source>
+        <translation>caminho: %1; lei horária: %2; movimento livre: %3, %4</translation>
+    </message>
+    <message>
+        <source>Wrote %1</source>
+        <translation>%1 gravado</translation>
+    </message>
+    <message>
+        <source>Animation export cancelled</source>
+        <translation>Exportação da animação cancelada</translation>
+    </message>
+    <message>
+        <source>The note is %1 bytes; a note is at most %2 bytes (not kept)</source>
+        <translation>A nota tem %1 bytes; uma nota tem no máximo %2 bytes (não mantida)</translation>
+    </message>
+    <message>
+        <source>Ctrl+Y</source>
+        <translation>Ctrl+Y</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+Z</source>
+        <translation>Ctrl+Shift+Z</translation>
+    </message>
+    <message>
+        <source>Genuine &amp;vakonomic body</source>
+        <translation>Corpo vak&amp;onômico genuíno</translation>
+    </message>
+    <message>
+        <source>Draw a third body whose multiplier obeys its own equation (21): it cannot follow the path</source>
+        <translation>Desenhar um terceiro corpo cujo multiplicador obedece à sua própria equação (21): ele não consegue seguir o caminho</translation>
+    </message>
+    <message>
+        <source>Presentation &amp;scale</source>
+        <translation>Esca&amp;la da apresentação</translation>
+    </message>
+    <message>
+        <source>Play &amp;new scenes at once</source>
+        <translation>Reproduzir &amp;novas cenas imediatamente</translation>
+    </message>
+    <message>
+        <source>Preset %1: %2</source>
+        <translation>Predefinição %1: %2</translation>
+    </message>
+    <message>
+        <source>Ne&amp;xt gallery scene</source>
+        <translation>&amp;Próxima cena da galeria</translation>
+    </message>
+    <message>
+        <source>Pre&amp;vious gallery scene</source>
+        <translation>Cena &amp;anterior da galeria</translation>
+    </message>
+    <message>
+        <source>&amp;Help for this part of the window</source>
+        <translation>&amp;Ajuda para esta parte da janela</translation>
+    </message>
+    <message>
+        <source>&amp;User guide</source>
+        <translation>&amp;Guia do usuário</translation>
+    </message>
+    <message>
+        <source>&amp;Numerical methods</source>
+        <translation>Métodos &amp;numéricos</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Chaplygin Lab %1&lt;/h3&gt;&lt;p&gt;Control of nonholonomic Chaplygin systems for teaching: the sleigh, the rolling disk and the two-wheeled carriage follow a prescribed path, beside the free motion from the same start.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Paper:&lt;/b&gt; Antunes, Sigaud, de Moraes, &lt;i&gt;Controlling nonholonomic Chaplygin systems&lt;/i&gt;, Brazilian Journal of Physics (2009).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Licence:&lt;/b&gt; not yet chosen by the authors; until it is, ask them before redistributing. Third-party components keep their own licences: Qt %2 (LGPL v3), QCustomPlot (GPL v3), GiNaC (GPL v2 or later).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Credits:&lt;/b&gt; the Chaplygin Lab contributors; the equations of motion after the paper above, re-derived in the physics notes (Help).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Chaplygin Lab %1&lt;/h3&gt;&lt;p&gt;Controle de sistemas de Chaplygin não holonômicos para o ensino: o trenó, o disco rolante e o carrinho de duas rodas seguem um caminho prescrito, ao lado do movimento livre a partir do mesmo início.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Artigo:&lt;/b&gt; Antunes, Sigaud, de Moraes, &lt;i&gt;Controlling nonholonomic Chaplygin systems&lt;/i&gt;, Brazilian Journal of Physics (2009).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Licença:&lt;/b&gt; ainda não escolhida pelos autores; até que seja, consulte-os antes de redistribuir. Os componentes de terceiros mantêm as suas próprias licenças: Qt %2 (LGPL v3), QCustomPlot (GPL v3), GiNaC (GPL v2 ou posterior).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Créditos:&lt;/b&gt; os colaboradores do Chaplygin Lab; as equações de movimento seguem o artigo acima e são deduzidas novamente nas notas de física (Ajuda).&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::MethodsPanel</name>
+    <message>
+        <source>Compute work-precision</source>
+        <translation>Calcular trabalho-precisão</translation>
+    </message>
+    <message>
+        <source>Sweep every method&apos;s tolerances and step sizes for the current scene (Ctrl+Shift+W)</source>
+        <translation>Varrer as tolerâncias e os passos de cada método para a cena atual (Ctrl+Shift+W)</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Error against cost per solve for every method: press Compute.</source>
+        <translation>Erro em função do custo por solução para cada método: clique em Calcular.</translation>
+    </message>
+    <message>
+        <source>problem</source>
+        <translation>problema</translation>
+    </message>
+    <message>
+        <source>chosen method</source>
+        <translation>método escolhido</translation>
+    </message>
+    <message>
+        <source>error [m]</source>
+        <translation>erro [m]</translation>
+    </message>
+    <message>
+        <source>s/solve</source>
+        <translation>s/solução</translation>
+    </message>
+    <message>
+        <source>Pareto</source>
+        <translation>Pareto</translation>
+    </message>
+    <message>
+        <source>Sweeping the methods in a worker thread…</source>
+        <translation>Varrendo os métodos em uma thread de trabalho…</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>cancelado</translation>
+    </message>
+    <message>
+        <source>Cancelling after the configuration under way…</source>
+        <translation>Cancelando após a configuração em andamento…</translation>
+    </message>
+    <message>
+        <source>cancelled: the scene changed</source>
+        <translation>cancelado: a cena mudou</translation>
+    </message>
+    <message>
+        <source>The sweep failed: %1</source>
+        <translation>A varredura falhou: %1</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>sim</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>não</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;References&lt;/b&gt;&lt;br&gt;controlled: %1&lt;br&gt;free: %2</source>
+        <translation>&lt;b&gt;Referências&lt;/b&gt;&lt;br&gt;controlado: %1&lt;br&gt;livre: %2</translation>
+    </message>
+    <message>
+        <source>%1 configurations; horizons %2 s (controlled), %3 s (free).</source>
+        <translation>%1 configurações; horizontes %2 s (controlado), %3 s (livre).</translation>
+    </message>
+    <message>
+        <source>Stopped (%1) after %2</source>
+        <translation>Interrompido (%1) após %2</translation>
+    </message>
+    <message>
+        <source>internal error: %1</source>
+        <translation>erro interno: %1</translation>
+    </message>
+    <message>
+        <source>The scene changed: press Compute for this scene&apos;s diagram.</source>
+        <translation>A cena mudou: clique em Calcular para obter o diagrama desta cena.</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::NotesPanel</name>
+    <message>
+        <source>What to say about this scene (Markdown, saved with it)</source>
+        <translation>O que dizer sobre esta cena (Markdown, salvo com ela)</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Editar</translation>
+    </message>
+    <message>
+        <source># Title
+
+What the students should notice…</source>
+        <translation># Título
+
+O que os estudantes devem observar…</translation>
+    </message>
+    <message>
+        <source>&lt;p style=&apos;color:#777&apos;&gt;No note for this scene. Click &lt;b&gt;Edit&lt;/b&gt; to write one; it is saved with the scene.&lt;/p&gt;</source>
+        <translation>&lt;p style=&apos;color:#777&apos;&gt;Nenhuma nota para esta cena. Clique em &lt;b&gt;Editar&lt;/b&gt; para escrever uma; ela é salva com a cena.&lt;/p&gt;</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::ParametersPanel</name>
+    <message>
+        <source>Chaplygin sleigh</source>
+        <translation>Trenó de Chaplygin</translation>
+    </message>
+    <message>
+        <source>Rolling disk (App. A)</source>
+        <translation>Disco rolante (Apêndice A)</translation>
+    </message>
+    <message>
+        <source>Two-wheeled carriage (App. B)</source>
+        <translation>Carrinho de duas rodas (Apêndice B)</translation>
+    </message>
+    <message>
+        <source>The Chaplygin system; each reduces to a sleigh with m_eff, a and b</source>
+        <translation>O sistema de Chaplygin; cada um se reduz a um trenó com m_eff, a e b</translation>
+    </message>
+    <message>
+        <source>&amp;System</source>
+        <translation>&amp;Sistema</translation>
+    </message>
+    <message>
+        <source>enter b, derive I</source>
+        <translation>informar b, deduzir I</translation>
+    </message>
+    <message>
+        <source>enter I, derive b</source>
+        <translation>informar I, deduzir b</translation>
+    </message>
+    <message>
+        <source>b² = a² + I/m: give the radius of gyration b [m] or the inertia I [kg m²]</source>
+        <translation>b² = a² + I/m: informe o raio de giração b [m] ou o momento de inércia I [kg m²]</translation>
+    </message>
+    <message>
+        <source>&amp;Gyration</source>
+        <translation>&amp;Giração</translation>
+    </message>
+    <message>
+        <source>What the control law uses: effective mass [kg], CM offset a [m], radius of gyration b about P [m], inertia I about the CM [kg m²]</source>
+        <translation>O que a lei de controle usa: massa efetiva [kg], deslocamento a do CM [m], raio de giração b em relação a P [m], momento de inércia I em relação ao CM [kg m²]</translation>
+    </message>
+    <message>
+        <source>constant kinetic energy (v_T)</source>
+        <translation>energia cinética constante (v_T)</translation>
+    </message>
+    <message>
+        <source>constant speed along the path (v_s)</source>
+        <translation>velocidade constante ao longo do caminho (v_s)</translation>
+    </message>
+    <message>
+        <source>Energy: T = m v_T²/2 fixed (sec. 4); speed: ds/dt = v_s fixed (App. C)</source>
+        <translation>Energia: T = m v_T²/2 fixa (seção 4); velocidade: ds/dt = v_s fixa (Apêndice C)</translation>
+    </message>
+    <message>
+        <source>&amp;Mode</source>
+        <translation>&amp;Modo</translation>
+    </message>
+    <message>
+        <source>v_T = √(2T/m_eff), the speed the kinetic energy is worth</source>
+        <translation>v_T = √(2T/m_eff), a velocidade que corresponde à energia cinética</translation>
+    </message>
+    <message>
+        <source>v_s, the constant speed of P along the path</source>
+        <translation>v_s, a velocidade constante de P ao longo do caminho</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>velocidade</translation>
+    </message>
+    <message>
+        <source>(no valid system)</source>
+        <translation>(nenhum sistema válido)</translation>
+    </message>
+    <message>
+        <source>Change %1 to %2</source>
+        <translation>Alterar %1 para %2</translation>
+    </message>
+    <message>
+        <source>Choose the %1</source>
+        <translation>Escolher o %1</translation>
+    </message>
+    <message>
+        <source>Enter I instead of b</source>
+        <translation>Informar I em vez de b</translation>
+    </message>
+    <message>
+        <source>Enter b instead of I</source>
+        <translation>Informar b em vez de I</translation>
+    </message>
+    <message>
+        <source>Constant energy</source>
+        <translation>Energia constante</translation>
+    </message>
+    <message>
+        <source>Constant speed</source>
+        <translation>Velocidade constante</translation>
+    </message>
+    <message>
+        <source>half-axle a (wheels at ±a across the heading)</source>
+        <translation>semieixo a (rodas em ±a, transversais à direção)</translation>
+    </message>
+    <message>
+        <source>wheel mass m</source>
+        <translation>massa da roda m</translation>
+    </message>
+    <message>
+        <source>body&apos;s moment of inertia I about the axle&apos;s centre</source>
+        <translation>momento de inércia I do corpo em relação ao centro do eixo</translation>
+    </message>
+    <message>
+        <source>mass m</source>
+        <translation>massa m</translation>
+    </message>
+    <message>
+        <source>CM offset a</source>
+        <translation>deslocamento a do CM</translation>
+    </message>
+    <message>
+        <source>gyration radius b about P</source>
+        <translation>raio de giração b em relação a P</translation>
+    </message>
+    <message>
+        <source>moment of inertia I about the CM</source>
+        <translation>momento de inércia I em relação ao CM</translation>
+    </message>
+    <message>
+        <source>wheel radius R</source>
+        <translation>raio da roda R</translation>
+    </message>
+    <message>
+        <source>wheel inertia I1 about its axle</source>
+        <translation>inércia da roda I1 em relação ao seu eixo</translation>
+    </message>
+    <message>
+        <source>wheel inertia I2 about a diameter</source>
+        <translation>inércia da roda I2 em relação a um diâmetro</translation>
+    </message>
+    <message>
+        <source>carriage body mass M</source>
+        <translation>massa do corpo do carrinho M</translation>
+    </message>
+    <message>
+        <source>m_eff = %1 kg, CM offset = %2 m, b = %3 m, I about the CM = %4 kg m²</source>
+        <translation>m_eff = %1 kg, deslocamento do CM = %2 m, b = %3 m, I em relação ao CM = %4 kg m²</translation>
+    </message>
+    <message>
+        <source>invalid: %1</source>
+        <translation>inválido: %1</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::PathPanel</name>
+    <message>
+        <source>Preset (the paper&apos;s examples)</source>
+        <translation>Predefinição (os exemplos do artigo)</translation>
+    </message>
+    <message>
+        <source>(choose a preset)</source>
+        <translation>(escolha uma predefinição)</translation>
+    </message>
+    <message>
+        <source>Load one of the paper&apos;s four examples with the paper&apos;s parameters</source>
+        <translation>Carregar um dos quatro exemplos do artigo com os parâmetros do artigo</translation>
+    </message>
+    <message>
+        <source>Typed path</source>
+        <translation>Caminho digitado</translation>
+    </message>
+    <message>
+        <source>graph y(x)</source>
+        <translation>gráfico y(x)</translation>
+    </message>
+    <message>
+        <source>parametric x(u), y(u)</source>
+        <translation>paramétrico x(u), y(u)</translation>
+    </message>
+    <message>
+        <source>y as a function of x [m], e.g. -sin(x) or 0.5*x + 1; press Enter to apply</source>
+        <translation>y como função de x [m], p. ex. -sin(x) ou 0.5*x + 1; pressione Enter para aplicar</translation>
+    </message>
+    <message>
+        <source>y(x) =</source>
+        <translation>y(x) =</translation>
+    </message>
+    <message>
+        <source>x as a function of u [m], e.g. 2*cos(u)</source>
+        <translation>x como função de u [m], p. ex. 2*cos(u)</translation>
+    </message>
+    <message>
+        <source>x(u) =</source>
+        <translation>x(u) =</translation>
+    </message>
+    <message>
+        <source>y as a function of u [m], e.g. 2*sin(u)</source>
+        <translation>y como função de u [m], p. ex. 2*sin(u)</translation>
+    </message>
+    <message>
+        <source>y(u) =</source>
+        <translation>y(u) =</translation>
+    </message>
+    <message>
+        <source>x from, to</source>
+        <translation>x de, até</translation>
+    </message>
+    <message>
+        <source>&amp;Apply path</source>
+        <translation>&amp;Aplicar caminho</translation>
+    </message>
+    <message>
+        <source>Tabulate the typed path (Enter in a field does the same)</source>
+        <translation>Tabular o caminho digitado (Enter em um campo faz o mesmo)</translation>
+    </message>
+    <message>
+        <source>Drawn path</source>
+        <translation>Caminho desenhado</translation>
+    </message>
+    <message>
+        <source>&amp;Draw on the canvas</source>
+        <translation>&amp;Desenhar na tela de desenho</translation>
+    </message>
+    <message>
+        <source>Press and drag on the canvas to draw a new path; it is sampled and smoothed</source>
+        <translation>Pressione e arraste na tela de desenho para desenhar um novo caminho; ele é amostrado e suavizado</translation>
+    </message>
+    <message>
+        <source>smooth (spline through the points)</source>
+        <translation>suave (spline pelos pontos)</translation>
+    </message>
+    <message>
+        <source>pivot (straight segments, turn in place)</source>
+        <translation>pivô (segmentos retos, giro no lugar)</translation>
+    </message>
+    <message>
+        <source>How a drawn path&apos;s corners are followed</source>
+        <translation>Como os cantos de um caminho desenhado são seguidos</translation>
+    </message>
+    <message>
+        <source>Smooth corners: spline bandwidth in point spacings (0 passes through every point)</source>
+        <translation>Cantos suaves: largura de banda do spline em espaçamentos de pontos (0 passa por todos os pontos)</translation>
+    </message>
+    <message>
+        <source>Smoothing</source>
+        <translation>Suavização</translation>
+    </message>
+    <message>
+        <source>u from, to</source>
+        <translation>u de, até</translation>
+    </message>
+    <message>
+        <source>Current path: %1 drawn points, %2 corners</source>
+        <translation>Caminho atual: %1 pontos desenhados, cantos %2</translation>
+    </message>
+    <message>
+        <source>pivot</source>
+        <translation>em pivô</translation>
+    </message>
+    <message>
+        <source>smooth</source>
+        <translation>suaves</translation>
+    </message>
+    <message>
+        <source>The range of x [m] (graph) or of u (parametric), traversed from the first to the second; Enter applies the path</source>
+        <translation>O intervalo de x [m] (gráfico) ou de u (paramétrico), percorrido do primeiro ao segundo valor; Enter aplica o caminho</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::PinSet</name>
+    <message>
+        <source> (does not solve)</source>
+        <translation> (sem solução)</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::PlotsPanel</name>
+    <message>
+        <source> — click or drag to move the animation to that time</source>
+        <translation> — clique ou arraste para levar a animação a esse instante</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::PresentationMode</name>
+    <message>
+        <source>&amp;Presentation mode</source>
+        <translation>Modo de &amp;apresentação</translation>
+    </message>
+    <message>
+        <source>Presentation mode: full screen, large fonts and lines, high contrast (F11; Esc leaves)</source>
+        <translation>Modo de apresentação: tela cheia, fontes e linhas grandes, alto contraste (F11; Esc sai)</translation>
+    </message>
+    <message>
+        <source>Leave presentation mode</source>
+        <translation>Sair do modo de apresentação</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::SceneCanvas</name>
+    <message>
+        <source>controlled body and its trail (tracks the path)</source>
+        <translation>corpo controlado e seu rastro (segue o caminho)</translation>
+    </message>
+    <message>
+        <source>path (● start, □ end), coloured by its curvature κ: red right turn, grey straight, blue left turn</source>
+        <translation>caminho (● início, □ fim), colorido pela sua curvatura κ: vermelho curva à direita, cinza reta, azul curva à esquerda</translation>
+    </message>
+    <message>
+        <source>Draw mode: drag to draw a new path; drag a square to move a point, right-click it to delete it</source>
+        <translation>Modo de desenho: arraste para desenhar um novo caminho; arraste um quadrado para mover um ponto, clique com o botão direito para excluí-lo</translation>
+    </message>
+    <message>
+        <source>t = %1 s of %2 s    scale %3 px/m</source>
+        <translation>t = %1 s de %2 s    escala %3 px/m</translation>
+    </message>
+    <message>
+        <source>Wheel or +/-: zoom; drag or arrows: pan; F: fit scene; B: follow body; L: legend</source>
+        <translation>Roda ou +/-: zoom; arrastar ou setas: deslocar; F: ajustar a cena; B: seguir o corpo; L: legenda</translation>
+    </message>
+    <message>
+        <source>Scene canvas</source>
+        <translation>Tela de desenho da cena</translation>
+    </message>
+    <message>
+        <source>The animation: the prescribed path, the controlled body and the free motion from the same start</source>
+        <translation>A animação: o caminho prescrito, o corpo controlado e o movimento livre a partir do mesmo início</translation>
+    </message>
+    <message>
+        <source>free motion from the same start (ghost)</source>
+        <translation>movimento livre a partir do mesmo início (fantasma)</translation>
+    </message>
+    <message>
+        <source>genuine vakonomic body: λ obeys its own equation (21)</source>
+        <translation>corpo vakonômico genuíno: λ obedece à sua própria equação (21)</translation>
+    </message>
+    <message>
+        <source>path (● start, □ end)</source>
+        <translation>caminho (● início, □ fim)</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>of %1 s</source>
+        <translation>de %1 s</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::SceneDocument</name>
+    <message>
+        <source>internal error: %1</source>
+        <translation>erro interno: %1</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::SweepPanel</name>
+    <message>
+        <source>The parameter to vary; the others keep the scene&apos;s values</source>
+        <translation>O parâmetro a variar; os demais mantêm os valores da cena</translation>
+    </message>
+    <message>
+        <source>Run sweep</source>
+        <translation>Executar varredura</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Choose a parameter and a range, then Run sweep. Click a point to load its value.</source>
+        <translation>Escolha um parâmetro e um intervalo e clique em Executar varredura. Clique em um ponto para carregar o seu valor.</translation>
+    </message>
+    <message>
+        <source>from</source>
+        <translation>de</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>até</translation>
+    </message>
+    <message>
+        <source>values</source>
+        <translation>valores</translation>
+    </message>
+    <message>
+        <source>Plot</source>
+        <translation>Gráfico</translation>
+    </message>
+    <message>
+        <source>Sweeping %1 over %2 values…</source>
+        <translation>Varrendo %1 em %2 valores…</translation>
+    </message>
+    <message>
+        <source>The sweep failed: %1</source>
+        <translation>A varredura falhou: %1</translation>
+    </message>
+    <message>
+        <source>1 value of %1 from %2 to %3</source>
+        <translation>1 valor de %1 de %2 até %3</translation>
+    </message>
+    <message>
+        <source>%1 values of %2 from %3 to %4</source>
+        <translation>%1 valores de %2 de %3 até %4</translation>
+    </message>
+    <message>
+        <source>%1. Click a point to load it.</source>
+        <translation>%1. Clique em um ponto para carregá-lo.</translation>
+    </message>
+    <message>
+        <source>Cancelled (the scene changed) after %1.</source>
+        <translation>Cancelado (a cena mudou) após %1.</translation>
+    </message>
+    <message>
+        <source>Cancelled after %1. Click a point to load it.</source>
+        <translation>Cancelado após %1. Clique em um ponto para carregá-lo.</translation>
+    </message>
+    <message>
+        <source>Set %1 = %2 from the sweep</source>
+        <translation>Definir %1 = %2 a partir da varredura</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::TimelineBar</name>
+    <message>
+        <source>Timeline</source>
+        <translation>Linha do tempo</translation>
+    </message>
+    <message>
+        <source>Step &amp;back</source>
+        <translation>Passo para &amp;trás</translation>
+    </message>
+    <message>
+        <source>&amp;Play</source>
+        <translation>&amp;Reproduzir</translation>
+    </message>
+    <message>
+        <source>Play or pause (Space)</source>
+        <translation>Reproduzir ou pausar (Espaço)</translation>
+    </message>
+    <message>
+        <source>Step &amp;forward</source>
+        <translation>Passo para a &amp;frente</translation>
+    </message>
+    <message>
+        <source>Loop</source>
+        <translation>Repetir</translation>
+    </message>
+    <message>
+        <source>Start again at the end</source>
+        <translation>Recomeçar ao chegar ao fim</translation>
+    </message>
+    <message>
+        <source>Playback speed: simulated seconds per real second</source>
+        <translation>Velocidade de reprodução: segundos simulados por segundo real</translation>
+    </message>
+    <message>
+        <source>Scrub through time</source>
+        <translation>Percorrer o tempo</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pausar</translation>
+    </message>
+    <message>
+        <source> t = %1 s / %2 s</source>
+        <translation> t = %1 s / %2 s</translation>
+    </message>
+    <message>
+        <source>One frame back at the current speed (,); Shift+, one second</source>
+        <translation>Um quadro para trás na velocidade atual (,); Shift+, um segundo</translation>
+    </message>
+    <message>
+        <source>One frame forward at the current speed (.); Shift+. one second</source>
+        <translation>Um quadro para a frente na velocidade atual (.); Shift+. um segundo</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Tempo</translation>
+    </message>
+    <message>
+        <source>The animation time; arrows and Page Up/Down scrub</source>
+        <translation>O tempo da animação; as setas e Page Up/Down o percorrem</translation>
+    </message>
+    <message>
+        <source>Time read-out</source>
+        <translation>Leitura do tempo</translation>
+    </message>
+    <message>
+        <source>Go to the &amp;start</source>
+        <translation>Ir para o &amp;início</translation>
+    </message>
+    <message>
+        <source>Go to the &amp;end</source>
+        <translation>Ir para o fi&amp;m</translation>
+    </message>
+    <message>
+        <source>One second back</source>
+        <translation>Um segundo para trás</translation>
+    </message>
+    <message>
+        <source>One second forward</source>
+        <translation>Um segundo para a frente</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::VectorsMenu</name>
+    <message>
+        <source>&amp;Vectors</source>
+        <translation>&amp;Vetores</translation>
+    </message>
+    <message>
+        <source>Show %1</source>
+        <translation>Mostrar %1</translation>
+    </message>
+    <message>
+        <source>Hide %1</source>
+        <translation>Ocultar %1</translation>
+    </message>
+    <message>
+        <source>&amp;Longer arrows</source>
+        <translation>Setas mais &amp;longas</translation>
+    </message>
+    <message>
+        <source>&amp;Shorter arrows</source>
+        <translation>Setas mais &amp;curtas</translation>
+    </message>
+    <message>
+        <source>&amp;Automatic lengths</source>
+        <translation>Comprimentos &amp;automáticos</translation>
+    </message>
+    <message>
+        <source>Automatic arrow lengths</source>
+        <translation>Comprimentos automáticos das setas</translation>
+    </message>
+    <message>
+        <source>Arrow lengths ×%1</source>
+        <translation>Comprimentos das setas ×%1</translation>
+    </message>
+</context>
+</TS>
