@@ -1,6 +1,6 @@
 #pragma once
-#include "canvas/vector_layer.h"
 #include "canvas/canvas_style.h"
+#include "canvas/vector_layer.h"
 #include "paths/path_source.h"
 #include "scene/solution.h"
 

@@ -155,8 +155,7 @@ BENCHMARK_CAPTURE(BM_RebuildTimeLaw, catenary, std::string("catenary"))
 BENCHMARK_CAPTURE(BM_RebuildTimeLaw, sinusoid, std::string("sinusoid"))
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_RebuildTimeLaw, line, std::string("line"))->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(BM_RebuildTimeLaw, circle, std::string("circle"))
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_RebuildTimeLaw, circle, std::string("circle"))->Unit(benchmark::kMicrosecond);
 
 // the free motion's parameter-dependent part (FreeMotion over the catenary's 10 s)
 void BM_RebuildFreeMotion(benchmark::State& state) {
