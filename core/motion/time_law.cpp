@@ -74,6 +74,13 @@ TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
             continue;
         }
         const PathTable& table = *piece.table;
+        if (!energy && table.cuspEnds().end) {
+            const Curve& c = table.curve();
+            throw InputError("path at " + c.parameterName() + " = " +
+                                 formatNumber(c.parameterValue(table.cuspEnds().end->u)),
+                             "constant-speed mode cannot pass this cusp (sdot would have to jump "
+                             "from +v_s to -v_s); use the constant-energy mode");
+        }
         std::vector<double>& times = m_nodeTimes[k];
         times.resize(table.nodes().size());
         times[0] = t0;
@@ -215,6 +222,14 @@ double TimeLaw::rateAt(int piece, double u) const {
         const PathNode& n = table.nodes()[k];
         return rate(n.speed, n.kappa);
     }
+    return exactRate(table, u);
+}
+
+double TimeLaw::exactRate(const PathTable& table, double u) const {
+    const PathTable::CuspEnds& ends = table.cuspEnds();
+    const std::optional<Cusp>& cusp = u <= table.nodes().front().u ? ends.start : ends.end;
+    if (cusp && (u <= table.nodes().front().u || u >= table.nodes().back().u))
+        return m_params.system.b * std::fabs(cusp->turnRate) / m_params.speed; // ds = 0 there
     CurveGeometry g = geometryOf(table.curve().eval(u));
     return rate(g.speed, g.kappa);
 }
@@ -290,8 +305,7 @@ PathLocation TimeLaw::locateExact(double t) const {
     for (int iter = 0; iter < 40; ++iter) {
         double f = timeAtExact(piece, u) - t;
         (f > 0 ? b : a) = u;
-        CurveGeometry g = geometryOf(table.curve().eval(u));
-        double step = f / rate(g.speed, g.kappa);
+        double step = f / exactRate(table, u);
         if (std::fabs(step) <= 1e-15 * (std::fabs(u) + (hi.u - lo.u))) {
             u -= step;
             break;

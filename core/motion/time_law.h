@@ -71,7 +71,8 @@ class TimeLaw {
 
   private:
     struct Lazy;
-    double rate(double speed, double kappa) const; // dt/du
+    double rate(double speed, double kappa) const;            // dt/du
+    double exactRate(const PathTable& table, double u) const; // dt/du, the limit at a cusp
     void buildPanel(int piece, int k, TimePanel& out) const;
     PathLocation curveLocation(int piece, int panel, double u) const;
     std::shared_ptr<const Path> m_path;
