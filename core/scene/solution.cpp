@@ -131,8 +131,10 @@ Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,
         m_models.inversion = "Newton on the interpolated t(u)";
     }
     m_models.control = "closed form in kappa, dkappa/ds and phi (Psi = atan2(1, b kappa))";
-    if (const std::size_t cusps = m_path->pieces().size() - 1;
-        m_path->pieces().back().table && m_path->pieces().back().table->cuspEnds().start)
+    int cusps = 0;
+    for (const PathPiece& p : m_path->pieces())
+        cusps += p.kind == PathPiece::Kind::Curve && p.table->cuspEnds().end ? 1 : 0;
+    if (cusps > 0)
         m_models.control += "; through " + std::to_string(cusps) +
                             " cusp(s): backing up between them (sdot < 0, Psi = atan2(sdot, b "
                             "phidot) continued), the limits sdot = 0, |phidot| = v_T/b at each";
