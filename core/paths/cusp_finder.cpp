@@ -8,7 +8,7 @@
 namespace chaplygin {
 namespace {
 
-constexpr int kSamples = 2048;
+constexpr int kSamples = 256; // a cusp is the sample nearest to it, a discrete minimum of |r'|^2
 constexpr double kZeroSpeed = 1e-12; // |r'| at the cusp, relative to the largest |r'|
 constexpr double kZeroAccel = 1e-8;  // |r''|, relative to the largest |r'| per unit u
 constexpr double kZeroCross = 1e-10; // r'' x r''', relative to |r''| |r'''|
@@ -57,7 +57,9 @@ std::vector<Cusp> findCusps(const Curve& c) {
         return cusps; // no direction anywhere: PathTable names the place
     const double scale = std::sqrt(qMax);
     for (int i = 1; i < kSamples; ++i) {
-        if (!(q[i] <= q[i - 1] && q[i] <= q[i + 1]) || !std::isfinite(q[i]))
+        // near a cusp |r'|^2 ~ (u - u*)^2 |r''|^2: the nearest sample is at most a ninth of the
+        // larger neighbour; a slow but moving stretch is not a candidate
+        if (!(q[i] <= q[i - 1] && q[i] <= q[i + 1] && q[i] <= 0.25 * std::max(q[i - 1], q[i + 1])))
             continue;
         double u = q[i] == 0 ? us[i] : refineMinimum(c, us[i - 1], us[i + 1], us[i]);
         CurvePoint p = c.eval(u);
