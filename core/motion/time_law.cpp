@@ -193,31 +193,37 @@ double TimeLaw::timeAtExact(int piece, double u) const {
     return t;
 }
 
-double TimeLaw::timeAt(int piece, double u) const {
+TimeLaw::CertifiedPanel TimeLaw::certifiedPanelOf(int piece, double u) const {
     const PathTable& table = *m_path->pieces()[piece].table;
-    int k = table.panelOf(u);
-    if (interpolated(piece)) {
-        const TimePanel& tp = timePanel(piece, k);
-        if (tp.certified) {
-            const double a = table.nodes()[k].u, b = table.nodes()[k + 1].u;
-            double f[2];
-            cheb::evaluateMany(tp.c, (2 * u - (a + b)) / (b - a), f);
-            return m_nodeTimes[piece][k] + f[0];
-        }
-    }
-    return timeAtExact(piece, u);
+    CertifiedPanel out;
+    out.index = table.panelOf(u);
+    if (!interpolated(piece))
+        return out;
+    const TimePanel& tp = timePanel(piece, out.index);
+    if (!tp.certified)
+        return out;
+    const double a = table.nodes()[out.index].u, b = table.nodes()[out.index + 1].u;
+    out.panel = &tp;
+    out.xi = (2 * u - (a + b)) / (b - a);
+    out.halfWidth = 0.5 * (b - a);
+    return out;
+}
+
+double TimeLaw::timeAt(int piece, double u) const {
+    CertifiedPanel p = certifiedPanelOf(piece, u);
+    if (!p.panel)
+        return timeAtExact(piece, u);
+    double f[2];
+    cheb::evaluateMany(p.panel->c, p.xi, f);
+    return m_nodeTimes[piece][p.index] + f[0];
 }
 
 double TimeLaw::rateAt(int piece, double u) const {
+    CertifiedPanel p = certifiedPanelOf(piece, u);
+    if (p.panel)
+        return cheb::evaluateOne(p.panel->c, 1, p.xi) / p.halfWidth;
     const PathTable& table = *m_path->pieces()[piece].table;
-    int k = table.panelOf(u);
-    if (interpolated(piece)) {
-        const TimePanel& tp = timePanel(piece, k);
-        if (tp.certified) {
-            const double a = table.nodes()[k].u, b = table.nodes()[k + 1].u;
-            return cheb::evaluateOne(tp.c, 1, (2 * u - (a + b)) / (b - a)) * 2 / (b - a);
-        }
-    }
+    const int k = p.index;
     if (table.uniform()) {
         const PathNode& n = table.nodes()[k];
         return rate(n.speed, n.kappa);
