@@ -349,6 +349,7 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends)
         }
         m_panels.push_back(d.gauss);
         m_uniform = true;
+        indexNodes();
         return;
     }
     // a coarse look at the whole curve sets the scales of the refinement
@@ -451,6 +452,7 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends)
         m_nodes.push_back(n);
         m_panels.push_back(leaf.gauss);
     }
+    indexNodes();
     // the interpolated phi starts from atan2 at the panel's start; add the node's 2 pi n
     for (std::size_t k = 0; k < m_cheb.size(); ++k)
         m_cheb[k].c[0][kPhi] += wraps[k];
@@ -471,11 +473,27 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends)
     }
 }
 
+void PathTable::indexNodes() {
+    m_nodeU.clear();
+    m_nodeU.reserve(m_nodes.size());
+    for (const PathNode& n : m_nodes)
+        m_nodeU.push_back(n.u);
+}
+
 int PathTable::panelOf(double u) const {
-    auto it = std::upper_bound(m_nodes.begin(), m_nodes.end(), u,
-                               [](double v, const PathNode& n) { return v < n.u; });
-    int k = static_cast<int>(it - m_nodes.begin()) - 1;
-    return std::clamp(k, 0, static_cast<int>(m_panels.size()) - 1);
+    // an integrator asks for nearby u in turn: try this thread's last answer first
+    thread_local const PathTable* lastTable = nullptr;
+    thread_local std::size_t lastPanel = 0;
+    if (lastTable == this && lastPanel + 1 < m_nodeU.size() && u >= m_nodeU[lastPanel] &&
+        u < m_nodeU[lastPanel + 1])
+        return static_cast<int>(lastPanel);
+    // over the contiguous u of the nodes: the lookup stays in a few cache lines
+    auto it = std::upper_bound(m_nodeU.begin(), m_nodeU.end(), u);
+    int k = static_cast<int>(it - m_nodeU.begin()) - 1;
+    k = std::clamp(k, 0, static_cast<int>(m_panels.size()) - 1);
+    lastTable = this;
+    lastPanel = static_cast<std::size_t>(k);
+    return k;
 }
 
 PathTable::Partial PathTable::partial(int panel, double u) const {

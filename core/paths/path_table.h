@@ -94,8 +94,10 @@ class PathTable {
 
   private:
     std::shared_ptr<const Curve> m_curve;
+    void indexNodes();
     CuspEnds m_ends;
     std::vector<PathNode> m_nodes;
+    std::vector<double> m_nodeU; // m_nodes[k].u, contiguous for panelOf
     std::vector<GaussPanel> m_panels;
     bool m_uniform = false;
     std::vector<ChebPanel> m_cheb;
