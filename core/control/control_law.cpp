@@ -41,7 +41,7 @@ ControlState controlOnCurve(const ControlParams& p, double kappa, double dkappa,
     ControlState c;
     const double bk = b * kappa;
     const double root = std::sqrt(1 + bk * bk);
-    // tan(Psi) = rho/b, eq. (45); written as Psi = atan2(1, b kappa) in (0, pi), finite at
+    // tan(Psi) = rho/b, paper (45); written as Psi = atan2(1, b kappa) in (0, pi), finite at
     // inflections
     // backing up: Psi = atan2(sdot, b phidot) = atan2(-1, -b kappa) with phidot = kappa sdot
     c.psi = std::atan2(static_cast<double>(direction), direction * bk) + psiOffset;
