@@ -12,6 +12,8 @@
 #include <QStatusBar>
 #include <QtTest>
 
+#include <cmath>
+
 using namespace chaplygin;
 using namespace chaplygin::ui;
 
@@ -24,6 +26,8 @@ class TestWindowLayout : public QObject, private test::WindowFixture {
     void cleanup() { closeWindow(); }
 
     void firstStartSizedToScreen();
+    void firstStartBalancedOnceShown();
+    void narrowedWindowKeepsCanvasUsable();
     void noDockScrollsAt1280x800();
     void usableCanvasAt1024x768();
     void legendOutsideDrawingArea();
@@ -46,6 +50,42 @@ void TestWindowLayout::firstStartSizedToScreen() {
         QVERIFY(window.windowState() & Qt::WindowMaximized);
     else
         QCOMPARE(window.size(), expected.geometry.size());
+}
+
+void TestWindowLayout::firstStartBalancedOnceShown() {
+    // the dock sizes of a first start are those balanceDocks gives the shown window (before it
+    // is shown the docks have no geometry to resize)
+    QSettings().clear();
+    MainWindow window(true);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QApplication::processEvents();
+    auto* plots = window.findChild<QDockWidget*>(QStringLiteral("plotsDock"));
+    auto* path = window.findChild<QDockWidget*>(QStringLiteral("pathDock"));
+    const int plotsHeight = plots->height(), pathWidth = path->width();
+    window.balanceDocks();
+    QApplication::processEvents();
+    QVERIFY2(
+        std::abs(plots->height() - plotsHeight) <= 2,
+        qPrintable(
+            QStringLiteral("plots %1 px, balanced %2 px").arg(plotsHeight).arg(plots->height())));
+    QVERIFY2(
+        std::abs(path->width() - pathWidth) <= 2,
+        qPrintable(QStringLiteral("path %1 px, balanced %2 px").arg(pathWidth).arg(path->width())));
+}
+
+void TestWindowLayout::narrowedWindowKeepsCanvasUsable() {
+    // a window narrowed below 1200 px while it runs (a projector plugged in) tabs the right-hand
+    // docks on the left as a narrow first start does
+    m_window->resize(1024, 768);
+    QApplication::processEvents();
+    QCOMPARE(m_window->dockWidgetArea(dock("accuracyDock")), Qt::LeftDockWidgetArea);
+    QTRY_VERIFY2(m_window->canvas()->width() >= 480,
+                 qPrintable(QString::number(m_window->canvas()->width())));
+    // widened again, the docks stay where they are (the user may have placed them)
+    m_window->resize(1280, 800);
+    QApplication::processEvents();
+    QCOMPARE(m_window->dockWidgetArea(dock("accuracyDock")), Qt::LeftDockWidgetArea);
 }
 
 void TestWindowLayout::noDockScrollsAt1280x800() {

@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 #include <QDockWidget>
 #include <QMainWindow>
+#include <QResizeEvent>
 #include <QScrollArea>
 
 #include <algorithm>
@@ -15,6 +16,9 @@ class DockLayout {
 };
 
 namespace {
+
+// narrower windows tab the right-hand docks on the left
+constexpr int kNarrow = 1200;
 
 QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content,
                       QMainWindow* parent) {
@@ -68,7 +72,7 @@ Docks placeDocks(QMainWindow* window, const DockPanels& panels) {
 
 void balanceDocks(QMainWindow* window, const Docks& docks) {
     const int width = window->width(), height = window->height();
-    if (width < 1200) {
+    if (width < kNarrow) {
         QDockWidget* last = docks.parameters;
         for (QDockWidget* dock : window->findChildren<QDockWidget*>()) {
             if (window->dockWidgetArea(dock) != Qt::RightDockWidgetArea || dock->isFloating())
@@ -83,6 +87,29 @@ void balanceDocks(QMainWindow* window, const Docks& docks) {
     window->resizeDocks({docks.plots}, {height < 900 ? std::max(200, height / 4) : height / 3},
                         Qt::Vertical);
     window->resizeDocks({docks.path}, {std::max(360, width / 4)}, Qt::Horizontal);
+}
+
+DockBalancer::DockBalancer(QMainWindow* window, const Docks& docks, bool balanceWhenShown)
+    : QObject(window), m_window(window), m_docks(docks), m_balanceWhenShown(balanceWhenShown) {
+    window->installEventFilter(this);
+}
+
+bool DockBalancer::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_window && event->type() == QEvent::Show && m_balanceWhenShown) {
+        m_balanceWhenShown = false;
+        balanceLater();
+    } else if (watched == m_window && event->type() == QEvent::Resize) {
+        auto* resize = static_cast<QResizeEvent*>(event);
+        if (resize->oldSize().width() >= kNarrow && resize->size().width() < kNarrow)
+            balanceLater();
+    }
+    return false;
+}
+
+// after the event, once the window's layout has its new geometry
+void DockBalancer::balanceLater() {
+    QMetaObject::invokeMethod(
+        this, [this] { balanceDocks(m_window, m_docks); }, Qt::QueuedConnection);
 }
 
 void bringDockForward(QMainWindow* window, QDockWidget* dock, int minimumHeight) {

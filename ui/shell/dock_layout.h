@@ -1,4 +1,6 @@
 #pragma once
+#include <QObject>
+
 class QDockWidget;
 class QMainWindow;
 class QWidget;
@@ -35,6 +37,23 @@ Docks placeDocks(QMainWindow* window, const DockPanels& panels);
 /// the right-hand docks (accuracy, notes, equations) join the left tabs after the parameters, so
 /// the canvas keeps its width (docs/user-guide.md, small screens).
 void balanceDocks(QMainWindow* window, const Docks& docks);
+
+/// Keeps a window's docks balanced (balanceDocks): once when the window is first shown, when
+/// asked to (before that the docks have no geometry to resize), and whenever the window is
+/// narrowed below 1200 px while it runs. Widening leaves the docks where they are.
+class DockBalancer : public QObject {
+    Q_OBJECT
+  public:
+    DockBalancer(QMainWindow* window, const Docks& docks, bool balanceWhenShown);
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+  private:
+    void balanceLater();
+
+    QMainWindow* m_window;
+    Docks m_docks;
+    bool m_balanceWhenShown;
+};
 
 /// Shows and raises dock; a minimumHeight > 0 makes it at least that tall.
 void bringDockForward(QMainWindow* window, QDockWidget* dock, int minimumHeight = 0);

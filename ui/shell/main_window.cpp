@@ -116,8 +116,10 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
 
     if (!m_useSettings)
         resize(1280, 800);
-    if (!m_useSettings || !restoreWindowLayout(this))
+    const bool firstStart = !m_useSettings || !restoreWindowLayout(this);
+    if (firstStart)
         balanceDocks();
+    new DockBalancer(this, m_docks, firstStart);
     loadScene(presetScene("sinusoid"));
 }
 
