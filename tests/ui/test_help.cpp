@@ -9,6 +9,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
+#include <QScrollBar>
 #include <QTextBlock>
 #include <QTextBrowser>
 #include <QtTest>
@@ -27,6 +28,9 @@ class TestHelp : public QObject, private test::WindowFixture {
     void aboutNamesVersionLicenceCreditsPaper();
     void helpRendersDocsFromResources();
     void f1OpensSectionOfFocus();
+    void sectionHeadingAtTheTop();
+    void picturesFitTheWidth();
+    void everyPictureOfTheHelpLoads();
 };
 
 void TestHelp::aboutNamesVersionLicenceCreditsPaper() {
@@ -80,6 +84,58 @@ void TestHelp::f1OpensSectionOfFocus() {
     m_window->canvas()->setFocus();
     m_window->showContextHelp();
     QVERIFY(help->browser()->textCursor().block().text().contains(QStringLiteral("Animation")));
+}
+
+void TestHelp::sectionHeadingAtTheTop() {
+    // F1 shows the section from its heading down, not the end of the section before it
+    for (const char* section : {"Animation", "Plots", "Presentation mode"}) {
+        HelpWindow* help =
+            m_window->showHelp(QStringLiteral("user-guide.md"), QString::fromLatin1(section));
+        QApplication::processEvents();
+        QTextBlock heading = help->browser()->textCursor().block();
+        QVERIFY2(heading.text().contains(QString::fromLatin1(section)), section);
+        const int top = help->browser()->cursorRect().top();
+        QVERIFY2(
+            top >= 0 && top < 3 * help->browser()->fontMetrics().height(),
+            qPrintable(QStringLiteral("%1 at %2 px").arg(QString::fromLatin1(section)).arg(top)));
+    }
+}
+
+void TestHelp::picturesFitTheWidth() {
+    // the user guide's screenshots (1280 px and wider) are shown scaled to the window, no
+    // sideways scrolling; narrowed, the window scales them again
+    HelpWindow* help = m_window->showHelp(QStringLiteral("user-guide.md"));
+    for (QSize size : {QSize(900, 700), QSize(600, 500)}) {
+        help->resize(size);
+        QApplication::processEvents();
+        QTRY_COMPARE(help->browser()->horizontalScrollBar()->maximum(), 0);
+    }
+    int pictures = 0;
+    for (QTextBlock b = help->browser()->document()->begin(); b.isValid(); b = b.next())
+        for (auto it = b.begin(); !it.atEnd(); ++it)
+            pictures += it.fragment().charFormat().isImageFormat() ? 1 : 0;
+    QVERIFY(pictures >= 3);
+}
+
+void TestHelp::everyPictureOfTheHelpLoads() {
+    // each picture a help document shows is compiled in (a missing one is drawn as a broken icon)
+    HelpWindow* help = m_window->showHelp();
+    int pictures = 0;
+    for (const QString& doc : HelpWindow::documents()) {
+        QVERIFY(help->showTopic(doc));
+        QTextDocument* text = help->browser()->document();
+        for (QTextBlock b = text->begin(); b.isValid(); b = b.next())
+            for (auto it = b.begin(); !it.atEnd(); ++it) {
+                const QTextCharFormat format = it.fragment().charFormat();
+                if (!format.isImageFormat())
+                    continue;
+                const QString name = format.toImageFormat().name();
+                ++pictures;
+                QVERIFY2(!QImage(QStringLiteral(":/help/") + name).isNull(),
+                         qPrintable(QStringLiteral("%1: %2").arg(doc, name)));
+            }
+    }
+    QVERIFY(pictures >= 10);
 }
 
 QTEST_MAIN(TestHelp)
