@@ -46,7 +46,8 @@ void TestPresentation::presentationEntersAndLeaves() {
     QTest::keyClick(m_window.get(), Qt::Key_F11);
     QVERIFY(p->isActive());
     QVERIFY(m_window->windowState() & Qt::WindowFullScreen);
-    for (const char* name : {"pathDock", "parametersDock", "methodsDock", "accuracyDock"})
+    for (const char* name :
+         {"pathDock", "parametersDock", "methodsDock", "sweepDock", "accuracyDock"})
         QVERIFY2(!dock(name)->isVisible(), name);
     QVERIFY(dock("plotsDock")->isVisible());
     QVERIFY(m_window->font().pointSizeF() >= 1.6 * font - 1e-9);

@@ -70,7 +70,8 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     statusBar()->addWidget(m_status, 1);
     m_presentation = new PresentationMode(
         this, m_canvas, m_plots,
-        {m_docks.path, m_docks.parameters, m_docks.methods, m_docks.accuracy}, {m_timeline});
+        {m_docks.path, m_docks.parameters, m_docks.methods, m_docks.sweep, m_docks.accuracy},
+        {m_timeline});
     m_timeline->addAction(m_presentation->toggleAction());
     new SpaceToPlay(this, m_timeline->playAction());
 
