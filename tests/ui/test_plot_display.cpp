@@ -5,6 +5,7 @@
 #include "plots/plot_context_menu.h"
 #include "plots/plot_figures.h"
 #include "plots/plots_panel.h"
+#include "shell/presentation_mode.h"
 #include "window_fixture.h"
 
 #include <QFile>
@@ -30,6 +31,7 @@ class TestPlotDisplay : public QObject, private test::WindowFixture {
     void plotContextMenuExports();
     void plotTitleDoesNotOverlapTicks();
     void legendsAreCompact();
+    void legendEntriesWholeWhenNarrowOrPresenting();
     void methodsTitlesAboveAndLegendShort();
 };
 
@@ -176,6 +178,42 @@ void TestPlotDisplay::methodsTitlesAboveAndLegendShort() {
             qPrintable(
                 QStringLiteral("%1 entries for %2 methods").arg(legend->itemCount()).arg(methods)));
     }
+}
+
+void TestPlotDisplay::legendEntriesWholeWhenNarrowOrPresenting() {
+    // at 1024x768 and in presentation mode (fonts x1.6) the legend under each plot wraps into
+    // rows instead of cutting its last entries off ("controlle", "vakonom")
+    auto check = [this](const char* when) {
+        QApplication::processEvents();
+        for (int i = 0; i < 4; ++i) {
+            QCustomPlot* plot = m_window->plotsPanel()->plot(i);
+            plot->replot();
+            QCPLegend* legend = nullptr;
+            for (QCPLayoutElement* e : plot->plotLayout()->elements(true))
+                if (auto* l = qobject_cast<QCPLegend*>(e))
+                    legend = l;
+            QVERIFY(legend);
+            QVERIFY2(legend->minimumOuterSizeHint().width() <= plot->width(),
+                     qPrintable(QStringLiteral("%1, plot %2: the legend needs %3 px of %4")
+                                    .arg(QLatin1String(when))
+                                    .arg(i)
+                                    .arg(legend->minimumOuterSizeHint().width())
+                                    .arg(plot->width())));
+            for (int k = 0; k < legend->itemCount(); ++k) // wrapped: some cells are empty
+                if (QCPAbstractLegendItem* item = legend->item(k))
+                    QVERIFY(plot->rect().contains(item->outerRect()));
+        }
+    };
+    m_window->resize(1024, 768);
+    m_window->balanceDocks();
+    check("1024x768");
+    m_window->resize(1280, 800);
+    m_window->balanceDocks();
+    m_window->presentation()->setFullScreen(false);
+    m_window->presentation()->setActive(true);
+    check("presentation at 1280x800");
+    m_window->presentation()->setActive(false);
+    check("1280x800");
 }
 
 QTEST_MAIN(TestPlotDisplay)
