@@ -11,7 +11,7 @@ namespace {
 
 constexpr int kInitialPanels = 32;
 constexpr int kMaxDepth = 40;
-constexpr std::size_t kMaxPanels = 200000;
+constexpr std::size_t kMaxPanels = 50000; // y = sin(20 x) on [0, 100] needs 42,000
 constexpr double kPanelTolerance = 1e-11; // parent-versus-halves difference, relative to the whole
 constexpr double kRounding = 1e-15;       // the same difference at rounding: keep the parent
 constexpr double kMaxTurnPerPanel = 1.0;  // rad; keeps the unwrapping of phi unambiguous
@@ -98,6 +98,7 @@ struct Refiner {
     const Curve& curve;
     double lengthScale, totalWidth, lengthRef, weightedRef, stiffRef;
     std::vector<PanelData> leaves;
+    std::size_t splits = 0; // panels halved so far: the work, bounded like the leaves
 
     bool close(double coarse, double fine, double ref, double width) const {
         return std::fabs(coarse - fine) <= kPanelTolerance * ref * (width / totalWidth);
@@ -107,6 +108,7 @@ struct Refiner {
     }
 
     void refine(const PanelData& parent, int depth) {
+        ++splits;
         double mid = 0.5 * (parent.a + parent.b);
         PanelData left = computePanel(curve, parent.a, mid, lengthScale);
         PanelData right = computePanel(curve, mid, parent.b, lengthScale);
@@ -131,7 +133,7 @@ struct Refiner {
             leaves.push_back(left);
             leaves.push_back(right);
         } else {
-            if (depth >= kMaxDepth || leaves.size() > kMaxPanels)
+            if (depth >= kMaxDepth || leaves.size() > kMaxPanels || splits > kMaxPanels)
                 throw InputError(place(curve, mid),
                                  "the curvature varies too fast here to be tabulated "
                                  "(a singular point or a near-corner)");
@@ -395,7 +397,7 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends)
         weightedRef += initial.back().weighted;
         stiffRef += initial.back().stiff;
     }
-    Refiner refiner{c, lengthScale, u1 - u0, lengthRef, weightedRef, stiffRef, {}};
+    Refiner refiner{c, lengthScale, u1 - u0, lengthRef, weightedRef, stiffRef, {}, 0};
     for (const PanelData& p : initial)
         refiner.refine(p, 0);
 

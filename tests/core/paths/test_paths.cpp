@@ -105,6 +105,16 @@ TEST(Paths, HeadingIsUnwrappedAroundSeveralTurns) {
     EXPECT_TRUE(path->pieces().front().table->uniform());
 }
 
+// A curve whose curvature the table cannot resolve within its budget (50,000 panel halvings) is
+// refused quickly, naming a place: a cosine 3,500 m tall and 0.8 m wide has tips of radius 4 um.
+// y = sin(20 x) on [0, 100] (42,000 panels) stays within it.
+TEST(Paths, UnresolvableCurvatureRefusedWithinTheBudget) {
+    const std::string e = errorOf(graph("exp(3*e)*cos(3*e*x)", -1, 1));
+    EXPECT_NE(e.find("path at x = "), std::string::npos) << e;
+    EXPECT_NE(e.find("the curvature varies too fast"), std::string::npos) << e;
+    EXPECT_EQ(errorOf(graph("sin(20*x)", 0, 30)), "");
+}
+
 TEST(Paths, DomainProblemsNameTheirPlace) {
     EXPECT_NE(errorOf(graph("1/x", -1, 1)).find("path at x = "), std::string::npos)
         << errorOf(graph("1/x", -1, 1));
