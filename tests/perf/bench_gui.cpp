@@ -105,8 +105,9 @@ BENCHMARK(BM_StageDrawPlots)->Unit(benchmark::kMillisecond);
 class PaintCounter : public QObject {
   public:
     int count = 0;
+    QEvent::Type type = QEvent::Paint;
     bool eventFilter(QObject*, QEvent* e) override {
-        count += e->type() == QEvent::Paint ? 1 : 0;
+        count += e->type() == type ? 1 : 0;
         return false;
     }
 };
@@ -140,7 +141,9 @@ void BM_AnimationFrame(benchmark::State& state) {
     playback->setLoop(true);
     playback->setSpeedFactor(double(state.range(0)));    // x1, or x4: every cursor moves by pixels
     window.canvas()->setFollowBody(state.range(1) != 0); // following redraws the cached background
-    PaintCounter canvasPaints, plotPaints;
+    PaintCounter canvasPaints, plotPaints, layouts;
+    layouts.type = QEvent::LayoutRequest;
+    window.installEventFilter(&layouts);
     window.canvas()->installEventFilter(&canvasPaints);
     for (int i = 0; i < 4; ++i)
         window.plotsPanel()->plot(i)->installEventFilter(&plotPaints);
@@ -158,6 +161,8 @@ void BM_AnimationFrame(benchmark::State& state) {
         benchmark::Counter(canvasPaints.count, benchmark::Counter::kAvgIterations);
     state.counters["plot_paints"] =
         benchmark::Counter(plotPaints.count, benchmark::Counter::kAvgIterations);
+    state.counters["layouts"] =
+        benchmark::Counter(layouts.count, benchmark::Counter::kAvgIterations);
     state.counters["canvas_w"] = window.canvas()->width();
     state.counters["arrows"] =
         double(window.canvas()->vectorLayer().controlledShapes().arrows.size());
