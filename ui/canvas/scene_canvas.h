@@ -1,4 +1,5 @@
 #pragma once
+#include "canvas/body_sprites.h"
 #include "canvas/canvas_style.h"
 #include "canvas/vector_layer.h"
 #include "paths/path_source.h"
@@ -120,6 +121,7 @@ class SceneCanvas : public QWidget {
     BackgroundKey m_backgroundKey;
     QPixmap m_background; // grid, path and legend
     VectorLayer m_vectors;
+    BodySprites m_bodies;
     CanvasStyle m_style;
     bool m_legendVisible = true;
     int topBandPx() const;
