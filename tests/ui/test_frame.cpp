@@ -2,13 +2,17 @@
 // the cached layers draw what direct drawing draws. Offscreen, through the real window.
 #include "canvas/body_sprites.h"
 #include "canvas/scene_canvas.h"
+#include "document/scene_document.h"
 #include "gui_test_support.h"
+#include "scene/presets.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
 #include "shell/timeline_bar.h"
 
 #include <QLabel>
+#include <QPaintEvent>
 #include <QPainter>
+#include <QScreen>
 #include <QtTest>
 
 #include <cmath>
@@ -33,6 +37,41 @@ class EventCounter : public QObject {
   private:
     QEvent::Type m_type;
 };
+
+// the union of the regions of the paint events a widget receives
+class PaintRegions : public QObject {
+  public:
+    QRegion region;
+    int count = 0;
+    bool eventFilter(QObject*, QEvent* e) override {
+        if (e->type() == QEvent::Paint) {
+            region += static_cast<QPaintEvent*>(e)->region();
+            ++count;
+        }
+        return false;
+    }
+};
+
+// what the window shows of the canvas (the offscreen screen grabs the backing store) against
+// what a full repaint of the canvas draws now
+bool showsAFullRepaint(MainWindow& window) {
+    SceneCanvas* canvas = window.canvas();
+    QPoint at = canvas->mapTo(&window, QPoint(0, 0));
+    QImage shown =
+        window.screen()
+            ->grabWindow(window.winId(), at.x(), at.y(), canvas->width(), canvas->height())
+            .toImage()
+            .convertToFormat(QImage::Format_RGB32);
+    QImage full = canvas->grab().toImage().convertToFormat(QImage::Format_RGB32);
+    return !shown.isNull() && shown == full;
+}
+
+int area(const QRegion& r) {
+    int a = 0;
+    for (const QRect& rect : r)
+        a += rect.width() * rect.height();
+    return a;
+}
 
 // the canvas-sized image of bodies drawn either directly or through the sprite cache
 QImage drawBody(BodySprites* sprites, const SystemSpec& spec, const BodyPose& pose,
@@ -103,6 +142,7 @@ class TestFrame : public QObject {
 
     void timeReadoutFitsWithoutLayingOutTheWindow();
     void bodySpritesDrawWhatDirectDrawingDraws();
+    void framesRepaintWhatMovesAsAFullRepaintWould();
 
   private:
     std::unique_ptr<MainWindow> m_window;
@@ -184,6 +224,61 @@ void TestFrame::bodySpritesDrawWhatDirectDrawingDraws() {
     QImage direct = drawBody(nullptr, sleigh, pose, {}, 2000, false);
     QImage cached = drawBody(&sprites, sleigh, pose, {}, 2000, false);
     QCOMPARE(cached, direct);
+}
+
+void TestFrame::framesRepaintWhatMovesAsAFullRepaintWould() {
+    Scene s = m_window->document()->scene();
+    s.vectors.knifeVelocity.shown = s.vectors.lateralReaction.shown = true;
+    s.vectors.controlCouple.shown = true;
+    m_window->loadScene(s);
+    SceneCanvas* canvas = m_window->canvas();
+    Playback* playback = m_window->playback();
+    playback->seek(1.0);
+    QCoreApplication::processEvents();
+    QVERIFY(showsAFullRepaint(*m_window));
+    PaintRegions painted;
+    canvas->installEventFilter(&painted);
+    // playing: each frame repaints the bodies, their arrows, the trails' new ends and the time
+    // read-out, and the window then shows what a full repaint draws
+    const int whole = canvas->width() * canvas->height();
+    for (int frame = 0; frame < 40; ++frame) {
+        painted.region = {};
+        playback->advance(1.0 / 60);
+        QCoreApplication::processEvents();
+        QCOMPARE(painted.region.boundingRect().intersected(canvas->rect()).isEmpty(), false);
+        QVERIFY2(area(painted.region) < whole / 3,
+                 qPrintable(QStringLiteral("frame %1: %2 of %3 px")
+                                .arg(frame)
+                                .arg(area(painted.region))
+                                .arg(whole)));
+    }
+    QVERIFY(painted.count >= 40);
+    QVERIFY(showsAFullRepaint(*m_window));
+    // a jump forward along a straight line: the bodies leave their old places, which are
+    // repainted too
+    m_window->loadScene(presetScene("line"));
+    playback->seek(0.5);
+    QCoreApplication::processEvents();
+    QVERIFY(showsAFullRepaint(*m_window));
+    painted.region = {};
+    playback->seek(2.0);
+    QCoreApplication::processEvents();
+    QVERIFY(area(painted.region) < whole / 3);
+    QVERIFY(showsAFullRepaint(*m_window));
+    // back in time the trails shrink: the whole canvas
+    painted.region = {};
+    playback->seek(0.5);
+    QCoreApplication::processEvents();
+    QCOMPARE(painted.region.boundingRect(), canvas->rect());
+    QVERIFY(showsAFullRepaint(*m_window));
+    // following the body moves the view: the whole canvas
+    canvas->setFollowBody(true);
+    QCoreApplication::processEvents();
+    painted.region = {};
+    playback->advance(1.0 / 60);
+    QCoreApplication::processEvents();
+    QCOMPARE(painted.region.boundingRect(), canvas->rect());
+    QVERIFY(showsAFullRepaint(*m_window));
 }
 
 QTEST_MAIN(TestFrame)

@@ -60,10 +60,11 @@ void SceneCanvas::onSolutionChanged() {
 }
 
 void SceneCanvas::setTime(double t) {
+    double from = m_time;
     m_time = t;
     if (m_follow)
         centreOnBody();
-    update();
+    updateMoving(from);
 }
 
 void SceneCanvas::centreOnBody() {

@@ -85,6 +85,12 @@ class SceneCanvas : public QWidget {
     void paintLegend(QPainter& p) const;
     void paintTimeReadout(QPainter& p, double tEnd) const;
     void paintBackground();
+    /// Repaints what moved from time `from` to m_time: the bodies, their arrows and the new
+    /// end of each trail where that suffices, else the whole canvas.
+    void updateMoving(double from);
+    /// The box [px] of everything that moves drawn at time t, with the trails' vertices
+    /// after time `from`.
+    QRect movingBounds(const Solution& solution, const MotionSample& now, double from) const;
     void centreOnBody();
     /// The vertices of the current drawn path (empty unless it is a polyline).
     std::vector<std::pair<double, double>> drawnPoints() const;
@@ -118,8 +124,10 @@ class SceneCanvas : public QWidget {
         bool legend = true;
         bool operator==(const BackgroundKey&) const = default;
     };
+    BackgroundKey backgroundKey() const;
     BackgroundKey m_backgroundKey;
-    QPixmap m_background; // grid, path and legend
+    QRect m_movingPainted; // the box of what moves, as last painted
+    QPixmap m_background;  // grid, path and legend
     VectorLayer m_vectors;
     BodySprites m_bodies;
     CanvasStyle m_style;

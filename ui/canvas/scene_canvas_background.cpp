@@ -154,18 +154,15 @@ void SceneCanvas::paintLegend(QPainter& p) const {
                       "right-click it to delete it"));
 }
 
+SceneCanvas::BackgroundKey SceneCanvas::backgroundKey() const {
+    return {m_document->solution().get(), size(),          m_scale, m_centre,       m_drawMode,
+            devicePixelRatioF(),          m_showVakonomic, m_style, m_legendVisible};
+}
+
 void SceneCanvas::paintBackground() {
     // grid, path and legend change only with the view or the solution: cached between frames
-    qreal dpr = devicePixelRatioF();
-    BackgroundKey key{m_document->solution().get(),
-                      size(),
-                      m_scale,
-                      m_centre,
-                      m_drawMode,
-                      dpr,
-                      m_showVakonomic,
-                      m_style,
-                      m_legendVisible};
+    BackgroundKey key = backgroundKey();
+    qreal dpr = key.dpr;
     if (key == m_backgroundKey && !m_background.isNull())
         return;
     m_backgroundKey = key;

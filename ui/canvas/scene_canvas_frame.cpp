@@ -35,6 +35,59 @@ void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now) const {
               m_style.pen(m_style.vakonomic(), std::max(0.75 * w, 1.5), Qt::DashDotLine));
 }
 
+QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& now,
+                                double from) const {
+    const QTransform world = worldTransform();
+    QRectF box;
+    auto add = [&](const QRectF& r) { box = box.isNull() ? r : box.united(r); };
+    const SystemSpec& spec = solution.scene().system;
+    BodyLook look{m_style.body, m_style.bodyOpacity, m_style.lineScale};
+    auto body = [&](double x, double y, double phi) {
+        add(BodySprites::pixelBounds(world, m_scale, spec, solution.system(), {x, y, phi}, look));
+    };
+    body(now.x, now.y, now.phi);
+    body(now.free.x, now.free.y, now.free.phi);
+    if (m_showVakonomic)
+        body(now.vak.x, now.vak.y, now.vak.phi);
+    // each trail from its last vertex at or before `from` to its end now
+    const double pad = 2 * std::max(m_style.trailWidth, 1.5) * m_style.lineScale + 3;
+    auto point = [&](double x, double y) {
+        QPointF c = world.map(QPointF(x, y));
+        add(QRectF(c.x() - pad, c.y() - pad, 2 * pad, 2 * pad));
+    };
+    const PlotSeries& s = m_document->series();
+    auto trail = [&](const QVector<double>& t, const QVector<double>& x, const QVector<double>& y,
+                     double endX, double endY) {
+        auto after = std::upper_bound(t.begin(), t.end(), std::min(from, m_time));
+        for (auto i = std::max<qsizetype>(after - t.begin() - 1, 0);
+             i < std::min({t.size(), x.size(), y.size()}) && t[i] <= m_time; ++i)
+            point(x[i], y[i]);
+        point(endX, endY);
+    };
+    trail(s.t, s.x, s.y, now.x, now.y);
+    trail(s.freeT, s.freeX, s.freeY, now.free.x, now.free.y);
+    if (m_showVakonomic)
+        trail(s.vakT, s.vakX, s.vakY, now.vak.x, now.vak.y);
+    add(m_vectors.bounds(m_document->solution(), m_document->scene().vectors, now, world));
+    return box.toAlignedRect().adjusted(-2, -2, 2, 2);
+}
+
+void SceneCanvas::updateMoving(double from) {
+    // only the moving parts when nothing else changed: the view, the static layer, the pins
+    // (their runs move too), a stroke or a vertex being drawn, a trail that shrinks
+    const auto& solution = m_document->solution();
+    if (!solution || m_follow || !(from <= m_time) || m_background.isNull() ||
+        m_movingPainted.isNull() || !(backgroundKey() == m_backgroundKey) || !m_stroke.empty() ||
+        m_dragVertex >= 0 || PinSet::of(m_document)->count() > 0) {
+        update();
+        return;
+    }
+    QRegion dirty(m_movingPainted);
+    dirty += movingBounds(*solution, solution->at(m_time), from);
+    dirty += QRect(0, 0, width(), topBandPx()); // the time read-out
+    update(dirty);
+}
+
 void SceneCanvas::paintEvent(QPaintEvent*) {
     paintBackground();
     QPainter p(this);
@@ -62,6 +115,9 @@ void SceneCanvas::paintEvent(QPaintEvent*) {
         m_vectors.paint(p, solution, m_document->scene().vectors, now, worldTransform(), m_scale,
                         rect());
         paintTimeReadout(p, solution->tEnd());
+        m_movingPainted = movingBounds(*solution, now, m_time);
+    } else {
+        m_movingPainted = {};
     }
     if (m_drawMode)
         paintVertices(p);
