@@ -5,6 +5,7 @@
 #include "document/scene_document.h"
 #include "gui_test_support.h"
 #include "scene/presets.h"
+#include "scene/solution.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
 #include "shell/timeline_bar.h"
@@ -143,6 +144,7 @@ class TestFrame : public QObject {
     void timeReadoutFitsWithoutLayingOutTheWindow();
     void bodySpritesDrawWhatDirectDrawingDraws();
     void framesRepaintWhatMovesAsAFullRepaintWould();
+    void followingShiftsTheStaticLayerAsRedrawingWould();
 
   private:
     std::unique_ptr<MainWindow> m_window;
@@ -279,6 +281,42 @@ void TestFrame::framesRepaintWhatMovesAsAFullRepaintWould() {
     QCoreApplication::processEvents();
     QCOMPARE(painted.region.boundingRect(), canvas->rect());
     QVERIFY(showsAFullRepaint(*m_window));
+}
+
+void TestFrame::followingShiftsTheStaticLayerAsRedrawingWould() {
+    SceneCanvas* canvas = m_window->canvas();
+    Playback* playback = m_window->playback();
+    playback->seek(2.0);
+    canvas->setFollowBody(true);
+    for (int frame = 0; frame < 90; ++frame) {
+        playback->advance(1.0 / 30); // three seconds: the view moves by many pixels
+        QCoreApplication::processEvents();
+        // the body stays in the middle (to the pixel grid)
+        MotionSample m = m_window->document()->solution()->at(playback->time());
+        QPointF p = canvas->toPixel({m.x, m.y});
+        QVERIFY(std::abs(p.x() - canvas->width() / 2.0) <= 0.5 + 1e-9);
+        QVERIFY(std::abs(p.y() - canvas->height() / 2.0) <= 0.5 + 1e-9);
+    }
+    QVERIFY(showsAFullRepaint(*m_window));
+    // the shifted layer is what drawing the grid, the path and the legend at this view draws
+    QImage following = canvas->grab().toImage();
+    canvas->setFollowBody(false); // the view stays
+    QImage drawn = canvas->grab().toImage();
+    // the same pixels, but for the rounding of the legend's antialiased line ends, which the
+    // cached legend composites from a translucent image (a few levels on a few pixels)
+    QCOMPARE(following.size(), drawn.size());
+    int differing = 0, most = 0;
+    for (int y = 0; y < drawn.height(); ++y)
+        for (int x = 0; x < drawn.width(); ++x) {
+            QRgb a = following.pixel(x, y), b = drawn.pixel(x, y);
+            int d = std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                              std::abs(qBlue(a) - qBlue(b))});
+            differing += d > 0 ? 1 : 0;
+            most = std::max(most, d);
+        }
+    QVERIFY2(most <= 12, qPrintable(QString::number(most)));
+    QVERIFY2(differing <= drawn.width() * drawn.height() / 1000,
+             qPrintable(QString::number(differing)));
 }
 
 QTEST_MAIN(TestFrame)

@@ -72,7 +72,9 @@ void SceneCanvas::centreOnBody() {
     if (!solution)
         return;
     MotionSample m = solution->at(std::clamp(m_time, 0.0, solution->tEnd()));
-    m_centre = QPointF(m.x, m.y);
+    // on the pixel grid, so that the view moves by whole pixels and the static layer is shifted
+    // rather than drawn again
+    m_centre = QPointF(std::round(m.x * m_scale) / m_scale, std::round(m.y * m_scale) / m_scale);
 }
 
 QRectF SceneCanvas::sceneBounds() const {

@@ -30,7 +30,7 @@ QColor pale(const QColor& c) {
 
 } // namespace
 
-void SceneCanvas::paintGrid(QPainter& p) const {
+double SceneCanvas::gridStep() const {
     // grid lines every 1, 2 or 5 x 10^k metres, at least 40 px apart
     double decade = std::pow(10.0, std::floor(std::log10(40.0 / m_scale)));
     double step = decade;
@@ -39,7 +39,13 @@ void SceneCanvas::paintGrid(QPainter& p) const {
             step = f * decade;
             break;
         }
-    QPointF a = toWorld(QPointF(0, height())), b = toWorld(QPointF(width(), 0));
+    return step;
+}
+
+void SceneCanvas::paintGrid(QPainter& p, const QTransform& world, const QRectF& area) const {
+    double step = gridStep();
+    const QTransform toWorld = world.inverted();
+    QPointF a = toWorld.map(area.bottomLeft()), b = toWorld.map(area.topRight());
     p.setPen(m_style.pen(QColor(232, 232, 232), 1));
     // counted, not accumulated: far from the origin x + step may round back to x
     const double kx0 = std::floor(a.x() / step), kx1 = std::ceil(b.x() / step);
@@ -48,13 +54,17 @@ void SceneCanvas::paintGrid(QPainter& p) const {
         std::max({std::abs(kx0), std::abs(kx1), std::abs(ky0), std::abs(ky1)}) < 1e15;
     if (countable && kx1 - kx0 < 2000 && ky1 - ky0 < 2000) {
         for (double k = kx0; k <= kx1; ++k)
-            p.drawLine(toPixel({k * step, a.y()}), toPixel({k * step, b.y()}));
+            p.drawLine(world.map(QPointF{k * step, a.y()}), world.map(QPointF{k * step, b.y()}));
         for (double k = ky0; k <= ky1; ++k)
-            p.drawLine(toPixel({a.x(), k * step}), toPixel({b.x(), k * step}));
+            p.drawLine(world.map(QPointF{a.x(), k * step}), world.map(QPointF{b.x(), k * step}));
     }
     p.setPen(m_style.pen(QColor(200, 200, 200), 1));
-    p.drawLine(toPixel({a.x(), 0}), toPixel({b.x(), 0}));
-    p.drawLine(toPixel({0, a.y()}), toPixel({0, b.y()}));
+    p.drawLine(world.map(QPointF{a.x(), 0}), world.map(QPointF{b.x(), 0}));
+    p.drawLine(world.map(QPointF{0, a.y()}), world.map(QPointF{0, b.y()}));
+}
+
+void SceneCanvas::paintScaleBar(QPainter& p) const {
+    double step = gridStep();
     // scale bar, top right: one grid step
     double len = step * m_scale;
     QPointF right(width() - 14, topBandPx() - 2), left = right - QPointF(len, 0);
@@ -72,13 +82,13 @@ void SceneCanvas::paintGrid(QPainter& p) const {
                Qt::AlignCenter, label);
 }
 
-void SceneCanvas::paintPath(QPainter& p) const {
+void SceneCanvas::paintPath(QPainter& p, const QTransform& world) const {
     const auto& solution = m_document->solution();
     for (const PathPiece& piece : solution->path()->pieces()) {
         if (piece.kind == PathPiece::Kind::Pivot) {
             p.setPen(m_style.pen(QColor(120, 60, 160), 1.5));
             p.setBrush(Qt::NoBrush);
-            p.drawEllipse(toPixel({piece.x, piece.y}), 5, 5);
+            p.drawEllipse(world.map(QPointF{piece.x, piece.y}), 5, 5);
             continue;
         }
         const auto& nodes = piece.table->nodes();
@@ -91,17 +101,18 @@ void SceneCanvas::paintPath(QPainter& p) const {
                             6);
             pen.setCapStyle(Qt::FlatCap);
             p.setPen(pen);
-            p.drawLine(toPixel({nodes[i - 1].x, nodes[i - 1].y}),
-                       toPixel({nodes[i].x, nodes[i].y}));
+            p.drawLine(world.map(QPointF{nodes[i - 1].x, nodes[i - 1].y}),
+                       world.map(QPointF{nodes[i].x, nodes[i].y}));
         }
     }
     // start (filled) and end (open) of the path
     const Path& path = *solution->path();
     p.setPen(m_style.pen(QColor(40, 40, 40), 1.5));
     p.setBrush(QColor(40, 40, 40));
-    p.drawEllipse(toPixel({path.start().x, path.start().y}), 4, 4);
+    p.drawEllipse(world.map(QPointF{path.start().x, path.start().y}), 4, 4);
     p.setBrush(Qt::white);
-    p.drawRect(QRectF(toPixel({path.end().x, path.end().y}) - QPointF(4, 4), QSizeF(8, 8)));
+    p.drawRect(
+        QRectF(world.map(QPointF{path.end().x, path.end().y}) - QPointF(4, 4), QSizeF(8, 8)));
 }
 
 void SceneCanvas::paintLegend(QPainter& p) const {
@@ -171,11 +182,61 @@ void SceneCanvas::paintBackground() {
     m_background.fill(Qt::white);
     QPainter p(&m_background);
     p.setRenderHint(QPainter::Antialiasing, true);
-    paintGrid(p);
+    paintGrid(p, worldTransform(), rect());
+    paintScaleBar(p);
     if (m_document->solution()) {
-        paintPath(p);
+        paintPath(p, worldTransform());
         paintLegend(p);
     }
+}
+
+void SceneCanvas::paintStaticLayer(QPainter& p) {
+    const qreal dpr = devicePixelRatioF();
+    if (!m_follow || m_drawMode || dpr != std::round(dpr) || !m_document->solution()) {
+        paintBackground();
+        p.drawPixmap(0, 0, m_background);
+        return;
+    }
+    BackgroundKey key = backgroundKey();
+    key.centre = {};                                      // the world layer moves with the centre
+    QPointF shift = (m_centre - m_worldCentre) * m_scale; // [px], y up
+    const int margin = std::max(width(), height()) / 2;
+    if (!(key == m_worldKey) || m_worldLayer.isNull() || std::abs(shift.x()) > m_worldMargin ||
+        std::abs(shift.y()) > m_worldMargin) {
+        m_worldKey = key;
+        m_worldCentre = m_centre;
+        m_worldMargin = margin;
+        shift = {};
+        const QSize big = size() + QSize(2 * margin, 2 * margin);
+        m_worldLayer = QPixmap(big * dpr);
+        m_worldLayer.setDevicePixelRatio(dpr);
+        m_worldLayer.fill(Qt::white);
+        QPainter w(&m_worldLayer);
+        w.setRenderHint(QPainter::Antialiasing, true);
+        const QTransform world = worldTransform() * QTransform::fromTranslate(margin, margin);
+        paintGrid(w, world, QRectF(QPointF(0, 0), QSizeF(big)));
+        paintPath(w, world);
+    }
+    // the world moves left and down as the centre goes right and up
+    const QPointF source(m_worldMargin + qRound(shift.x()), m_worldMargin - qRound(shift.y()));
+    p.drawPixmap(QPointF(0, 0), m_worldLayer, QRectF(source * dpr, QSizeF(size()) * dpr));
+    p.setRenderHint(QPainter::Antialiasing, true);
+    paintScaleBar(p);
+    if (!m_legendVisible)
+        return;
+    // two rows above the legend's band hold the antialiased edge of its top line
+    const int top = height() - legendBandPx() - 2;
+    if (!(key == m_legendKey) || m_legendLayer.isNull()) {
+        m_legendKey = key;
+        m_legendLayer = QPixmap(QSize(width(), height() - top) * dpr);
+        m_legendLayer.setDevicePixelRatio(dpr);
+        m_legendLayer.fill(Qt::transparent);
+        QPainter l(&m_legendLayer);
+        l.setRenderHint(QPainter::Antialiasing, true);
+        l.translate(0, -top);
+        paintLegend(l);
+    }
+    p.drawPixmap(0, top, m_legendLayer);
 }
 
 } // namespace chaplygin::ui

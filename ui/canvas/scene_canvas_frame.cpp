@@ -89,9 +89,8 @@ void SceneCanvas::updateMoving(double from) {
 }
 
 void SceneCanvas::paintEvent(QPaintEvent*) {
-    paintBackground();
     QPainter p(this);
-    p.drawPixmap(0, 0, m_background);
+    paintStaticLayer(p);
     p.setRenderHint(QPainter::Antialiasing, true);
     const auto& solution = m_document->solution();
     if (solution) {
