@@ -35,22 +35,24 @@ void addForces(const ControlParams& p, ControlState& c) {
 
 } // namespace
 
-ControlState controlOnCurve(const ControlParams& p, double kappa, double dkappa, double phi) {
+ControlState controlOnCurve(const ControlParams& p, double kappa, double dkappa, double phi,
+                            int direction, double psiOffset) {
     const double m = p.system.mass, a = p.system.a, b = p.system.b;
     ControlState c;
     const double bk = b * kappa;
     const double root = std::sqrt(1 + bk * bk);
-    // tan(Psi) = rho/b, eq. (45); written as Psi = atan2(1, b kappa) in (0, pi), finite at
+    // tan(Psi) = rho/b, paper (45); written as Psi = atan2(1, b kappa) in (0, pi), finite at
     // inflections
-    c.psi = std::atan2(1.0, bk);
+    // backing up: Psi = atan2(sdot, b phidot) = atan2(-1, -b kappa) with phidot = kappa sdot
+    c.psi = std::atan2(static_cast<double>(direction), direction * bk) + psiOffset;
     if (p.mode == SpeedMode::Energy) {
         // sdot = v_T sin(Psi) (34), phidot = (v_T/b) cos(Psi) = kappa sdot (35)
-        c.sdot = p.speed / root;
+        c.sdot = direction * p.speed / root;
     } else {
         c.sdot = p.speed; // App. C: sdot = v_s
     }
     c.phidot = kappa * c.sdot;
-    // dPsi/ds = -b kappa_s/(1 + b^2 kappa^2)
+    // dPsi/ds = -b kappa_s/(1 + b^2 kappa^2), either direction
     c.psidot = -b * dkappa * c.sdot / (1 + bk * bk);
     if (p.mode == SpeedMode::Energy) {
         // docs/physics.md §2: sddot = b phidot Psidot, phiddot = -(sdot/b) Psidot
@@ -65,6 +67,26 @@ ControlState controlOnCurve(const ControlParams& p, double kappa, double dkappa,
     c.lambda = m * (b * c.psidot - a * c.phidot);
     c.energy = 0.5 * m * (c.sdot * c.sdot + b * b * c.phidot * c.phidot);
     c.vT = std::sqrt(c.sdot * c.sdot + b * b * c.phidot * c.phidot);
+    addForces(p, c);
+    return c;
+}
+
+ControlState controlAtCusp(const ControlParams& p, double phi, double psi, double turnRate,
+                           double accel) {
+    const double m = p.system.mass, a = p.system.a, b = p.system.b;
+    ControlState c;
+    c.psi = psi;
+    c.sdot = 0;
+    c.phidot = std::copysign(p.speed / b, turnRate);
+    // Psi = atan2(sigma, b phi') with sigma = sdot/udot passing 0 at slope -|r''|: dPsi/du =
+    // -|r''|/(b phi'), and du/dt = v_T/(b |phi'|)
+    c.psidot = -accel * p.speed / (b * b * turnRate * std::fabs(turnRate));
+    c.sddot = b * c.phidot * c.psidot;
+    c.phiddot = 0;
+    c.chi = c.psi - (a / b) * phi;
+    c.lambda = m * (b * c.psidot - a * c.phidot);
+    c.energy = 0.5 * m * b * b * c.phidot * c.phidot;
+    c.vT = p.speed;
     addForces(p, c);
     return c;
 }

@@ -23,22 +23,31 @@ struct ControlParams {
 struct ControlState {
     double sdot = 0, phidot = 0;   ///< [m/s], [rad/s]
     double sddot = 0, phiddot = 0; ///< [m/s^2], [rad/s^2]
-    double psi = 0;                ///< control angle in (0, pi): Psi = atan2(1, b kappa)
-    double psidot = 0;             ///< [rad/s]
-    double chi = 0;                ///< Psi - (a/b) phi
-    double lambda = 0;             ///< m b chidot [N s/m * m = kg m/s]
-    double energy = 0;             ///< kinetic energy T [J]
-    double vT = 0;                 ///< sqrt(2T/m) [m/s]
-    double forceAxial = 0;         ///< F_cs = m (sddot - a phidot^2) [N]; M_eff sddot (a = 0)
-    double forceLateral = 0;       ///< F_cphi = m_tr sdot phidot + m a phiddot [N] (m_tr: the
-                                   ///< translating mass, docs/physics.md §2)
-    double torque = 0;             ///< S_c = I phiddot about the CM (J phiddot, carriage) [N m]
-    double knifeReaction = 0;      ///< N = F_cphi, acting at P [N]
-    double controlCouple = 0;      ///< tau = S_c + a N [N m]
+    double psi = 0;    ///< control angle Psi = atan2(sdot, b phidot): in (0, pi) while sdot > 0,
+                       ///< continued through cusps (docs/physics.md §3)
+    double psidot = 0; ///< [rad/s]
+    double chi = 0;    ///< Psi - (a/b) phi
+    double lambda = 0; ///< m b chidot [N s/m * m = kg m/s]
+    double energy = 0; ///< kinetic energy T [J]
+    double vT = 0;     ///< sqrt(2T/m) [m/s]
+    double forceAxial = 0;    ///< F_cs = m (sddot - a phidot^2) [N]; M_eff sddot (a = 0)
+    double forceLateral = 0;  ///< F_cphi = m_tr sdot phidot + m a phiddot [N] (m_tr: the
+                              ///< translating mass, docs/physics.md §2)
+    double torque = 0;        ///< S_c = I phiddot about the CM (J phiddot, carriage) [N m]
+    double knifeReaction = 0; ///< N = F_cphi, acting at P [N]
+    double controlCouple = 0; ///< tau = S_c + a N [N m]
 };
 
 /// The control on a smooth stretch, from the curvature, its arc-length derivative and heading.
-ControlState controlOnCurve(const ControlParams& p, double kappa, double dkappa, double phi);
+/// Backing up (direction -1, after a cusp): kappa = dphi/ds and s along the heading, so sdot < 0,
+/// and Psi = atan2(-1, -b kappa) + psiOffset (docs/physics.md §3).
+ControlState controlOnCurve(const ControlParams& p, double kappa, double dkappa, double phi,
+                            int direction = 1, double psiOffset = 0);
+
+/// The control at a cusp (Energy mode): sdot = 0, phidot = sign(dphi/du) v_T/b, and
+/// Psidot = (dPsi/du)(du/dt) = -|r''| v_T/(b^2 dphi/du |dphi/du|) (docs/physics.md §3).
+ControlState controlAtCusp(const ControlParams& p, double phi, double psi, double turnRate,
+                           double accel);
 
 /// The control while pivoting in place at a corner (turn > 0: left). Only Energy mode can pivot.
 ControlState controlAtPivot(const ControlParams& p, double phi, double turnSign);

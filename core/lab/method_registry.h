@@ -61,7 +61,7 @@ struct Method {
 };
 
 /// The methods that apply to the case: closed form or Gauss-panel quadrature (app default),
-/// GSL QAG + Newton, the six GSL steppers, classical RK4 and the open-loop eqs. (35)-(37) for the
+/// GSL QAG + Newton, the six GSL steppers, classical RK4 and the open-loop paper (35)-(37) for the
 /// controlled motion (the ODE methods need a path of one smooth piece; open loop needs Energy
 /// mode); closed form (app default), the six GSL steppers, classical RK4 and RK4 with energy
 /// projection for the free motion.

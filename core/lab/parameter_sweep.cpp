@@ -1,5 +1,7 @@
 #include "lab/parameter_sweep.h"
 
+#include "control/piece_control.h"
+
 #include "common/input_error.h"
 #include "paths/path.h"
 #include "scene/solution.h"
@@ -62,7 +64,7 @@ void curveMaxima(const ControlParams& params, const PathPiece& piece, std::array
     us.push_back(nodes.back().u);
     auto stateAt = [&](double u) {
         PathNode n = table.at(u);
-        return controlOnCurve(params, n.kappa, n.dkappa, n.phi + piece.phiOffset);
+        return controlOnPiece(params, piece, n);
     };
     std::vector<std::array<double, 4>> values(us.size());
     for (std::size_t i = 0; i < us.size(); ++i)

@@ -1,5 +1,7 @@
 #include "lab/planned_motion.h"
 
+#include "control/piece_control.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -46,8 +48,7 @@ PlannedMotion::State PlannedMotion::at(double t) const {
     PathNode n = piece.table->interpolatedAt(loc.panel, loc.xi);
     st.x = n.x;
     st.y = n.y;
-    st.phi = n.phi + piece.phiOffset;
-    ControlState c = controlOnCurve(m_params, n.kappa, n.dkappa, st.phi);
+    ControlState c = controlOnPiece(m_params, piece, n, &st.phi);
     st.psi = c.psi;
     st.chidot = c.psidot - (a / b) * c.phidot;
     return st;

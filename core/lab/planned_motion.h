@@ -18,7 +18,7 @@ class PlannedMotion {
     struct State {
         double x = 0, y = 0, phi = 0; ///< knife point P and unwrapped heading
         double psi = 0;               ///< Psi = atan2(1, b kappa), paper (45), docs/physics.md §2
-        double chidot = 0;            ///< chidot = Psidot - (a/b) phidot, from eq. (33)
+        double chidot = 0;            ///< chidot = Psidot - (a/b) phidot, from paper (33)
     };
     State at(double t) const;
     /// The knife point P alone (no heading or control: one curve evaluation after locate).

@@ -85,7 +85,7 @@ struct OpenLoopTerms {
 OpenLoopTerms openLoopTerms(const PlannedMotion& plan, double t, const double* y) {
     PlannedMotion::State st = plan.at(t);
     const DerivedSystem& sys = plan.params().system;
-    // Psi = chi(t) + (a/b) phi, eq. (33), with chi(t) = Psi_plan(t) - (a/b) phi_plan(t)
+    // Psi = chi(t) + (a/b) phi, paper (33), with chi(t) = Psi_plan(t) - (a/b) phi_plan(t)
     const double psi = st.psi + (sys.a / sys.b) * (y[2] - st.phi);
     return {plan.params().speed, sys.b, sys.a, psi, y[2], st.chidot};
 }

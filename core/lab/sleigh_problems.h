@@ -9,7 +9,7 @@ namespace chaplygin {
 
 /// The controlled time law as an ODE in t for the curve parameter u (docs/physics.md §2):
 /// du/dt = sdot/|r'(u)| with sdot = v_T/sqrt(1 + b^2 kappa^2) (Energy) or v_s (Speed).
-/// For an arc-length parametrised curve (the catenary, eqs. (97)-(98)) u = s and this is
+/// For an arc-length parametrised curve (the catenary, paper (97)-(98)) u = s and this is
 /// ds/dt = v_T/sqrt(1 + b^2 kappa(s)^2); kappa and ds/du come exactly from the curve.
 class ControlledProblem final : public OdeProblem {
   public:
@@ -24,7 +24,7 @@ class ControlledProblem final : public OdeProblem {
     ControlParams m_params;
 };
 
-/// The free (Lagrange-d'Alembert) sleigh in y = (x, y, phi, sdot, phidot), eqs. (D12)-(D13):
+/// The free (Lagrange-d'Alembert) sleigh in y = (x, y, phi, sdot, phidot), paper (D12)-(D13):
 /// sddot = a phidot^2, phiddot = -a sdot phidot/b^2, xdot = sdot cos phi, ydot = sdot sin phi.
 /// phidot below 1e-150 is flushed to 0 so that long horizons never compute with subnormal
 /// numbers (RK4 measured 3.5x slower on them); its contribution is below 1e-150 either way.
@@ -44,8 +44,8 @@ class FreeProblem final : public OdeProblem {
     DerivedSystem m_sys;
 };
 
-/// The paper's open-loop integration of eqs. (35)-(37) in (x, y, phi) for Fig. 3: the control
-/// input chi(t) is taken from the planned motion and Psi = chi + (a/b) phi, eq. (33);
+/// The open-loop integration of paper (35)-(37) in (x, y, phi) for Fig. 3: the control
+/// input chi(t) is taken from the planned motion and Psi = chi + (a/b) phi, paper (33);
 /// xdot = v_T sin Psi cos phi (36), ydot = v_T sin Psi sin phi (37), phidot = (v_T/b) cos Psi (35).
 /// Nothing pulls the body back to the path, so integration errors accumulate as drift.
 /// Energy mode only.

@@ -18,7 +18,7 @@ struct FreeState {
     double energy = 0; ///< T = (m/2)(sdot^2 + b^2 phidot^2) [J]
 };
 
-/// The free (Lagrange-d'Alembert / Neimark-Fufaev) sleigh, eqs. (D12)-(D15):
+/// The free (Lagrange-d'Alembert / Neimark-Fufaev) sleigh, paper (D12)-(D15):
 /// sddot = a phidot^2, phiddot = -a sdot phidot/b^2. Velocities and heading in closed form
 /// (docs/physics.md §4): sdot = V tanh(kt + c), phidot = sigma (V/b) sech(kt + c),
 /// phi = phi0 + sigma (b/a)(gd(kt + c) - gd(c)), k = aV/b^2, c = asinh(sdot0/(b|phidot0|)),

@@ -74,6 +74,13 @@ TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
             continue;
         }
         const PathTable& table = *piece.table;
+        if (!energy && table.cuspEnds().end) {
+            const Curve& c = table.curve();
+            throw InputError("path at " + c.parameterName() + " = " +
+                                 formatNumber(c.parameterValue(table.cuspEnds().end->u)),
+                             "constant-speed mode cannot pass this cusp (sdot would have to jump "
+                             "from +v_s to -v_s); use the constant-energy mode");
+        }
         std::vector<double>& times = m_nodeTimes[k];
         times.resize(table.nodes().size());
         times[0] = t0;
@@ -186,35 +193,49 @@ double TimeLaw::timeAtExact(int piece, double u) const {
     return t;
 }
 
-double TimeLaw::timeAt(int piece, double u) const {
+TimeLaw::CertifiedPanel TimeLaw::certifiedPanelOf(int piece, double u) const {
     const PathTable& table = *m_path->pieces()[piece].table;
-    int k = table.panelOf(u);
-    if (interpolated(piece)) {
-        const TimePanel& tp = timePanel(piece, k);
-        if (tp.certified) {
-            const double a = table.nodes()[k].u, b = table.nodes()[k + 1].u;
-            double f[2];
-            cheb::evaluateMany(tp.c, (2 * u - (a + b)) / (b - a), f);
-            return m_nodeTimes[piece][k] + f[0];
-        }
-    }
-    return timeAtExact(piece, u);
+    CertifiedPanel out;
+    out.index = table.panelOf(u);
+    if (!interpolated(piece))
+        return out;
+    const TimePanel& tp = timePanel(piece, out.index);
+    if (!tp.certified)
+        return out;
+    const double a = table.nodes()[out.index].u, b = table.nodes()[out.index + 1].u;
+    out.panel = &tp;
+    out.xi = (2 * u - (a + b)) / (b - a);
+    out.halfWidth = 0.5 * (b - a);
+    return out;
+}
+
+double TimeLaw::timeAt(int piece, double u) const {
+    CertifiedPanel p = certifiedPanelOf(piece, u);
+    if (!p.panel)
+        return timeAtExact(piece, u);
+    double f[2];
+    cheb::evaluateMany(p.panel->c, p.xi, f);
+    return m_nodeTimes[piece][p.index] + f[0];
 }
 
 double TimeLaw::rateAt(int piece, double u) const {
+    CertifiedPanel p = certifiedPanelOf(piece, u);
+    if (p.panel)
+        return cheb::evaluateOne(p.panel->c, 1, p.xi) / p.halfWidth;
     const PathTable& table = *m_path->pieces()[piece].table;
-    int k = table.panelOf(u);
-    if (interpolated(piece)) {
-        const TimePanel& tp = timePanel(piece, k);
-        if (tp.certified) {
-            const double a = table.nodes()[k].u, b = table.nodes()[k + 1].u;
-            return cheb::evaluateOne(tp.c, 1, (2 * u - (a + b)) / (b - a)) * 2 / (b - a);
-        }
-    }
+    const int k = p.index;
     if (table.uniform()) {
         const PathNode& n = table.nodes()[k];
         return rate(n.speed, n.kappa);
     }
+    return exactRate(table, u);
+}
+
+double TimeLaw::exactRate(const PathTable& table, double u) const {
+    const PathTable::CuspEnds& ends = table.cuspEnds();
+    const std::optional<Cusp>& cusp = u <= table.nodes().front().u ? ends.start : ends.end;
+    if (cusp && (u <= table.nodes().front().u || u >= table.nodes().back().u))
+        return m_params.system.b * std::fabs(cusp->turnRate) / m_params.speed; // ds = 0 there
     CurveGeometry g = geometryOf(table.curve().eval(u));
     return rate(g.speed, g.kappa);
 }
@@ -290,8 +311,7 @@ PathLocation TimeLaw::locateExact(double t) const {
     for (int iter = 0; iter < 40; ++iter) {
         double f = timeAtExact(piece, u) - t;
         (f > 0 ? b : a) = u;
-        CurveGeometry g = geometryOf(table.curve().eval(u));
-        double step = f / rate(g.speed, g.kappa);
+        double step = f / exactRate(table, u);
         if (std::fabs(step) <= 1e-15 * (std::fabs(u) + (hi.u - lo.u))) {
             u -= step;
             break;

@@ -71,9 +71,17 @@ class TimeLaw {
 
   private:
     struct Lazy;
-    double rate(double speed, double kappa) const; // dt/du
+    double rate(double speed, double kappa) const;            // dt/du
+    double exactRate(const PathTable& table, double u) const; // dt/du, the limit at a cusp
     void buildPanel(int piece, int k, TimePanel& out) const;
     PathLocation curveLocation(int piece, int panel, double u) const;
+    // the panel holding u; with its certified interpolant (null if none) and u mapped to it
+    struct CertifiedPanel {
+        int index = 0;
+        const TimePanel* panel = nullptr;
+        double xi = 0, halfWidth = 0;
+    };
+    CertifiedPanel certifiedPanelOf(int piece, double u) const;
     std::shared_ptr<const Path> m_path;
     ControlParams m_params;
     std::vector<double> m_pieceStart; // size pieces + 1

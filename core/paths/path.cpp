@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 #include "paths/expression_curve.h"
 #include "paths/spline_curve.h"
+#include "paths/sub_curve.h"
 
 #include <cmath>
 #include <numbers>
@@ -71,6 +72,54 @@ std::vector<PathPiece> singleCurve(std::shared_ptr<const Curve> curve) {
     return {piece};
 }
 
+// Psi = atan2(direction, b kappa) at a cusp end, before the 2 pi n of the piece: kappa -> +-inf
+// and sdot -> 0 with the sign of the direction
+double rawPsiAtCusp(int direction, double turnRate) {
+    return std::atan2(direction * 0.0, turnRate);
+}
+
+// A curve with cusps inside: one piece per stretch between them, alternating forward and
+// backing up; the heading is continuous (the tangent line), and so is Psi (docs/physics.md §3)
+std::vector<PathPiece> throughCusps(const std::shared_ptr<const Curve>& curve) {
+    std::vector<Cusp> cusps = findCusps(*curve);
+    if (cusps.empty())
+        return singleCurve(curve);
+    std::vector<PathPiece> pieces;
+    double ua = curve->u0(), psiEnd = 0;
+    for (std::size_t k = 0; k <= cusps.size(); ++k) {
+        const double ub = k < cusps.size() ? cusps[k].u : curve->u1();
+        PathTable::CuspEnds ends;
+        if (k > 0)
+            ends.start = cusps[k - 1];
+        if (k < cusps.size())
+            ends.end = cusps[k];
+        PathPiece piece;
+        piece.table = std::make_shared<const PathTable>(std::make_shared<SubCurve>(curve, ua, ub),
+                                                        std::move(ends));
+        piece.direction = k % 2 == 0 ? 1 : -1;
+        const double heading = piece.table->nodes().front().phi;
+        if (k == 0) {
+            piece.phiOffset = 0;
+        } else {
+            const PathPiece& prev = pieces.back();
+            const double prevEnd = prev.table->nodes().back().phi + prev.phiOffset;
+            // the body's heading is the table's, turned by pi when backing up
+            const double target = prevEnd - (piece.direction < 0 ? std::numbers::pi : 0.0);
+            piece.phiOffset =
+                (piece.direction < 0 ? std::numbers::pi : 0.0) +
+                2 * std::numbers::pi * std::round((target - heading) / (2 * std::numbers::pi));
+            const double start = rawPsiAtCusp(piece.direction, cusps[k - 1].turnRate);
+            piece.psiOffset =
+                2 * std::numbers::pi * std::round((psiEnd - start) / (2 * std::numbers::pi));
+        }
+        if (k < cusps.size())
+            psiEnd = rawPsiAtCusp(piece.direction, cusps[k].turnRate) + piece.psiOffset;
+        pieces.push_back(piece);
+        ua = ub;
+    }
+    return pieces;
+}
+
 } // namespace
 
 Path::Path(std::vector<PathPiece> pieces) : m_pieces(std::move(pieces)) {
@@ -116,7 +165,7 @@ std::shared_ptr<const Path> buildPath(const PathSource& source) {
         Expression x = Expression::compile(source.xOfU, "u", "x(u)");
         Expression y = Expression::compile(source.yOfU, "u", "y(u)");
         return std::make_shared<const Path>(
-            singleCurve(std::make_shared<ParametricCurve>(x, y, source.from, source.to)));
+            throughCusps(std::make_shared<ParametricCurve>(x, y, source.from, source.to)));
     }
     case PathKind::Polyline: {
         auto pts = distinctPoints(source);

@@ -12,8 +12,13 @@ namespace chaplygin {
 struct PathPiece {
     enum class Kind { Curve, Pivot };
     Kind kind = Kind::Curve;
-    std::shared_ptr<const PathTable> table;      ///< Curve only
-    double phiOffset = 0;                        ///< Curve: 2 pi n added to the table's phi
+    std::shared_ptr<const PathTable> table; ///< Curve only
+    double phiOffset = 0;                   ///< Curve: 2 pi n added to the table's phi
+                                            ///< (pi more when backing up)
+    /// Curve: +1 when the body moves along its heading, -1 when it backs up (the stretch after
+    /// a cusp; docs/physics.md §3): the heading is the table's phi + pi and sdot < 0
+    int direction = 1;
+    double psiOffset = 0; ///< Curve: 2 pi n keeping Psi continuous through the cusps before it
     double x = 0, y = 0, phiFrom = 0, phiTo = 0; ///< Pivot only
     double s0 = 0;                               ///< arc length at the start of the piece
 };

@@ -50,6 +50,22 @@ CurveGeometry checkedGeometry(const Curve& c, double u, CurvePoint* out = nullpt
     return g;
 }
 
+// The limits at a cusp (docs/physics.md §3): ds/du = 0, kappa = +-inf with the sign of the
+// heading's turn, and the tangent line's heading: r' ~ (u - u*) r'', so the stretch that starts at
+// the cusp leaves along r'' and the one that ends there arrives along -r''.
+PathNode cuspNode(const Curve& c, const Cusp& cusp, bool atStart) {
+    CurvePoint p = c.eval(cusp.u);
+    PathNode n;
+    n.u = cusp.u;
+    n.x = p.x;
+    n.y = p.y;
+    n.speed = 0;
+    n.kappa = std::copysign(INFINITY, cusp.turnRate);
+    n.dkappa = 0;
+    n.phi = atStart ? std::atan2(p.ddy, p.ddx) : std::atan2(-p.ddy, -p.ddx);
+    return n;
+}
+
 struct PanelData {
     double a = 0, b = 0;
     double length = 0, turn = 0, absTurn = 0; // \int ds, \int kappa ds, \int |kappa| ds
@@ -245,6 +261,7 @@ struct Certifier {
     const Curve& curve;
     bool piecewise; // the curve has breakpoints
     double lengthScale;
+    double cuspStart, cuspEnd; // u of a cusp at either end, or NaN
     std::vector<PanelData> leaves;
     std::vector<PathTable::ChebPanel> cheb;
     PathTable::Bounds bounds;
@@ -255,6 +272,13 @@ struct Certifier {
     // no panel can beat: the panel is kept with that measured bound (noiseLimited).
     void certify(const PanelData& d, int depth, double parentScore) {
         PathTable::ChebPanel panel;
+        if (d.a == cuspStart || d.b == cuspEnd) {
+            // kappa and dkappa/ds grow without bound towards a cusp: no interpolant
+            bounds.exactPanels += 1;
+            leaves.push_back(d);
+            cheb.push_back(panel);
+            return;
+        }
         PathTable::Bounds b;
         double score = interpolate(curve, piecewise, d, lengthScale, panel, b);
         bool noise = score > 1 && depth > 0 && score > 0.25 * parentScore;
@@ -296,7 +320,10 @@ bool uniformAtGaussNodes(const std::vector<PanelData>& leaves) {
 
 } // namespace
 
-PathTable::PathTable(std::shared_ptr<const Curve> curve) : m_curve(std::move(curve)) {
+PathTable::PathTable(std::shared_ptr<const Curve> curve) : PathTable(std::move(curve), {}) {}
+
+PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends)
+    : m_curve(std::move(curve)), m_ends(std::move(ends)) {
     const Curve& c = *m_curve;
     double u0 = c.u0(), u1 = c.u1();
     if (!std::isfinite(u0) || !std::isfinite(u1) || !(u0 < u1))
@@ -322,13 +349,14 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve) : m_curve(std::move(cur
         }
         m_panels.push_back(d.gauss);
         m_uniform = true;
+        indexNodes();
         return;
     }
     // a coarse look at the whole curve sets the scales of the refinement
     double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
     CurveGeometry g0;
     bool looksUniform = true; // the same ds/du and kappa at every sample
-    for (int i = 0; i <= 64; ++i) {
+    for (int i = m_ends.start ? 1 : 0; i <= (m_ends.end ? 63 : 64); ++i) {
         double u = u0 + (u1 - u0) * i / 64.0;
         CurvePoint p;
         CurveGeometry g = checkedGeometry(c, u, &p);
@@ -375,7 +403,14 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve) : m_curve(std::move(cur
     // they cannot be certified
     std::vector<PanelData> certifiedLeaves;
     if (!uniformAtGaussNodes(refiner.leaves)) {
-        Certifier certifier{c, c.breakpoints().size() >= 2, lengthScale, {}, {}, {}};
+        Certifier certifier{c,
+                            c.breakpoints().size() >= 2,
+                            lengthScale,
+                            m_ends.start ? u0 : NAN,
+                            m_ends.end ? u1 : NAN,
+                            {},
+                            {},
+                            {}};
         for (const PanelData& d : refiner.leaves)
             certifier.certify(d, 0, INFINITY);
         certifiedLeaves = std::move(certifier.leaves);
@@ -388,6 +423,9 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve) : m_curve(std::move(cur
     m_nodes.reserve(leaves.size() + 1);
     m_panels.reserve(leaves.size());
     auto nodeAt = [&](double u) {
+        const std::optional<Cusp>& cusp = u == u0 ? m_ends.start : m_ends.end;
+        if ((u == u0 || u == u1) && cusp)
+            return cuspNode(c, *cusp, u == u0);
         CurvePoint p;
         CurveGeometry g = checkedGeometry(c, u, &p);
         PathNode n;
@@ -414,6 +452,7 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve) : m_curve(std::move(cur
         m_nodes.push_back(n);
         m_panels.push_back(leaf.gauss);
     }
+    indexNodes();
     // the interpolated phi starts from atan2 at the panel's start; add the node's 2 pi n
     for (std::size_t k = 0; k < m_cheb.size(); ++k)
         m_cheb[k].c[0][kPhi] += wraps[k];
@@ -434,11 +473,27 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve) : m_curve(std::move(cur
     }
 }
 
+void PathTable::indexNodes() {
+    m_nodeU.clear();
+    m_nodeU.reserve(m_nodes.size());
+    for (const PathNode& n : m_nodes)
+        m_nodeU.push_back(n.u);
+}
+
 int PathTable::panelOf(double u) const {
-    auto it = std::upper_bound(m_nodes.begin(), m_nodes.end(), u,
-                               [](double v, const PathNode& n) { return v < n.u; });
-    int k = static_cast<int>(it - m_nodes.begin()) - 1;
-    return std::clamp(k, 0, static_cast<int>(m_panels.size()) - 1);
+    // an integrator asks for nearby u in turn: try this thread's last answer first
+    thread_local const PathTable* lastTable = nullptr;
+    thread_local std::size_t lastPanel = 0;
+    if (lastTable == this && lastPanel + 1 < m_nodeU.size() && u >= m_nodeU[lastPanel] &&
+        u < m_nodeU[lastPanel + 1])
+        return static_cast<int>(lastPanel);
+    // over the contiguous u of the nodes: the lookup stays in a few cache lines
+    auto it = std::upper_bound(m_nodeU.begin(), m_nodeU.end(), u);
+    int k = static_cast<int>(it - m_nodeU.begin()) - 1;
+    k = std::clamp(k, 0, static_cast<int>(m_panels.size()) - 1);
+    lastTable = this;
+    lastPanel = static_cast<std::size_t>(k);
+    return k;
 }
 
 PathTable::Partial PathTable::partial(int panel, double u) const {
@@ -452,6 +507,8 @@ PathTable::Partial PathTable::partial(int panel, double u) const {
 }
 
 PathNode PathTable::at(double u) const {
+    if ((m_ends.start && u <= m_nodes.front().u) || (m_ends.end && u >= m_nodes.back().u))
+        return u <= m_nodes.front().u ? m_nodes.front() : m_nodes.back();
     int k = panelOf(u);
     const PathNode& start = m_nodes[k];
     CurvePoint p = m_curve->eval(u);

@@ -2,9 +2,11 @@
 #include "numerics/chebyshev.h"
 #include "numerics/gauss_legendre.h"
 #include "paths/curve.h"
+#include "paths/cusp_finder.h"
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace chaplygin {
@@ -28,6 +30,13 @@ class PathTable {
     /// Tabulates; throws InputError naming the x or u where the curve is undefined,
     /// has no finite tangent or curvature, or stops (r' = 0).
     explicit PathTable(std::shared_ptr<const Curve> curve);
+    /// A stretch of a curve that starts and/or ends at a cusp (docs/physics.md §3): the node there
+    /// carries the limits (speed 0, kappa = +-inf, the tangent line's heading) and the panels
+    /// touching it are left to exact evaluation.
+    struct CuspEnds {
+        std::optional<Cusp> start, end;
+    };
+    PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends);
 
     struct GaussPanel {
         std::array<double, gauss::kPoints> weight; ///< Gauss weight times ds/du: ds at each node
@@ -40,6 +49,8 @@ class PathTable {
     double length() const { return m_nodes.back().s; }
     /// True when ds/du and kappa are constant (lines, circles): the time law is closed form.
     bool uniform() const { return m_uniform; }
+
+    const CuspEnds& cuspEnds() const { return m_ends; }
 
     /// The panel holding u (clamped to the table).
     int panelOf(double u) const;
@@ -83,7 +94,10 @@ class PathTable {
 
   private:
     std::shared_ptr<const Curve> m_curve;
+    void indexNodes();
+    CuspEnds m_ends;
     std::vector<PathNode> m_nodes;
+    std::vector<double> m_nodeU; // m_nodes[k].u, contiguous for panelOf
     std::vector<GaussPanel> m_panels;
     bool m_uniform = false;
     std::vector<ChebPanel> m_cheb;

@@ -33,7 +33,7 @@ struct BodyVectors {
 /// The controlled body of a sample, with its control forces.
 BodyState controlledBodyState(const MotionSample& sample);
 /// The free (Lagrange-d'Alembert) body: no control; its knife reaction is
-/// N = -mu = m (1 - a^2/b^2) sdot phidot, eq. (D15).
+/// N = -mu = m (1 - a^2/b^2) sdot phidot, paper (D15).
 BodyState freeBodyState(const DerivedSystem& system, const FreeState& free);
 
 BodyVectors bodyVectors(const DerivedSystem& system, const BodyState& body);

@@ -17,14 +17,14 @@ std::optional<PaperPoint> paperClosedForm(const Scene& scene, double t) {
     const double vT = scene.speed;
     PaperPoint p;
     if (scene.preset == "line") {
-        // y = A x + B with A = 0.5, B = 1 from x = 0; sdot = v_T, eqs. (80)-(81)
+        // y = A x + B with A = 0.5, B = 1 from x = 0; sdot = v_T, paper (80)-(81)
         const double A = 0.5, B = 1;
         p.x = vT * t / std::sqrt(1 + A * A);
         p.y = A * p.x + B;
         p.equations = "eqs. (80)-(81)";
         return p;
     }
-    // circle R = 2 from (R, 0) counter-clockwise: w = v_T/sqrt(b^2 + R^2), eqs. (93)-(95)
+    // circle R = 2 from (R, 0) counter-clockwise: w = v_T/sqrt(b^2 + R^2), paper (93)-(95)
     const double R = 2, b = deriveSystem(scene.system).b;
     const double w = vT / std::sqrt(b * b + R * R);
     p.x = R * std::cos(w * t);

@@ -14,9 +14,9 @@ struct PaperPoint {
 };
 
 /// For the unmodified line and circle presets in constant-energy mode (any system, any v_T):
-/// line y = A x + B from x = 0, eqs. (80)-(81): x = v_T t/sqrt(1 + A^2), y = A x + B;
-/// circle of radius R from (R, 0), eqs. (93)-(94): x = R cos(w t), y = R sin(w t) with
-/// w = v_T/sqrt(b^2 + R^2), eq. (95). Empty for every other scene and for negative t.
+/// line y = A x + B from x = 0, paper (80)-(81): x = v_T t/sqrt(1 + A^2), y = A x + B;
+/// circle of radius R from (R, 0), paper (93)-(94): x = R cos(w t), y = R sin(w t) with
+/// w = v_T/sqrt(b^2 + R^2), paper (95). Empty for every other scene and for negative t.
 std::optional<PaperPoint> paperClosedForm(const Scene& scene, double t);
 
 } // namespace chaplygin

@@ -1,6 +1,7 @@
 #include "scene/solution.h"
 
 #include "common/input_error.h"
+#include "control/piece_control.h"
 
 #include <algorithm>
 #include <cmath>
@@ -130,6 +131,13 @@ Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,
         m_models.inversion = "Newton on the interpolated t(u)";
     }
     m_models.control = "closed form in kappa, dkappa/ds and phi (Psi = atan2(1, b kappa))";
+    int cusps = 0;
+    for (const PathPiece& p : m_path->pieces())
+        cusps += p.kind == PathPiece::Kind::Curve && p.table->cuspEnds().end ? 1 : 0;
+    if (cusps > 0)
+        m_models.control += "; through " + std::to_string(cusps) +
+                            " cusp(s): backing up between them (sdot < 0, Psi = atan2(sdot, b "
+                            "phidot) continued), the limits sdot = 0, |phidot| = v_T/b at each";
     m_models.freeVelocity = m_free.velocityModel();
     m_models.freePosition = m_free.positionModel();
     m_models.vakonomic = m_vak.model();
@@ -161,9 +169,8 @@ void Solution::controlledAt(double t, MotionSample& out) const {
     out.s = piece.s0 + n.s;
     out.x = n.x;
     out.y = n.y;
-    out.phi = n.phi + piece.phiOffset;
-    out.kappa = n.kappa;
-    out.control = controlOnCurve(m_params, n.kappa, n.dkappa, out.phi);
+    out.kappa = piece.direction * n.kappa;
+    out.control = controlOnPiece(m_params, piece, n, &out.phi);
 }
 
 MotionSample Solution::at(double t) const {
@@ -218,9 +225,8 @@ std::vector<MotionSample> Solution::controlledAtNodes() const {
             m.s = piece.s0 + nodes[i].s;
             m.x = nodes[i].x;
             m.y = nodes[i].y;
-            m.phi = nodes[i].phi + piece.phiOffset;
-            m.kappa = nodes[i].kappa;
-            m.control = controlOnCurve(m_params, nodes[i].kappa, nodes[i].dkappa, m.phi);
+            m.kappa = piece.direction * nodes[i].kappa;
+            m.control = controlOnPiece(m_params, piece, nodes[i], &m.phi);
             out.push_back(m);
         }
     }

@@ -77,7 +77,7 @@ DerivedSystem sleigh(const SystemSpec& spec) {
     return d;
 }
 
-// vertical rolling disk, eq. (A14): b = R sqrt(I2/(I1 + m R^2)), M_eff = m + I1/R^2, a = 0
+// vertical rolling disk, paper (A14): b = R sqrt(I2/(I1 + m R^2)), M_eff = m + I1/R^2, a = 0
 DerivedSystem disk(const SystemSpec& spec) {
     double m = positive(spec, "m"), r = positive(spec, "R");
     double i1 = nonNegative(spec, "I1"), i2 = positive(spec, "I2");
@@ -89,7 +89,7 @@ DerivedSystem disk(const SystemSpec& spec) {
     return d;
 }
 
-// two-wheeled carriage, eq. (B18): b = sqrt(J/M_eff), M_eff = M + 2(m + I1/R^2),
+// two-wheeled carriage, paper (B18): b = sqrt(J/M_eff), M_eff = M + 2(m + I1/R^2),
 // J = I + 2 I2 + 2 a^2 (m + I1/R^2). Here a is half the axle: the centre of mass sits at the
 // axle's centre (App. B), so the CM offset is 0 and b may be smaller than the half-axle.
 DerivedSystem carriage(const SystemSpec& spec) {

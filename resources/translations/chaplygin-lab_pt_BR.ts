@@ -561,6 +561,33 @@ corpo vakonômico: %1</translation>
     </message>
 </context>
 <context>
+    <name>chaplygin::ui::DockLayout</name>
+    <message>
+        <source>Path</source>
+        <translation>Caminho</translation>
+    </message>
+    <message>
+        <source>System and parameters</source>
+        <translation>Sistema e parâmetros</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Gráficos</translation>
+    </message>
+    <message>
+        <source>Methods</source>
+        <translation>Métodos</translation>
+    </message>
+    <message>
+        <source>Sweep</source>
+        <translation>Varredura</translation>
+    </message>
+    <message>
+        <source>Accuracy</source>
+        <translation>Precisão</translation>
+    </message>
+</context>
+<context>
     <name>chaplygin::ui::GalleryMenu</name>
     <message>
         <source>&amp;Gallery</source>
@@ -659,26 +686,6 @@ corpo vakonômico: %1</translation>
 </context>
 <context>
     <name>chaplygin::ui::MainWindow</name>
-    <message>
-        <source>Path</source>
-        <translation>Caminho</translation>
-    </message>
-    <message>
-        <source>System and parameters</source>
-        <translation>Sistema e parâmetros</translation>
-    </message>
-    <message>
-        <source>Plots</source>
-        <translation>Gráficos</translation>
-    </message>
-    <message>
-        <source>Methods</source>
-        <translation>Métodos</translation>
-    </message>
-    <message>
-        <source>Accuracy</source>
-        <translation>Precisão</translation>
-    </message>
     <message>
         <source>Type a path</source>
         <translation>Digitar um caminho</translation>
@@ -904,10 +911,6 @@ corpo vakonômico: %1</translation>
         <translation>Editar a nota</translation>
     </message>
     <message>
-        <source>Sweep</source>
-        <translation>Varredura</translation>
-    </message>
-    <message>
         <source>Export &amp;animation…</source>
         <translation>Exportar ani&amp;mação…</translation>
     </message>
@@ -944,10 +947,6 @@ corpo vakonômico: %1</translation>
         <translation>Desenhar um terceiro corpo cujo multiplicador obedece à sua própria equação (21): ele não consegue seguir o caminho</translation>
     </message>
     <message>
-        <source>Presentation &amp;scale</source>
-        <translation>Esca&amp;la da apresentação</translation>
-    </message>
-    <message>
         <source>Play &amp;new scenes at once</source>
         <translation>Reproduzir &amp;novas cenas imediatamente</translation>
     </message>
@@ -976,8 +975,8 @@ corpo vakonômico: %1</translation>
         <translation>Métodos &amp;numéricos</translation>
     </message>
     <message>
-        <source>&lt;h3&gt;Chaplygin Lab %1&lt;/h3&gt;&lt;p&gt;Control of nonholonomic Chaplygin systems for teaching: the sleigh, the rolling disk and the two-wheeled carriage follow a prescribed path, beside the free motion from the same start.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Paper:&lt;/b&gt; Antunes, Sigaud, de Moraes, &lt;i&gt;Controlling nonholonomic Chaplygin systems&lt;/i&gt;, Brazilian Journal of Physics (2009).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Licence:&lt;/b&gt; not yet chosen by the authors; until it is, ask them before redistributing. Third-party components keep their own licences: Qt %2 (LGPL v3), QCustomPlot (GPL v3), GiNaC (GPL v2 or later).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Credits:&lt;/b&gt; the Chaplygin Lab contributors; the equations of motion after the paper above, re-derived in the physics notes (Help).&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;Chaplygin Lab %1&lt;/h3&gt;&lt;p&gt;Controle de sistemas de Chaplygin não holonômicos para o ensino: o trenó, o disco rolante e o carrinho de duas rodas seguem um caminho prescrito, ao lado do movimento livre a partir do mesmo início.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Artigo:&lt;/b&gt; Antunes, Sigaud, de Moraes, &lt;i&gt;Controlling nonholonomic Chaplygin systems&lt;/i&gt;, Brazilian Journal of Physics (2009).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Licença:&lt;/b&gt; ainda não escolhida pelos autores; até que seja, consulte-os antes de redistribuir. Os componentes de terceiros mantêm as suas próprias licenças: Qt %2 (LGPL v3), QCustomPlot (GPL v3), GiNaC (GPL v2 ou posterior).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Créditos:&lt;/b&gt; os colaboradores do Chaplygin Lab; as equações de movimento seguem o artigo acima e são deduzidas novamente nas notas de física (Ajuda).&lt;/p&gt;</translation>
+        <source>&lt;h3&gt;Chaplygin Lab %1&lt;/h3&gt;&lt;p&gt;Control of nonholonomic Chaplygin systems for teaching: the sleigh, the rolling disk and the two-wheeled carriage follow a prescribed path, beside the free motion from the same start.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Paper:&lt;/b&gt; Antunes, Sigaud, de Moraes, &lt;i&gt;Controlling nonholonomic Chaplygin systems&lt;/i&gt;, Brazilian Journal of Physics (2009).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Licence:&lt;/b&gt; GNU General Public License, version 3 or later (the file COPYING). Components keep their own licences: Qt %2 (LGPL v3), QCustomPlot (GPL v3), GiNaC (GPL v2 or later), GSL (GPL v3), muparser (BSD).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Credits:&lt;/b&gt; the Chaplygin Lab contributors; the equations of motion after the paper above, re-derived in the physics notes (Help).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Chaplygin Lab %1&lt;/h3&gt;&lt;p&gt;Controle de sistemas de Chaplygin não holonômicos para o ensino: o trenó, o disco rolante e o carrinho de duas rodas seguem um caminho prescrito, ao lado do movimento livre a partir do mesmo início.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Artigo:&lt;/b&gt; Antunes, Sigaud, de Moraes, &lt;i&gt;Controlling nonholonomic Chaplygin systems&lt;/i&gt;, Brazilian Journal of Physics (2009).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Licença:&lt;/b&gt; GNU General Public License, versão 3 ou posterior (o arquivo COPYING). Os componentes mantêm as suas próprias licenças: Qt %2 (LGPL v3), QCustomPlot (GPL v3), GiNaC (GPL v2 ou posterior), GSL (GPL v3), muparser (BSD).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Créditos:&lt;/b&gt; os colaboradores do Chaplygin Lab; as equações de movimento seguem o artigo acima e são deduzidas novamente nas notas de física (Ajuda).&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -1383,6 +1382,10 @@ O que os estudantes devem observar…</translation>
     <message>
         <source>Leave presentation mode</source>
         <translation>Sair do modo de apresentação</translation>
+    </message>
+    <message>
+        <source>Presentation &amp;scale</source>
+        <translation>Esca&amp;la da apresentação</translation>
     </message>
 </context>
 <context>

@@ -1,20 +1,7 @@
 #!/usr/bin/env bash
 # One command-line test case: cli_test.sh EXE CASE. Exits non-zero with a message on failure.
 set -u
-exe=$1
-case_name=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL ($case_name): $*" >&2; exit 1; }
-
-# run EXPECTED_STATUS args...: runs the CLI, keeps stdout/stderr, checks the exit status
-run() {
-  local expected=$1; shift
-  "$exe" --headless "$@" >"$work/out" 2>"$work/err"
-  local status=$?
-  [ "$status" -eq "$expected" ] || fail "exit $status, expected $expected for: $* ; stderr: $(cat "$work/err")"
-}
-expect_err() { grep -q -- "$1" "$work/err" || fail "stderr lacks '$1': $(cat "$work/err")"; }
+source "$(dirname "$0")/cli_case.sh" "$@"
 # max |column(a) - expr| over the CSV rows, with awk (no other tools needed)
 max_abs() { awk -F, -v col="$2" "NR>1 { d = \$col - ($3); if (d < 0) d = -d; if (d > m) m = d } END { printf \"%.3g\", m + 0 }" "$1"; }
 below() { awk -v v="$1" -v tol="$2" 'BEGIN { exit !(v <= tol) }' || fail "$3: error $1 > $2"; }
@@ -118,7 +105,8 @@ bad_expression)
   expect_err "path at x = 0"
   run 2 --path "y=sqrt(x)" --x-range -1,1
   expect_err "path at x = -1"
-  run 2 --path "x=u^2;y=u^3" --u-range -1,1
+  run 2 --path "x=u^2;y=u^4" --u-range -1,1
+  run 2 --path "x=u^2;y=u^3" --u-range -1,1 --mode speed
   expect_err "path at u = 0"
   ;;
 bad_parameter)

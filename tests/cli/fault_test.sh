@@ -4,12 +4,8 @@
 # the writer may not change, as an unprivileged user (root ignores permissions).
 # Exit 77 (skipped) where the machine does not allow the namespace or the user switch.
 set -u
-exe=$1
-case_name=$2
-work=$(mktemp -d)
+source "$(dirname "$0")/cli_case.sh" "$@"
 chmod 755 "$work"
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL ($case_name): $*" >&2; exit 1; }
 # skipped, with the reason in the test's output
 skip() { echo "SKIP ($case_name): $*"; exit 77; }
 

@@ -1,19 +1,7 @@
 #!/usr/bin/env bash
 # Command-line cases of --sweep and --animation: sweep_animation_test.sh EXE CASE.
 set -u
-exe=$1
-case_name=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-fail() { echo "FAIL ($case_name): $*" >&2; exit 1; }
-
-run() {
-  local expected=$1; shift
-  "$exe" --headless "$@" >"$work/out" 2>"$work/err"
-  local status=$?
-  [ "$status" -eq "$expected" ] || fail "exit $status, expected $expected for: $* ; stderr: $(cat "$work/err")"
-}
-expect_err() { grep -q -- "$1" "$work/err" || fail "stderr lacks '$1': $(cat "$work/err")"; }
+source "$(dirname "$0")/cli_case.sh" "$@"
 # frames of a video, counted by decoding it
 frames() { ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 "$1"; }
 codec() { ffprobe -v error -select_streams v:0 -show_entries stream=codec_name -of csv=p=0 "$1"; }

@@ -1,7 +1,9 @@
-// libFuzzer target: the expression front end and the path tabulation behind it.
+// libFuzzer target: the expression front end, the path tabulation behind it and the cusp search.
 // Any input must end in a compiled expression or an InputError: never a crash, a hang or UB.
 #include "common/input_error.h"
+#include "paths/cusp_finder.h"
 #include "paths/expression.h"
+#include "paths/expression_curve.h"
 #include "paths/path.h"
 
 #include <cmath>
@@ -15,6 +17,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         for (double x : {-1.5, 0.0, 0.25, 2.0}) {
             chaplygin::Jet3 j = e.jet(x);
             (void)j;
+        }
+        try {
+            // the same expression as y(u) beside x = u^2, whose x' vanishes at u = 0
+            chaplygin::ParametricCurve c(chaplygin::Expression::compile("x^2", "x", "x(u)"), e, -1,
+                                         1);
+            for (const chaplygin::Cusp& cusp : chaplygin::findCusps(c))
+                if (!(cusp.u > -1 && cusp.u < 1) || !std::isfinite(cusp.turnRate))
+                    __builtin_trap();
+        } catch (const chaplygin::InputError&) {
         }
         chaplygin::PathSource p;
         p.kind = chaplygin::PathKind::Graph;

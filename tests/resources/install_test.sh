@@ -49,10 +49,10 @@ rows=$(($(wc -l <out.csv) - 1))
 tail -1 out.csv | awk -F, '{ d = $1 - 2 * 3.14159265358979 * sqrt(5); if (d < -1e-9 || d > 1e-9) { print "FAIL: t_end " $1; exit 1 } }'
 # an installed gallery scene: refused, naming the place
 set +e
-"$usr/bin/chaplygin-lab" --headless --scene "$usr/share/chaplygin-lab/scenes/gallery/cusp.json" --csv cusp.csv 2>err.txt
+"$usr/bin/chaplygin-lab" --headless --scene "$usr/share/chaplygin-lab/scenes/gallery/corner-constant-speed.json" --csv corner.csv 2>err.txt
 rc=$?
 set -e
-[ "$rc" -eq 2 ] || fail "the cusp scene exited $rc, expected 2"
-grep -q "path at u = 0" err.txt || fail "the cusp refusal does not name the place: $(cat err.txt)"
-[ ! -e cusp.csv ] || fail "a refused scene wrote cusp.csv"
+[ "$rc" -eq 2 ] || fail "the constant-speed corner scene exited $rc, expected 2"
+grep -q "corner at (" err.txt || fail "the corner refusal does not name the place: $(cat err.txt)"
+[ ! -e corner.csv ] || fail "a refused scene wrote corner.csv"
 echo "installed layout and headless run OK"

@@ -80,6 +80,7 @@ class TestInstruments : public QObject {
     void galleryNoteShown();
     void equationsFollowTimeSystemAndMode();
     void equationsInBackgroundTabWaitUntilRaised();
+    void equationsWhileBackingUpThroughACusp();
     void screenshotShowsArrowsAndEquations();
 
   private:
@@ -429,6 +430,28 @@ void TestInstruments::galleryNoteShown() {
     QCOMPARE(notes->note(), QString::fromStdString(e.scene.note));
     QVERIFY(notes->view()->toPlainText().contains(QStringLiteral("pivot")) ||
             notes->view()->toPlainText().contains(QStringLiteral("turns about")));
+}
+
+void TestInstruments::equationsWhileBackingUpThroughACusp() {
+    auto* panel = m_window->findChild<EquationsPanel*>();
+    QVERIFY(m_window->loadGalleryEntry(QStringLiteral("cusp")));
+    const auto& solution = m_window->document()->solution();
+    QCOMPARE(solution->path()->pieces().size(), std::size_t(2));
+    // before the cusp: the forward branch; after it: sdot < 0 and Psi < 0, shown as atan2(sdot, b
+    // phidot)
+    m_window->playback()->seek(1.0);
+    QVERIFY(panel->html().contains(QStringLiteral("atan2(1, b\u03ba)")));
+    const double after = 0.75 * solution->duration();
+    m_window->playback()->seek(after);
+    MotionSample m = solution->at(after);
+    QVERIFY(m.control.sdot < 0 && m.control.psi < 0);
+    const QString html = panel->html();
+    QVERIFY2(html.contains(QStringLiteral("atan2(\u1e61, b\u03c6\u0307)")), qPrintable(html));
+    QString psi = QString::number(m.control.psi, 'g', 4).replace(u'-', QStringLiteral("\u2212"));
+    QVERIFY2(html.contains(QStringLiteral("<b>= %1</b>").arg(psi)), qPrintable(html));
+    // dt/ds is the time per metre travelled: positive while backing up
+    QString rate = QString::number(1 / std::fabs(m.control.sdot), 'g', 4);
+    QVERIFY2(html.contains(QStringLiteral("<b>= %1</b>").arg(rate)), qPrintable(html));
 }
 
 void TestInstruments::equationsFollowTimeSystemAndMode() {

@@ -5,6 +5,7 @@
 
 #include <QFormLayout>
 #include <QLabel>
+#include <QResizeEvent>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -165,6 +166,13 @@ void AccuracyReadout::refresh() {
     m_controlledDrift->setText(v.controlledDrift ? relative(*v.controlledDrift)
                                                  : tr("T varies by design in constant-speed mode"));
     m_freeDrift->setText(relative(v.freeDrift));
+}
+
+void AccuracyReadout::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    // the form keeps the row heights of the old width otherwise: a wrapped value shows one line
+    if (event->oldSize().width() != event->size().width())
+        layout()->invalidate();
 }
 
 } // namespace chaplygin::ui

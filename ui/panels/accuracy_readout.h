@@ -44,6 +44,9 @@ class AccuracyReadout : public QWidget {
     /// A note above the numbers; warning draws it as a refusal. Empty text hides it.
     void setNote(const QString& title, const QString& text, bool warning = false);
 
+  protected:
+    void resizeEvent(QResizeEvent* event) override;
+
   private:
     void onSolutionChanged();
 

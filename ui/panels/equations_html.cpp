@@ -103,6 +103,15 @@ QString equationsHtml(const Solution& s, double t) {
                  QCoreApplication::translate("EquationsPanel",
                                              "pivot about P, docs/physics.md \u00a7"
                                              "2.8"));
+    } else if (!(c.sdot > 0)) {
+        h +=
+            row(QStringLiteral("\u03a8 = atan2(\u1e61, b\u03c6\u0307)"),
+                QStringLiteral("atan2(%1, %2 \u00b7 %3)").arg(num(c.sdot), num(d.b), num(c.phidot)),
+                c.psi, QStringLiteral("rad"),
+                QCoreApplication::translate("EquationsPanel",
+                                            "at or after a cusp the sleigh backs up: \u03a8 "
+                                            "leaves (0, \u03c0) continuously (docs/physics.md "
+                                            "\u00a73)"));
     } else {
         h += row(QStringLiteral("\u03a8 = atan2(1, b\u03ba)"),
                  QStringLiteral("atan2(1, %1 \u00b7 %2)").arg(num(d.b), num(m.kappa)), c.psi,
@@ -129,8 +138,9 @@ QString equationsHtml(const Solution& s, double t) {
                  QStringLiteral("%1 \u00b7 %2").arg(num(m.kappa), num(c.sdot)), c.phidot,
                  QStringLiteral("rad/s"), QStringLiteral("(35)"));
         h += row(
-            QStringLiteral("dt/ds = \u221a(1 + b\u00b2\u03ba\u00b2)/v_T = 1/\u1e61"),
-            QStringLiteral("1/%1").arg(num(c.sdot)), 1 / c.sdot, QStringLiteral("s/m"),
+            QStringLiteral("dt/ds = \u221a(1 + b\u00b2\u03ba\u00b2)/v_T = 1/|\u1e61|"),
+            QStringLiteral("1/%1").arg(num(std::fabs(c.sdot))), 1 / std::fabs(c.sdot),
+            QStringLiteral("s/m"),
             QCoreApplication::translate(
                 "EquationsPanel",
                 "(51); (52)\u2013(53) corrected: 1/sin \u03a8 = \u221a(1 + b\u00b2\u03ba\u00b2)"));

@@ -1,6 +1,7 @@
 #include "plots/pinned_plots.h"
 
 #include "document/pin_set.h"
+#include "plots/plot_figures.h"
 
 #include <qcustomplot.h>
 
@@ -58,8 +59,8 @@ void addPinnedSeries(QCustomPlot& plot, PlotKind kind, PinSet& pins) {
     }
     // the legend under a plot wraps into rows of three so that every name stays readable
     if (legend && legend->fillOrder() == QCPLegend::foColumnsFirst) {
-        legend->setWrap(3);
-        legend->setFillOrder(QCPLegend::foColumnsFirst, true); // rearranges the items in place
+        legend->setProperty("maxColumns", 3);
+        fitLegendToWidth(plot);
     }
 }
 

@@ -291,4 +291,24 @@ void addCaption(QCustomPlot& plot, const QString& caption) {
     grid->addElement(0, 0, text);
 }
 
+void fitLegendToWidth(QCustomPlot& plot) {
+    QCPLegend* legend = nullptr;
+    for (int i = 0; i < plot.plotLayout()->elementCount(); ++i)
+        if (auto* l = qobject_cast<QCPLegend*>(plot.plotLayout()->elementAt(i)))
+            legend = l;
+    if (!legend || legend->fillOrder() != QCPLegend::foColumnsFirst)
+        return;
+    int columns = 0; // entries (a wrapped legend has empty cells too)
+    for (int i = 0; i < legend->itemCount(); ++i)
+        columns += legend->item(i) ? 1 : 0;
+    if (const int cap = legend->property("maxColumns").toInt(); cap > 0)
+        columns = std::min(columns, cap);
+    for (;; --columns) {
+        legend->setWrap(columns);
+        legend->setFillOrder(QCPLegend::foColumnsFirst, true); // rearranges the items in place
+        if (columns <= 1 || legend->minimumOuterSizeHint().width() <= plot.width())
+            return;
+    }
+}
+
 } // namespace chaplygin::ui

@@ -30,6 +30,11 @@ void fitEqualAspect(QCPAxisRect& rect, const QRectF& data);
 /// The font and line scale and the palette drawPlot uses for this plot from now on.
 void setPlotLook(QCustomPlot& plot, const CanvasStyle& look);
 
+/// Wraps the legend in the row under a lone plot into as many columns as fit the plot's width
+/// (at most the legend's "maxColumns" property when set), so that no entry is cut off. Call
+/// after drawing and after every resize.
+void fitLegendToWidth(QCustomPlot& plot);
+
 /// Adds the caption line above the plot(s).
 void addCaption(QCustomPlot& plot, const QString& caption);
 

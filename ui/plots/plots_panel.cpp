@@ -48,6 +48,7 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
         connect(plot, &QCustomPlot::mouseMove, this, seek);
         m_grid->addWidget(plot, i / 2, i % 2);
         m_plots[i] = plot;
+        plot->installEventFilter(this); // the legend follows the plot's width
         installPlotExportMenu(
             plot, [i] { return plotFileStem(kKinds[i]); },
             [this](const QString& error) { emit exportFailed(error); });
@@ -68,10 +69,21 @@ void PlotsPanel::resizeEvent(QResizeEvent* e) {
     QWidget::resizeEvent(e);
 }
 
+bool PlotsPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (event->type() == QEvent::Resize)
+        for (QCustomPlot* plot : m_plots)
+            if (plot == watched) {
+                fitLegendToWidth(*plot);
+                plot->replot(QCustomPlot::rpQueuedReplot);
+            }
+    return QWidget::eventFilter(watched, event);
+}
+
 void PlotsPanel::refresh() {
     for (int i = 0; i < 4; ++i) {
         drawPlot(*m_plots[i], kKinds[i], m_document->series());
         addPinnedSeries(*m_plots[i], kKinds[i], *PinSet::of(m_document));
+        fitLegendToWidth(*m_plots[i]);
         m_plots[i]->replot(QCustomPlot::rpQueuedReplot);
     }
 }

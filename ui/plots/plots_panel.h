@@ -44,6 +44,7 @@ class PlotsPanel : public QWidget {
 
   protected:
     void resizeEvent(QResizeEvent* e) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
     void placeCursor(int index);

@@ -1,11 +1,18 @@
 #include "shell/help_window.h"
 
+#include <QAbstractTextDocumentLayout>
 #include <QFile>
 #include <QHBoxLayout>
+#include <QImage>
 #include <QListWidget>
+#include <QScrollBar>
 #include <QTextBlock>
 #include <QTextBrowser>
+#include <QTextCursor>
 #include <QTextDocument>
+
+#include <algorithm>
+#include <cmath>
 
 // the resources live in a static library: they are registered by name before first use
 static void initHelpResources() {
@@ -63,6 +70,10 @@ HelpWindow::HelpWindow(QWidget* parent) : QWidget(parent, Qt::Window) {
         if (row >= 0 && m_list->currentRow() != row)
             m_list->setCurrentRow(row);
     });
+    // the text area's width changes: the pictures follow it, the heading stays at the top
+    m_browser->viewport()->installEventFilter(this);
+    connect(m_browser->verticalScrollBar(), &QScrollBar::actionTriggered, this,
+            [this] { m_headingBlock = -1; });
     resize(900, 700);
     showTopic(QStringLiteral("user-guide.md"));
 }
@@ -71,9 +82,12 @@ bool HelpWindow::showTopic(const QString& document, const QString& section) {
     const QString path = QStringLiteral(":/help/") + document;
     if (!documents().contains(document) || !QFile::exists(path))
         return false;
-    if (document != m_current || m_browser->document()->isEmpty())
+    if (document != m_current || m_browser->document()->isEmpty()) {
         m_browser->setSource(QUrl(QStringLiteral("qrc") + path), QTextDocument::MarkdownResource);
+        fitPictures();
+    }
     m_current = document;
+    m_headingBlock = -1;
     if (section.isEmpty()) {
         m_browser->moveCursor(QTextCursor::Start);
         return true;
@@ -81,13 +95,64 @@ bool HelpWindow::showTopic(const QString& document, const QString& section) {
     // Markdown headings carry no anchors: find the heading block and scroll to it
     for (QTextBlock b = m_browser->document()->begin(); b.isValid(); b = b.next()) {
         if (b.blockFormat().headingLevel() > 0 && b.text().contains(section, Qt::CaseInsensitive)) {
-            QTextCursor c(b);
-            m_browser->setTextCursor(c);
-            m_browser->ensureCursorVisible();
+            m_browser->setTextCursor(QTextCursor(b));
+            m_headingBlock = b.blockNumber();
+            scrollToBlock(m_headingBlock);
             return true;
         }
     }
     return false;
+}
+
+void HelpWindow::scrollToBlock(int blockNumber) {
+    // the heading at the top of the view, the section below it
+    QTextDocument* doc = m_browser->document();
+    QTextBlock block = doc->findBlockByNumber(blockNumber);
+    if (block.isValid())
+        m_browser->verticalScrollBar()->setValue(
+            int(doc->documentLayout()->blockBoundingRect(block).top()));
+}
+
+void HelpWindow::fitPictures() {
+    QTextDocument* doc = m_browser->document();
+    const double room =
+        std::max(50.0, m_browser->viewport()->width() - 2 * doc->documentMargin() - 4);
+    for (QTextBlock b = doc->begin(); b.isValid(); b = b.next()) {
+        for (auto it = b.begin(); !it.atEnd(); ++it) {
+            const QTextFragment fragment = it.fragment();
+            if (!fragment.charFormat().isImageFormat())
+                continue;
+            QTextImageFormat image = fragment.charFormat().toImageFormat();
+            const QImage picture =
+                doc->resource(QTextDocument::ImageResource, QUrl(image.name())).value<QImage>();
+            if (picture.isNull())
+                continue;
+            const double width = std::min(double(picture.width()), room);
+            if (std::abs(image.width() - width) < 0.5)
+                continue;
+            image.setWidth(width);
+            image.setHeight(width * picture.height() / picture.width());
+            QTextCursor c(doc);
+            c.setPosition(fragment.position());
+            c.setPosition(fragment.position() + fragment.length(), QTextCursor::KeepAnchor);
+            c.setCharFormat(image);
+        }
+    }
+}
+
+bool HelpWindow::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_browser->viewport() && event->type() == QEvent::Resize) {
+        // after the browser has laid the text out at its new width
+        QMetaObject::invokeMethod(
+            this,
+            [this] {
+                fitPictures();
+                if (m_headingBlock >= 0)
+                    scrollToBlock(m_headingBlock);
+            },
+            Qt::QueuedConnection);
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 } // namespace chaplygin::ui

@@ -25,10 +25,18 @@ class HelpWindow : public QWidget {
     QTextBrowser* browser() const { return m_browser; }
     QString currentDocument() const { return m_current; }
 
+  protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
   private:
+    /// Scales the pictures wider than the text area down to its width.
+    void fitPictures();
+    void scrollToBlock(int blockNumber);
+
     QListWidget* m_list;
     QTextBrowser* m_browser;
     QString m_current;
+    int m_headingBlock = -1; // kept at the top until the reader scrolls
 };
 
 } // namespace chaplygin::ui

@@ -20,6 +20,7 @@
 #include "scene/scene_json.h"
 #include "shell/animation_dialog.h"
 #include "shell/body_display_menu.h"
+#include "shell/dock_layout.h"
 #include "shell/elided_label.h"
 #include "shell/gallery_menu.h"
 #include "shell/instruments.h"
@@ -39,8 +40,6 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QScreen>
-#include <QScrollArea>
 #include <QSettings>
 #include <QStatusBar>
 #include <QUndoStack>
@@ -51,23 +50,6 @@
 
 namespace chaplygin::ui {
 
-namespace {
-
-QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content,
-                      QMainWindow* parent) {
-    auto* dock = new QDockWidget(title, parent);
-    dock->setObjectName(name);
-    auto* scroll = new QScrollArea;
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-    scroll->setWidget(content);
-    dock->setWidget(scroll);
-    return dock;
-}
-
-} // namespace
-
 MainWindow::MainWindow(bool useSettings, QWidget* parent)
     : QMainWindow(parent), m_useSettings(useSettings), m_document(new SceneDocument(this)),
       m_playback(new Playback(this)), m_undo(new QUndoStack(this)) {
@@ -77,43 +59,18 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     m_path = new PathPanel;
     m_parameters = new ParametersPanel;
     m_plots = new PlotsPanel(m_document);
-    m_pathDock = makeDock(tr("Path"), QStringLiteral("pathDock"), m_path, this);
-    m_parametersDock =
-        makeDock(tr("System and parameters"), QStringLiteral("parametersDock"), m_parameters, this);
-    m_plotsDock = new QDockWidget(tr("Plots"), this);
-    m_plotsDock->setObjectName(QStringLiteral("plotsDock"));
-    m_plotsDock->setWidget(m_plots);
-    addDockWidget(Qt::LeftDockWidgetArea, m_pathDock);
-    addDockWidget(Qt::LeftDockWidgetArea, m_parametersDock);
-    tabifyDockWidget(m_pathDock, m_parametersDock);
-    m_pathDock->raise();
-    addDockWidget(Qt::BottomDockWidgetArea, m_plotsDock);
     m_methods = new MethodsPanel(m_document);
-    m_methodsDock = new QDockWidget(tr("Methods"), this);
-    m_methodsDock->setObjectName(QStringLiteral("methodsDock"));
-    m_methodsDock->setWidget(m_methods);
-    addDockWidget(Qt::BottomDockWidgetArea, m_methodsDock);
-    tabifyDockWidget(m_plotsDock, m_methodsDock);
     m_sweep = new SweepPanel(m_document);
-    m_sweepDock = new QDockWidget(tr("Sweep"), this);
-    m_sweepDock->setObjectName(QStringLiteral("sweepDock"));
-    m_sweepDock->setWidget(m_sweep);
-    addDockWidget(Qt::BottomDockWidgetArea, m_sweepDock);
-    tabifyDockWidget(m_methodsDock, m_sweepDock);
-    m_plotsDock->raise();
     m_accuracy = new AccuracyReadout(m_document);
-    m_accuracyDock = makeDock(tr("Accuracy"), QStringLiteral("accuracyDock"), m_accuracy, this);
-    addDockWidget(Qt::RightDockWidgetArea, m_accuracyDock);
-    m_accuracyDock->setMinimumWidth(240);
-    m_pathDock->setMinimumWidth(360);
-    m_parametersDock->setMinimumWidth(360);
+    m_docks = placeDocks(this, {m_path, m_parameters, m_plots, m_methods, m_sweep, m_accuracy});
 
     m_timeline = new TimelineBar(m_playback, this);
     addToolBar(Qt::BottomToolBarArea, m_timeline);
     m_status = new ElidedLabel;
     statusBar()->addWidget(m_status, 1);
     m_presentation = new PresentationMode(
-        this, m_canvas, m_plots, {m_pathDock, m_parametersDock, m_methodsDock, m_accuracyDock},
+        this, m_canvas, m_plots,
+        {m_docks.path, m_docks.parameters, m_docks.methods, m_docks.sweep, m_docks.accuracy},
         {m_timeline});
     m_timeline->addAction(m_presentation->toggleAction());
     new SpaceToPlay(this, m_timeline->playAction());
@@ -158,23 +115,12 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     connect(m_sweep, &SweepPanel::sceneEdited, this, &MainWindow::onParametersEdited);
     installInstruments(this);
 
-    bool restored = false;
-    if (m_useSettings) {
-        QSettings settings;
-        restored = restoreGeometry(settings.value(QStringLiteral("geometry")).toByteArray());
-        restoreState(settings.value(QStringLiteral("windowState")).toByteArray());
-    }
-    if (!restored && m_useSettings && screen()) {
-        // first start: sized to the screen
-        FirstStart first = firstStartGeometry(screen()->availableGeometry());
-        setGeometry(first.geometry);
-        if (first.maximised)
-            setWindowState(Qt::WindowMaximized);
-        balanceDocks();
-    } else if (!restored) {
+    if (!m_useSettings)
         resize(1280, 800);
+    const bool firstStart = !m_useSettings || !restoreWindowLayout(this);
+    if (firstStart)
         balanceDocks();
-    }
+    new DockBalancer(this, m_docks, firstStart);
     loadScene(presetScene("sinusoid"));
 }
 
@@ -184,29 +130,11 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::balanceDocks() {
-    // a narrow window: the right-hand docks (accuracy, notes, equations) join the path and
-    // parameters tabs, the canvas keeps its width
-    if (width() < 1200) {
-        QDockWidget* last = m_parametersDock;
-        for (QDockWidget* dock : findChildren<QDockWidget*>()) {
-            if (dockWidgetArea(dock) != Qt::RightDockWidgetArea || dock->isFloating())
-                continue;
-            addDockWidget(Qt::LeftDockWidgetArea, dock);
-            tabifyDockWidget(last, dock);
-            last = dock;
-        }
-        if (last != m_parametersDock)
-            m_pathDock->raise();
-    }
-    // the canvas gets most of the height; the plots a third (a quarter on low screens)
-    resizeDocks({m_plotsDock}, {height() < 900 ? std::max(200, height() / 4) : height() / 3},
-                Qt::Vertical);
-    resizeDocks({m_pathDock}, {std::max(360, width() / 4)}, Qt::Horizontal);
+    chaplygin::ui::balanceDocks(this, m_docks);
 }
 
 void MainWindow::showParametersDock() {
-    m_parametersDock->show();
-    m_parametersDock->raise();
+    bringDockForward(this, m_docks.parameters);
 }
 
 void MainWindow::buildMenus() {
@@ -242,12 +170,12 @@ void MainWindow::buildMenus() {
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->setObjectName(QStringLiteral("viewMenu"));
-    view->addAction(m_pathDock->toggleViewAction());
-    view->addAction(m_parametersDock->toggleViewAction());
-    view->addAction(m_plotsDock->toggleViewAction());
-    view->addAction(m_methodsDock->toggleViewAction());
-    view->addAction(m_accuracyDock->toggleViewAction());
-    view->addAction(m_sweepDock->toggleViewAction());
+    view->addAction(m_docks.path->toggleViewAction());
+    view->addAction(m_docks.parameters->toggleViewAction());
+    view->addAction(m_docks.plots->toggleViewAction());
+    view->addAction(m_docks.methods->toggleViewAction());
+    view->addAction(m_docks.accuracy->toggleViewAction());
+    view->addAction(m_docks.sweep->toggleViewAction());
     view->addAction(m_timeline->toggleViewAction());
     view->addSeparator();
     view->addAction(tr("&Fit scene"), QKeySequence(tr("Ctrl+0")), m_canvas, &SceneCanvas::fitScene);
@@ -271,15 +199,7 @@ void MainWindow::buildMenus() {
     view->addMenu(m_bodyMenu);
     connect(m_bodyMenu, &BodyDisplayMenu::styleChosen, this, &MainWindow::setUserStyle);
     view->addAction(m_presentation->toggleAction());
-    QMenu* scaleMenu = view->addMenu(tr("Presentation &scale"));
-    for (double f : {1.4, 1.6, 2.0, 2.5}) {
-        QAction* a = scaleMenu->addAction(QStringLiteral("\u00d7%1").arg(f), this,
-                                          [this, f] { m_presentation->setScale(f); });
-        a->setCheckable(true);
-        a->setChecked(std::abs(m_presentation->scale() - f) < 1e-9);
-        connect(scaleMenu, &QMenu::aboutToShow, a,
-                [this, a, f] { a->setChecked(std::abs(m_presentation->scale() - f) < 1e-9); });
-    }
+    view->addMenu(m_presentation->makeScaleMenu(view));
     view->addMenu(new LanguageMenu(view));
 
     QMenu* play = menuBar()->addMenu(tr("&Animation"));
@@ -465,18 +385,15 @@ void MainWindow::onSolutionChanged() {
 }
 
 void MainWindow::showMethodsDock() {
-    m_methodsDock->show();
-    m_methodsDock->raise();
     // the diagram's legends need about half the height
-    resizeDocks({m_methodsDock}, {std::max(360, height() * 9 / 20)}, Qt::Vertical);
+    bringDockForward(this, m_docks.methods, std::max(360, height() * 9 / 20));
 }
 
 bool MainWindow::loadGalleryEntry(const QString& name) {
     const GalleryEntry& entry = galleryEntry(name.toStdString());
     const QString title = QString::fromStdString(entry.title);
     const QString explanation = QString::fromStdString(entry.scene.note);
-    m_accuracyDock->show();
-    m_accuracyDock->raise();
+    bringDockForward(this, m_docks.accuracy);
     try {
         m_document->check(entry.scene); // the core's refusal is the lesson of a rejected entry
     } catch (const InputError& e) {
@@ -629,9 +546,7 @@ void MainWindow::exportCsvDialog() {
 }
 
 void MainWindow::showSweepDock() {
-    m_sweepDock->show();
-    m_sweepDock->raise();
-    resizeDocks({m_sweepDock}, {std::max(300, height() * 2 / 5)}, Qt::Vertical);
+    bringDockForward(this, m_docks.sweep, std::max(300, height() * 2 / 5));
 }
 
 void MainWindow::exportAnimationDialog() {
@@ -675,11 +590,8 @@ void MainWindow::closeEvent(QCloseEvent* e) {
         e->ignore();
         return;
     }
-    if (m_useSettings) {
-        QSettings settings;
-        settings.setValue(QStringLiteral("geometry"), saveGeometry());
-        settings.setValue(QStringLiteral("windowState"), saveState());
-    }
+    if (m_useSettings)
+        saveWindowLayout(this);
     e->accept();
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 #include "scene/scene.h"
+#include "shell/dock_layout.h"
 
 #include <QMainWindow>
 
@@ -61,7 +62,7 @@ class MainWindow : public QMainWindow {
     /// Shows and raises the Sweep dock.
     void showSweepDock();
 
-    /// Gives the canvas most of the window, the plots dock a third of the height.
+    /// Gives the canvas most of the window (balanceDocks in shell/dock_layout.h).
     void balanceDocks();
     /// Shows and raises the parameters dock (over the path dock when they share tabs).
     void showParametersDock();
@@ -145,13 +146,8 @@ class MainWindow : public QMainWindow {
     MethodsPanel* m_methods;
     AccuracyReadout* m_accuracy;
     TimelineBar* m_timeline;
-    QDockWidget* m_pathDock;
-    QDockWidget* m_parametersDock;
-    QDockWidget* m_plotsDock;
-    QDockWidget* m_methodsDock;
-    QDockWidget* m_accuracyDock;
     SweepPanel* m_sweep;
-    QDockWidget* m_sweepDock;
+    Docks m_docks;
     std::optional<Scene> m_noteScene; // the scene the accuracy dock's note is about
     QMenu* m_recentMenu = nullptr;
     QAction* m_followAction = nullptr;

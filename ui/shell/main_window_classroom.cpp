@@ -45,13 +45,13 @@ void MainWindow::showContextHelp() {
     QWidget* w = QApplication::focusWidget();
     auto inside = [w](QWidget* area) { return w && area && (w == area || area->isAncestorOf(w)); };
     QString section;
-    if (inside(m_parametersDock))
+    if (inside(m_docks.parameters))
         section = QStringLiteral("The system and its parameters");
-    else if (inside(m_pathDock))
+    else if (inside(m_docks.path))
         section = QStringLiteral("Choosing a path");
-    else if (inside(m_methodsDock) || inside(m_accuracyDock))
+    else if (inside(m_docks.methods) || inside(m_docks.accuracy))
         section = QStringLiteral("Methods and accuracy");
-    else if (inside(m_plotsDock))
+    else if (inside(m_docks.plots))
         section = QStringLiteral("Plots");
     else if (inside(m_canvas) || inside(m_timeline))
         section = QStringLiteral("Animation");

@@ -6,6 +6,7 @@
 #include <QAction>
 #include <QDockWidget>
 #include <QMainWindow>
+#include <QMenu>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
@@ -53,6 +54,19 @@ void PresentationMode::setScale(double factor) {
         m_window->setFont(f);
         applyStyle();
     }
+}
+
+QMenu* PresentationMode::makeScaleMenu(QWidget* parent) {
+    auto* menu = new QMenu(tr("Presentation &scale"), parent);
+    for (double f : {1.4, 1.6, 2.0, 2.5}) {
+        QAction* a =
+            menu->addAction(QStringLiteral("\u00d7%1").arg(f), this, [this, f] { setScale(f); });
+        a->setCheckable(true);
+        a->setChecked(std::abs(m_scale - f) < 1e-9);
+        connect(menu, &QMenu::aboutToShow, a,
+                [this, a, f] { a->setChecked(std::abs(m_scale - f) < 1e-9); });
+    }
+    return menu;
 }
 
 void PresentationMode::setBaseStyle(const CanvasStyle& style) {

@@ -10,6 +10,8 @@
 class QAction;
 class QDockWidget;
 class QMainWindow;
+class QMenu;
+class QWidget;
 class QToolBar;
 
 namespace chaplygin::ui {
@@ -34,6 +36,8 @@ class PresentationMode : public QObject {
     /// The scale of fonts and line widths while presenting (QSettings "presentation/scale").
     double scale() const { return m_scale; }
     void setScale(double factor);
+    /// A "Presentation scale" menu whose checked entry follows scale().
+    QMenu* makeScaleMenu(QWidget* parent);
     /// Whether entering goes full screen (off for screenshots, which have a fixed size).
     void setFullScreen(bool on) { m_fullScreen = on; }
 

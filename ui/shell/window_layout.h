@@ -1,6 +1,8 @@
 #pragma once
 #include <QRect>
 
+class QMainWindow;
+
 namespace chaplygin::ui {
 
 /// The window's first start on a screen with the given available geometry: 85 % of it,
@@ -10,5 +12,11 @@ struct FirstStart {
     bool maximised = false;
 };
 FirstStart firstStartGeometry(const QRect& available);
+
+/// Restores the window's geometry and dock state saved in QSettings and returns true; without a
+/// saved geometry (a first start) sizes the window to its screen and returns false.
+bool restoreWindowLayout(QMainWindow* window);
+/// Saves the window's geometry and dock state in QSettings.
+void saveWindowLayout(const QMainWindow* window);
 
 } // namespace chaplygin::ui

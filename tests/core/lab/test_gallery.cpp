@@ -24,7 +24,7 @@ TEST(Gallery, OpenLoopIntegrationDriftsOffTheSinusoid) {
     MethodCase c(presetScene("sinusoid"));
     const std::vector<double> times = evenTimes(c.controlledEnd);
     const long steps = 100;
-    // the paper's open loop, eqs. (35)-(37), against the ODE for the path parameter, same RK4 step
+    // the open loop of paper (35)-(37), against the ODE for the path parameter, same RK4 step
     OpenLoopProblem open(*c.plan);
     PlannedMotion::State s0 = c.plan->at(0);
     double y[3] = {s0.x, s0.y, s0.phi};
@@ -54,7 +54,7 @@ TEST(Gallery, OpenLoopNeverRecoversFromAHeadingError) {
     GslSolve s = integrateGsl(open, GslStepper::Rk8pd, 0, y, c.controlledEnd, 1e-12);
     double v[3];
     s.dense.at(c.controlledEnd, v);
-    // the heading error decays (sin Psi > 0 damps it through eq. (33)) but the offset it caused
+    // the heading error decays (sin Psi > 0 damps it through paper (33)) but the offset it caused
     // stays: nothing in (36)-(37) pulls P back to the path
     EXPECT_LT(std::fabs(v[2] - c.plan->at(c.controlledEnd).phi), dphi / 100);
     EXPECT_GT(offSinusoid(v[0], v[1]), dphi);
@@ -169,7 +169,7 @@ TEST(Gallery, GenuineVakonomicSystemLeavesTheCircle) {
             std::max(trackedOff, std::fabs(std::hypot(tracked.x[i], tracked.y[i]) - radius));
         freeOff = std::max(freeOff, std::fabs(std::hypot(free.x[i], free.y[i]) - radius));
     }
-    EXPECT_GT(vakOff, 0.1); // eq. (21) forces lambda_c away from 0: the body leaves the circle
+    EXPECT_GT(vakOff, 0.1); // paper (21) forces lambda_c away from 0: the body leaves the circle
     EXPECT_LE(trackedOff, 1e-12); // the control-input system (lambda a free input) stays on it
     EXPECT_GT(freeOff, 0.1);      // and so does the free motion, which has no control at all
 }

@@ -6,7 +6,7 @@ namespace chaplygin {
 
 /// The genuine vakonomic sleigh, with the multiplier obeying its own equation (docs/physics.md
 /// §2), in y = (x, y, phi, sdot, phidot, l) where l = lambda_c/m:
-/// sddot = l phidot (eq. (19) corrected), b^2 phiddot = -l sdot (20), ldot = -sdot phidot (21).
+/// sddot = l phidot (paper (19) corrected), b^2 phiddot = -l sdot (20), ldot = -sdot phidot (21).
 /// Only l(0) is free. The paper's tracking drops (21) and treats lambda as a control input.
 class VakonomicProblem final : public OdeProblem {
   public:

@@ -47,7 +47,7 @@ TEST(TimeLaw, CatenaryAgainstQuadratureOfEq103) {
     for (double t : {0.1, 0.5, 1.0, 2.5, 4.0, 6.0}) {
         MotionSample m = sol.at(t);
         EXPECT_NEAR(tOfS(m.s), t, 1e-11) << t;
-        // the body is on the path at that arc length, eqs. (97)-(98)
+        // the body is on the path at that arc length, paper (97)-(98)
         EXPECT_NEAR(m.x, std::sqrt(m.s * m.s + x0 * x0), 1e-12);
         EXPECT_NEAR(m.y, x0 * std::asinh(m.s / x0), 1e-12);
         // (102) as corrected: sdot = v_T (s^2 + x0^2)/sqrt((s^2 + x0^2)^2 + (b x0)^2)
@@ -176,7 +176,7 @@ TEST(TimeLaw, SmallAndLargeGyrationRadiiStayAccurate) {
     for (double b : {0.01, 0.5, 10.0, 100.0}) {
         scene.system.params = {{"m", 1.0}, {"a", 0.0}, {"b", b}};
         Solution sol = Solution::compute(scene, base.path());
-        // t(x) = \int sqrt(b^2 sin^2 x + (1 + cos^2 x)^3)/(1 + cos^2 x) dx, from eq. (112)
+        // t(x) = \int sqrt(b^2 sin^2 x + (1 + cos^2 x)^3)/(1 + cos^2 x) dx, from paper (112)
         double exact = integrate(
             [&](double x) {
                 double c2 = 1 + std::cos(x) * std::cos(x);

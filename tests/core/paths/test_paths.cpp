@@ -120,11 +120,12 @@ TEST(Paths, DomainProblemsNameTheirPlace) {
               std::string::npos)
         << errorOf(graph("sqrt(1 - x^2)", -1, 1));
     EXPECT_NE(errorOf(graph("x", 1, 1)).find("x-range"), std::string::npos);
+    // a cusp at the end of the range has no direction to start or end with
     PathSource cusp;
     cusp.kind = PathKind::Parametric;
     cusp.xOfU = "u^2";
     cusp.yOfU = "u^3";
-    cusp.from = -1;
+    cusp.from = 0;
     cusp.to = 1;
     EXPECT_NE(errorOf(cusp).find("path at u = 0: the path stops here"), std::string::npos)
         << errorOf(cusp);

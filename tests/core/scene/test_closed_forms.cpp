@@ -34,7 +34,7 @@ TEST(ClosedForms, CircleFollowsEqs89To96) {
     Solution sol = Solution::compute(scene);
     const double R = 2, vT = 1.2, b = 0.9, a = 0.4, m = 1.3;
     const double omega = vT / std::sqrt(b * b + R * R); // (95)
-    // period 2 pi sqrt(b^2 + R^2)/v_T, eq. (85) as corrected
+    // period 2 pi sqrt(b^2 + R^2)/v_T, paper (85) as corrected
     EXPECT_NEAR(sol.duration(), 2 * std::numbers::pi * std::sqrt(b * b + R * R) / vT, 1e-12);
     for (double t : {0.0, 0.77, 3.3, 7.9, sol.duration()}) {
         MotionSample s = sol.at(t);

@@ -2,7 +2,7 @@
 """DOP853 (scipy.integrate.solve_ivp) on the catenary preset, for comparison with the method
 registry (docs/numerics.md §5): the controlled time law ds/dt = v_T/sqrt(1 + b^2 kappa(s)^2) with
 kappa = -x0/(s^2 + x0^2) (docs/physics.md §7, erratum to paper (99)), s in [0, 5], and the free sleigh,
-eqs. (D12)-(D13), from the catenary's initial state over [0, 10]. Both at rtol = atol = 1e-10,
+paper (D12)-(D13), from the catenary's initial state over [0, 10]. Both at rtol = atol = 1e-10,
 100 evenly spaced outputs from DOP853's own dense output. Prints the median wall time of one
 solve, its RHS count and its error against DOP853 at 1e-13.
 

@@ -1,0 +1,115 @@
+#!/usr/bin/env bash
+# The real window under Xvfb (docs/robustness.md, The real window):
+#   real_window_test.sh APP TESTS CASE
+# qtest: the QtTest checks that need a real X server (TESTS, with QT_QPA_PLATFORM=xcb);
+# session: APP started as a new user would (no settings) and driven with xdotool: the Animation
+# menu, Space, a step, F11 and Esc, F1, a resize; checked on screenshots of the screen.
+# Exit 77 (skipped, with the reason) where Xvfb, xdotool, xwininfo or ImageMagick are missing.
+set -u
+app=$1
+tests=$2
+case_name=$3
+skip() { echo "SKIP ($case_name): $*"; exit 77; }
+fail() { echo "FAIL ($case_name): $*" >&2; exit 1; }
+for tool in Xvfb xdotool xwininfo import compare; do
+  command -v "$tool" >/dev/null || skip "no $tool (apt-get install xvfb xdotool x11-utils imagemagick)"
+done
+work=$(mktemp -d)
+pids=()
+cleanup() {
+  for p in "${pids[@]}"; do kill "$p" 2>/dev/null; done
+  wait 2>/dev/null
+  if [ -n "${KEEP_SHOTS:-}" ]; then cp "$work"/*.png "$KEEP_SHOTS"/ 2>/dev/null; fi
+  rm -rf "$work"
+}
+trap cleanup EXIT
+
+# a display of its own: Xvfb picks a free number and writes it once it accepts clients
+Xvfb -displayfd 3 -screen 0 1280x800x24 -nolisten tcp 3>"$work/display" >"$work/xvfb.log" 2>&1 &
+pids+=($!)
+for _ in $(seq 100); do [ -s "$work/display" ] && break; sleep 0.1; done
+[ -s "$work/display" ] || skip "Xvfb did not start: $(head -c 300 "$work/xvfb.log")"
+export DISPLAY=":$(head -1 "$work/display")"
+export QT_QPA_PLATFORM=xcb
+# a new user: no settings
+export HOME=$work/home XDG_CONFIG_HOME=$work/home/.config XDG_RUNTIME_DIR=$work/run
+mkdir -p "$HOME" "$XDG_RUNTIME_DIR" && chmod 700 "$XDG_RUNTIME_DIR"
+
+shot() { import -window root "$work/$1.png" || fail "no screenshot $1"; }
+# pixels that differ between two screenshots inside WxH+X+Y
+differ() {
+  compare -metric AE -extract "$3" "$work/$1.png" "$work/$2.png" null: 2>&1 | sed 's/[^0-9.e+].*//'
+}
+more_than() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a > b) }'; }
+
+case "$case_name" in
+qtest)
+  "$tests" -o "$work/qtest.txt",txt
+  status=$?
+  cat "$work/qtest.txt"
+  [ "$status" -eq 0 ] || fail "the QtTest checks failed on the real X server"
+  ;;
+session)
+  "$app" >"$work/app.log" 2>&1 &
+  pids+=($!)
+  window=$(timeout 30 xdotool search --sync --onlyvisible --name '— Chaplygin Lab$' | head -1)
+  [ -n "$window" ] || fail "no window: $(head -c 500 "$work/app.log")"
+  geometry=$(xwininfo -id "$window" | awk '/Width:/ { w = $2 } /Height:/ { h = $2 } END { print w "x" h }')
+  [ "$geometry" = "1280x800" ] || fail "a first start on a 1280x800 screen is $geometry"
+  sleep 1
+  canvas=600x300+400+60
+  left=330x380+5+40
+  # Animation > Preset 3 (catenary): the canvas changes
+  shot start
+  xdotool mousemove --sync 156 8 click 1
+  sleep 0.5
+  shot menu
+  # Play, the steps, Loop, start, end, the seconds, Play new scenes, Preset 1, 2, 3
+  xdotool key --delay 50 Down Down Down Down Down Down Down Down Down Down Down Down Return
+  sleep 1
+  shot catenary
+  more_than "$(differ start catenary "$canvas")" 1000 || fail "Preset 3 did not change the canvas"
+  # Space plays (the canvas moves), Space pauses (it stays), a step moves it again
+  xdotool mousemove --sync 700 250 click 1 key space
+  sleep 1
+  shot playing1
+  sleep 0.5
+  shot playing2
+  more_than "$(differ playing1 playing2 "$canvas")" 100 || fail "Space did not play"
+  xdotool key space
+  sleep 0.5
+  shot paused1
+  sleep 0.5
+  shot paused2
+  [ "$(differ paused1 paused2 "$canvas")" = 0 ] || fail "the second Space did not pause"
+  xdotool key period
+  sleep 0.5
+  shot stepped
+  more_than "$(differ paused2 stepped "$canvas")" 10 || fail "the step did not move the bodies"
+  # F11: the docks on the left give way to the canvas; Esc brings them back as they were
+  xdotool key F11
+  sleep 1
+  shot presenting
+  more_than "$(differ stepped presenting "$left")" 20000 || fail "F11 left the left docks in place"
+  xdotool key Escape
+  sleep 1
+  shot back
+  [ "$(differ stepped back "$left")" = 0 ] || fail "Esc did not bring the Path dock back as it was"
+  # F1: the help window
+  xdotool key F1
+  timeout 10 xdotool search --sync --onlyvisible --name '^Chaplygin Lab help$' >/dev/null \
+    || fail "F1 opened no help window"
+  # narrowed to 1024x768 while it runs: the window follows and the program lives on
+  xdotool windowsize --sync "$window" 1024 768
+  sleep 1
+  geometry=$(xwininfo -id "$window" | awk '/Width:/ { w = $2 } /Height:/ { h = $2 } END { print w "x" h }')
+  [ "$geometry" = "1024x768" ] || fail "resized to $geometry"
+  kill -0 "${pids[1]}" || fail "the program ended: $(head -c 500 "$work/app.log")"
+  if grep -E "QWidget|QLayout|QPainter|Segmentation|terminate" "$work/app.log"; then
+    fail "warnings on stderr"
+  fi
+  ;;
+*)
+  fail "unknown case"
+  ;;
+esac

@@ -1,0 +1,142 @@
+// Help: the About text, the Markdown documents rendered from the resources, F1 opening the
+// section about the part of the window that has the focus. Offscreen, real widgets.
+#include "canvas/scene_canvas.h"
+#include "panels/parameters_panel.h"
+#include "shell/help_window.h"
+#include "version.h"
+#include "window_fixture.h"
+
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QImage>
+#include <QScrollBar>
+#include <QTextBlock>
+#include <QTextBrowser>
+#include <QtTest>
+
+using namespace chaplygin;
+using namespace chaplygin::ui;
+
+class TestHelp : public QObject, private test::WindowFixture {
+    Q_OBJECT
+
+  private slots:
+    void initTestCase() { startSuite("ui_help_tests"); }
+    void init() { openWindow(); }
+    void cleanup() { closeWindow(); }
+
+    void aboutNamesVersionLicenceCreditsPaper();
+    void helpRendersDocsFromResources();
+    void f1OpensSectionOfFocus();
+    void sectionHeadingAtTheTop();
+    void picturesFitTheWidth();
+    void everyPictureOfTheHelpLoads();
+};
+
+void TestHelp::aboutNamesVersionLicenceCreditsPaper() {
+    const QString about = MainWindow::aboutText();
+    QVERIFY(about.contains(QStringLiteral(CHAPLYGIN_LAB_VERSION)));
+    QVERIFY(QStringLiteral(CHAPLYGIN_LAB_VERSION).contains(QLatin1Char('.')));
+    QVERIFY(about.contains(QStringLiteral("Licence")));
+    QVERIFY(about.contains(QStringLiteral("Credits")));
+    QVERIFY(about.contains(QStringLiteral("Antunes")));
+    QVERIFY(about.contains(QStringLiteral("Controlling nonholonomic Chaplygin systems")));
+    QVERIFY(about.contains(QString::fromLatin1(qVersion())));
+}
+
+void TestHelp::helpRendersDocsFromResources() {
+    HelpWindow* help = m_window->showHelp(QStringLiteral("physics.md"));
+    QVERIFY(help->isVisible());
+    // the compiled-in document is the repository's docs/physics.md, byte for byte
+    QFile compiled(QStringLiteral(":/help/physics.md"));
+    QFile source(QStringLiteral(CHAPLYGIN_SOURCE_DIR "/docs/physics.md"));
+    QVERIFY(compiled.open(QIODevice::ReadOnly) && source.open(QIODevice::ReadOnly));
+    QCOMPARE(compiled.readAll(), source.readAll());
+    for (const QString& doc : HelpWindow::documents())
+        QVERIFY2(QFile::exists(QStringLiteral(":/help/") + doc), qPrintable(doc));
+    // rendered as Markdown: the first line is a level-1 heading without its '#'
+    QTextBlock first = help->browser()->document()->begin();
+    while (first.isValid() && first.text().isEmpty())
+        first = first.next();
+    QCOMPARE(first.blockFormat().headingLevel(), 1);
+    QVERIFY(!first.text().startsWith(QLatin1Char('#')));
+    QVERIFY(help->browser()->toPlainText().contains(QStringLiteral("Antunes")));
+    // the pictures are there too: an image of the user guide loads from the resources
+    QVERIFY(help->showTopic(QStringLiteral("user-guide.md")));
+    QVERIFY(!QImage(QStringLiteral(":/help/images/main-window-sinusoid.png")).isNull());
+    QVERIFY(!help->showTopic(QStringLiteral("no-such.md")));
+}
+
+void TestHelp::f1OpensSectionOfFocus() {
+    m_window->showParametersDock();
+    QDoubleSpinBox* m = m_window->parametersPanel()->spinBox(QStringLiteral("m"));
+    m->setFocus();
+    QApplication::processEvents();
+    QTest::keyClick(m, Qt::Key_F1);
+    HelpWindow* help = m_window->findChild<HelpWindow*>();
+    QVERIFY(help && help->isVisible());
+    QCOMPARE(help->currentDocument(), QStringLiteral("user-guide.md"));
+    QTextBlock block = help->browser()->textCursor().block();
+    QVERIFY(block.blockFormat().headingLevel() > 0);
+    QVERIFY2(block.text().contains(QStringLiteral("parameters")), qPrintable(block.text()));
+    // from the canvas: the animation section
+    m_window->activateWindow();
+    m_window->canvas()->setFocus();
+    m_window->showContextHelp();
+    QVERIFY(help->browser()->textCursor().block().text().contains(QStringLiteral("Animation")));
+}
+
+void TestHelp::sectionHeadingAtTheTop() {
+    // F1 shows the section from its heading down, not the end of the section before it
+    for (const char* section : {"Animation", "Plots", "Presentation mode"}) {
+        HelpWindow* help =
+            m_window->showHelp(QStringLiteral("user-guide.md"), QString::fromLatin1(section));
+        QApplication::processEvents();
+        QTextBlock heading = help->browser()->textCursor().block();
+        QVERIFY2(heading.text().contains(QString::fromLatin1(section)), section);
+        const int top = help->browser()->cursorRect().top();
+        QVERIFY2(
+            top >= 0 && top < 3 * help->browser()->fontMetrics().height(),
+            qPrintable(QStringLiteral("%1 at %2 px").arg(QString::fromLatin1(section)).arg(top)));
+    }
+}
+
+void TestHelp::picturesFitTheWidth() {
+    // the user guide's screenshots (1280 px and wider) are shown scaled to the window, no
+    // sideways scrolling; narrowed, the window scales them again
+    HelpWindow* help = m_window->showHelp(QStringLiteral("user-guide.md"));
+    for (QSize size : {QSize(900, 700), QSize(600, 500)}) {
+        help->resize(size);
+        QApplication::processEvents();
+        QTRY_COMPARE(help->browser()->horizontalScrollBar()->maximum(), 0);
+    }
+    int pictures = 0;
+    for (QTextBlock b = help->browser()->document()->begin(); b.isValid(); b = b.next())
+        for (auto it = b.begin(); !it.atEnd(); ++it)
+            pictures += it.fragment().charFormat().isImageFormat() ? 1 : 0;
+    QVERIFY(pictures >= 3);
+}
+
+void TestHelp::everyPictureOfTheHelpLoads() {
+    // each picture a help document shows is compiled in (a missing one is drawn as a broken icon)
+    HelpWindow* help = m_window->showHelp();
+    int pictures = 0;
+    for (const QString& doc : HelpWindow::documents()) {
+        QVERIFY(help->showTopic(doc));
+        QTextDocument* text = help->browser()->document();
+        for (QTextBlock b = text->begin(); b.isValid(); b = b.next())
+            for (auto it = b.begin(); !it.atEnd(); ++it) {
+                const QTextCharFormat format = it.fragment().charFormat();
+                if (!format.isImageFormat())
+                    continue;
+                const QString name = format.toImageFormat().name();
+                ++pictures;
+                QVERIFY2(!QImage(QStringLiteral(":/help/") + name).isNull(),
+                         qPrintable(QStringLiteral("%1: %2").arg(doc, name)));
+            }
+    }
+    QVERIFY(pictures >= 10);
+}
+
+QTEST_MAIN(TestHelp)
+#include "test_help.moc"

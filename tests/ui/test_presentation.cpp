@@ -1,0 +1,181 @@
+// Presentation mode (F11): the docks it hides, the scale and high-contrast palette, keyboard
+// control of a demo, the plots and the --presentation screenshot. Offscreen, real widgets.
+#include "canvas/canvas_style.h"
+#include "canvas/scene_canvas.h"
+#include "desktop_entry.h"
+#include "lab/gallery.h"
+#include "plots/plots_panel.h"
+#include "shell/playback.h"
+#include "shell/presentation_mode.h"
+#include "shell/timeline_bar.h"
+#include "window_fixture.h"
+
+#include <QImage>
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include <cmath>
+
+using namespace chaplygin;
+using namespace chaplygin::ui;
+
+class TestPresentation : public QObject, private test::WindowFixture {
+    Q_OBJECT
+
+  private slots:
+    void initTestCase() { startSuite("ui_presentation_tests"); }
+    void init() { openWindow(); }
+    void cleanup() { closeWindow(); }
+
+    void presentationEntersAndLeaves();
+    void presentationPaletteDistinctInGreyscale();
+    void presentationScaleIsASetting();
+    void presentationKeyboardControl();
+    void presentationScalesPlots();
+    void presentationScreenshotOption();
+};
+
+void TestPresentation::presentationEntersAndLeaves() {
+    PresentationMode* p = m_window->presentation();
+    const double font = m_window->font().pointSizeF();
+    QVERIFY(dock("pathDock")->isVisible());
+    QVERIFY(dock("accuracyDock")->isVisible());
+    // F11 is the action's shortcut; the toolbar has its button
+    QCOMPARE(p->toggleAction()->shortcut(), QKeySequence(Qt::Key_F11));
+    QVERIFY(m_window->timeline()->actions().contains(p->toggleAction()));
+    QTest::keyClick(m_window.get(), Qt::Key_F11);
+    QVERIFY(p->isActive());
+    QVERIFY(m_window->windowState() & Qt::WindowFullScreen);
+    for (const char* name :
+         {"pathDock", "parametersDock", "methodsDock", "sweepDock", "accuracyDock"})
+        QVERIFY2(!dock(name)->isVisible(), name);
+    QVERIFY(dock("plotsDock")->isVisible());
+    QVERIFY(m_window->font().pointSizeF() >= 1.6 * font - 1e-9);
+    const CanvasStyle& s = m_window->canvas()->canvasStyle();
+    QVERIFY(s.lineScale >= 1.6 && s.highContrast && s.largeTime);
+    // Esc leaves and restores the window as it was
+    QTest::keyClick(m_window.get(), Qt::Key_Escape);
+    QVERIFY(!p->isActive());
+    QVERIFY(!(m_window->windowState() & Qt::WindowFullScreen));
+    QCOMPARE(m_window->font().pointSizeF(), font);
+    QVERIFY(dock("pathDock")->isVisible() || dock("parametersDock")->isVisible());
+    QVERIFY(dock("accuracyDock")->isVisible());
+    QCOMPARE(m_window->canvas()->canvasStyle().lineScale, 1.0);
+    QVERIFY(!m_window->canvas()->canvasStyle().highContrast);
+}
+
+void TestPresentation::presentationPaletteDistinctInGreyscale() {
+    CanvasStyle s = CanvasStyle().presentation(PresentationMode::kDefaultScale);
+    const QColor colours[] = {s.controlled(), s.vakonomic(), s.path(), s.free()};
+    // four grey levels a washed-out projector or a greyscale print still tells apart
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+            QVERIFY2(std::abs(luminance(colours[i]) - luminance(colours[j])) >= 0.09,
+                     qPrintable(QStringLiteral("%1 vs %2").arg(i).arg(j)));
+    // and each is visible on the white canvas
+    for (const QColor& c : colours)
+        QVERIFY(luminance(c) < 0.6);
+    // luminance itself: black 0, white 1, mid grey 0.2159 (sRGB 0.5)
+    QCOMPARE(luminance(Qt::black), 0.0);
+    QVERIFY(std::abs(luminance(Qt::white) - 1) < 1e-12);
+    QVERIFY(std::abs(luminance(QColor::fromRgbF(0.5, 0.5, 0.5)) - 0.2140) < 2e-3);
+    // the canvas drawn in presentation mode uses the palette: the trail's dark blue is there
+    m_window->presentation()->setFullScreen(false);
+    m_window->presentation()->setActive(true);
+    m_window->playback()->seek(m_window->playback()->tEnd() / 2);
+    QImage image = m_window->canvas()->grab().toImage();
+    int controlled = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            QColor c = image.pixelColor(x, y);
+            controlled += c.blue() > 60 && c.red() < 30 && c.green() < 50 ? 1 : 0;
+        }
+    QVERIFY(controlled > 100);
+}
+
+void TestPresentation::presentationScaleIsASetting() {
+    QCOMPARE(m_window->presentation()->scale(), PresentationMode::kDefaultScale);
+    m_window->presentation()->setScale(2.0);
+    QCOMPARE(QSettings().value(QStringLiteral("presentation/scale")).toDouble(), 2.0);
+    m_window->presentation()->setFullScreen(false);
+    m_window->presentation()->setActive(true);
+    QCOMPARE(m_window->canvas()->canvasStyle().lineScale, 2.0);
+    // a second window reads the setting; nonsense is clamped
+    auto other = std::make_unique<MainWindow>(false);
+    QCOMPARE(other->presentation()->scale(), 2.0);
+    other->presentation()->setScale(50);
+    QCOMPARE(other->presentation()->scale(), 3.0);
+    other->presentation()->setScale(NAN);
+    QCOMPARE(other->presentation()->scale(), 3.0);
+}
+
+void TestPresentation::presentationKeyboardControl() {
+    m_window->presentation()->setFullScreen(false);
+    m_window->presentation()->setActive(true);
+    const auto names = presetNames();
+    for (int i = 0; i < 4 && i < int(names.size()); ++i) {
+        QTest::keyClick(m_window.get(), Qt::Key(Qt::Key_1 + i));
+        m_window->document()->flush();
+        QCOMPARE(m_window->document()->scene().preset, names[std::size_t(i)]);
+    }
+    // Page Down / Page Up walk through the accepted gallery scenes
+    QTest::keyClick(m_window.get(), Qt::Key_PageDown);
+    m_window->document()->flush();
+    Scene first = m_window->document()->scene();
+    QTest::keyClick(m_window.get(), Qt::Key_PageDown);
+    m_window->document()->flush();
+    QVERIFY(!(m_window->document()->scene() == first));
+    QTest::keyClick(m_window.get(), Qt::Key_PageUp);
+    m_window->document()->flush();
+    QVERIFY(m_window->document()->scene() == first);
+    bool inGallery = false;
+    for (const GalleryEntry& e : galleryEntries())
+        inGallery = inGallery || (!e.rejected && e.scene == first);
+    QVERIFY(inGallery);
+    // play, step and rewind from the keyboard
+    QTest::keyClick(m_window.get(), Qt::Key_Space);
+    QVERIFY(m_window->playback()->isPlaying());
+    QTest::keyClick(m_window.get(), Qt::Key_Period, Qt::ShiftModifier);
+    QVERIFY(!m_window->playback()->isPlaying());
+    QTest::keyClick(m_window.get(), Qt::Key_Home);
+    QCOMPARE(m_window->playback()->time(), 0.0);
+    QVERIFY(m_window->presentation()->isActive());
+}
+
+void TestPresentation::presentationScalesPlots() {
+    QCustomPlot* plot = m_window->plotsPanel()->plot(0);
+    const double pen = plot->graph(0)->pen().widthF();
+    const double tick = plot->xAxis->tickLabelFont().pointSizeF();
+    m_window->presentation()->setFullScreen(false);
+    m_window->presentation()->setActive(true);
+    plot = m_window->plotsPanel()->plot(0);
+    QVERIFY(plot->graph(0)->pen().widthF() >= 1.6 * pen - 1e-9);
+    QVERIFY(plot->xAxis->tickLabelFont().pointSizeF() >= 1.6 * tick - 1e-6);
+    QCOMPARE(plot->graph(0)->pen().color(), CanvasStyle().presentation(1.6).controlled());
+    m_window->presentation()->setActive(false);
+    plot = m_window->plotsPanel()->plot(0);
+    QCOMPARE(plot->graph(0)->pen().widthF(), pen);
+    QCOMPARE(plot->xAxis->tickLabelFont().pointSizeF(), tick);
+}
+
+void TestPresentation::presentationScreenshotOption() {
+    QString normal = m_dir.filePath(QStringLiteral("normal.png"));
+    QString shown = m_dir.filePath(QStringLiteral("presentation.png"));
+    QByteArray n = normal.toUtf8(), s = shown.toUtf8();
+    const char* a[] = {"chaplygin-lab", "--screenshot", n.constData(), "--preset",
+                       "catenary",      "--size",       "1280x720"};
+    const char* b[] = {"chaplygin-lab", "--screenshot", s.constData(), "--preset",
+                       "catenary",      "--size",       "1280x720",    "--presentation"};
+    QCOMPARE(runScreenshot(7, const_cast<char**>(a)), 0);
+    QCOMPARE(runScreenshot(8, const_cast<char**>(b)), 0);
+    QImage plain(normal), presenting(shown);
+    QCOMPARE(presenting.size(), QSize(1280, 720));
+    // no docks on the left in presentation mode: the canvas (white) reaches the window's left
+    // edge below the toolbar, where the normal window shows the path dock (grey)
+    QColor leftNormal = plain.pixelColor(20, 300), leftPresenting = presenting.pixelColor(20, 300);
+    QVERIFY(leftNormal != leftPresenting);
+    QVERIFY(leftPresenting.lightness() > 240);
+}
+
+QTEST_MAIN(TestPresentation)
+#include "test_presentation.moc"

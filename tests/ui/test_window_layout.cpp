@@ -1,0 +1,152 @@
+// The window at the sizes of a classroom: the first start sized to the screen, no scrolling docks
+// at 1280x800, a usable canvas at 1024x768, the canvas legend in its own strip, the status bar.
+// Offscreen, real widgets.
+#include "canvas/scene_canvas.h"
+#include "shell/elided_label.h"
+#include "shell/window_layout.h"
+#include "window_fixture.h"
+
+#include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QStatusBar>
+#include <QtTest>
+
+#include <cmath>
+
+using namespace chaplygin;
+using namespace chaplygin::ui;
+
+class TestWindowLayout : public QObject, private test::WindowFixture {
+    Q_OBJECT
+
+  private slots:
+    void initTestCase() { startSuite("ui_window_layout_tests"); }
+    void init() { openWindow(); }
+    void cleanup() { closeWindow(); }
+
+    void firstStartSizedToScreen();
+    void firstStartBalancedOnceShown();
+    void narrowedWindowKeepsCanvasUsable();
+    void noDockScrollsAt1280x800();
+    void usableCanvasAt1024x768();
+    void legendOutsideDrawingArea();
+    void statusBarElidedWithTooltip();
+};
+
+void TestWindowLayout::firstStartSizedToScreen() {
+    FirstStart big = firstStartGeometry(QRect(0, 0, 1920, 1080));
+    QCOMPARE(big.geometry.size(), QSize(1632, 918));
+    QCOMPARE(big.geometry.center(), QRect(0, 0, 1920, 1080).center());
+    QVERIFY(!big.maximised);
+    FirstStart small = firstStartGeometry(QRect(0, 0, 1280, 800));
+    QVERIFY(small.maximised);
+    QCOMPARE(small.geometry, QRect(0, 0, 1280, 800));
+    // a window with (empty) settings starts sized to its screen, not at a fixed 1280 x 800
+    QSettings().clear();
+    MainWindow window(true);
+    FirstStart expected = firstStartGeometry(window.screen()->availableGeometry());
+    if (expected.maximised)
+        QVERIFY(window.windowState() & Qt::WindowMaximized);
+    else
+        QCOMPARE(window.size(), expected.geometry.size());
+}
+
+void TestWindowLayout::firstStartBalancedOnceShown() {
+    // the dock sizes of a first start are those balanceDocks gives the shown window (before it
+    // is shown the docks have no geometry to resize)
+    QSettings().clear();
+    MainWindow window(true);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    QApplication::processEvents();
+    auto* plots = window.findChild<QDockWidget*>(QStringLiteral("plotsDock"));
+    auto* path = window.findChild<QDockWidget*>(QStringLiteral("pathDock"));
+    const int plotsHeight = plots->height(), pathWidth = path->width();
+    window.balanceDocks();
+    QApplication::processEvents();
+    QVERIFY2(
+        std::abs(plots->height() - plotsHeight) <= 2,
+        qPrintable(
+            QStringLiteral("plots %1 px, balanced %2 px").arg(plotsHeight).arg(plots->height())));
+    QVERIFY2(
+        std::abs(path->width() - pathWidth) <= 2,
+        qPrintable(QStringLiteral("path %1 px, balanced %2 px").arg(pathWidth).arg(path->width())));
+}
+
+void TestWindowLayout::narrowedWindowKeepsCanvasUsable() {
+    // a window narrowed below 1200 px while it runs (a projector plugged in) tabs the right-hand
+    // docks on the left as a narrow first start does
+    m_window->resize(1024, 768);
+    QApplication::processEvents();
+    QCOMPARE(m_window->dockWidgetArea(dock("accuracyDock")), Qt::LeftDockWidgetArea);
+    QTRY_VERIFY2(m_window->canvas()->width() >= 480,
+                 qPrintable(QString::number(m_window->canvas()->width())));
+    // widened again, the docks stay where they are (the user may have placed them)
+    m_window->resize(1280, 800);
+    QApplication::processEvents();
+    QCOMPARE(m_window->dockWidgetArea(dock("accuracyDock")), Qt::LeftDockWidgetArea);
+}
+
+void TestWindowLayout::noDockScrollsAt1280x800() {
+    m_window->resize(1280, 800);
+    m_window->balanceDocks();
+    QApplication::processEvents();
+    for (const char* name : {"pathDock", "parametersDock"}) {
+        QDockWidget* d = dock(name);
+        d->raise();
+        QApplication::processEvents();
+        auto* scroll = qobject_cast<QScrollArea*>(d->widget());
+        QVERIFY(scroll);
+        QVERIFY2(scroll->verticalScrollBar()->maximum() == 0,
+                 qPrintable(QStringLiteral("%1 scrolls by %2 px")
+                                .arg(QLatin1String(name))
+                                .arg(scroll->verticalScrollBar()->maximum())));
+    }
+}
+
+void TestWindowLayout::usableCanvasAt1024x768() {
+    m_window->resize(1024, 768);
+    m_window->balanceDocks();
+    QApplication::processEvents();
+    SceneCanvas* canvas = m_window->canvas();
+    QVERIFY2(canvas->width() >= 480, qPrintable(QString::number(canvas->width())));
+    QVERIFY2(canvas->drawingArea().height() >= 220,
+             qPrintable(QString::number(canvas->drawingArea().height())));
+}
+
+void TestWindowLayout::legendOutsideDrawingArea() {
+    SceneCanvas* canvas = m_window->canvas();
+    canvas->fitScene();
+    QRectF area = canvas->drawingArea();
+    QVERIFY(area.bottom() < canvas->height() - 40); // the legend has its own strip
+    // everything Fit frames lies inside the drawing area, none of it under the legend
+    QRectF bounds = canvas->sceneBounds();
+    QRectF pixels = QRectF(canvas->toPixel(bounds.topLeft()), canvas->toPixel(bounds.bottomRight()))
+                        .normalized();
+    QVERIFY(area.adjusted(-1, -1, 1, 1).contains(pixels));
+    // L collapses the legend: the drawing area grows to the bottom edge
+    canvas->setFocus();
+    QTest::keyClick(canvas, Qt::Key_L);
+    QVERIFY(!canvas->legendVisible());
+    QCOMPARE(canvas->drawingArea().bottom(), double(canvas->height()));
+    QTest::keyClick(canvas, Qt::Key_L);
+    QVERIFY(canvas->legendVisible());
+}
+
+void TestWindowLayout::statusBarElidedWithTooltip() {
+    ElidedLabel* label = m_window->statusLabel();
+    QVERIFY(!label->fullText().isEmpty());
+    QCOMPARE(label->toolTip(), label->fullText());
+    const QString longText = QString(QStringLiteral("model ")).repeated(200);
+    label->setFullText(longText);
+    QApplication::processEvents();
+    QVERIFY(label->text().endsWith(QChar(0x2026)));
+    QVERIFY(label->fontMetrics().horizontalAdvance(label->text()) <= label->width());
+    QCOMPARE(label->toolTip(), longText);
+    // the status bar does not grow with the text
+    QVERIFY(m_window->statusBar()->width() <= m_window->width());
+}
+
+QTEST_MAIN(TestWindowLayout)
+#include "test_window_layout.moc"

@@ -1,0 +1,122 @@
+#include "shell/dock_layout.h"
+
+#include <QCoreApplication>
+#include <QDockWidget>
+#include <QMainWindow>
+#include <QResizeEvent>
+#include <QScrollArea>
+
+#include <algorithm>
+
+namespace chaplygin::ui {
+
+// the translation context of the dock titles
+class DockLayout {
+    Q_DECLARE_TR_FUNCTIONS(chaplygin::ui::DockLayout)
+};
+
+namespace {
+
+// narrower windows tab the right-hand docks on the left
+constexpr int kNarrow = 1200;
+
+QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content,
+                      QMainWindow* parent) {
+    auto* dock = new QDockWidget(title, parent);
+    dock->setObjectName(name);
+    dock->setWidget(content);
+    return dock;
+}
+
+// a panel taller than the dock scrolls vertically, never sideways
+QDockWidget* makeScrollingDock(const QString& title, const QString& name, QWidget* content,
+                               QMainWindow* parent) {
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(content);
+    return makeDock(title, name, scroll, parent);
+}
+
+} // namespace
+
+Docks placeDocks(QMainWindow* window, const DockPanels& panels) {
+    Docks d;
+    d.path =
+        makeScrollingDock(DockLayout::tr("Path"), QStringLiteral("pathDock"), panels.path, window);
+    d.parameters = makeScrollingDock(DockLayout::tr("System and parameters"),
+                                     QStringLiteral("parametersDock"), panels.parameters, window);
+    d.plots = makeDock(DockLayout::tr("Plots"), QStringLiteral("plotsDock"), panels.plots, window);
+    d.methods =
+        makeDock(DockLayout::tr("Methods"), QStringLiteral("methodsDock"), panels.methods, window);
+    d.sweep = makeDock(DockLayout::tr("Sweep"), QStringLiteral("sweepDock"), panels.sweep, window);
+    d.accuracy = makeScrollingDock(DockLayout::tr("Accuracy"), QStringLiteral("accuracyDock"),
+                                   panels.accuracy, window);
+    window->addDockWidget(Qt::LeftDockWidgetArea, d.path);
+    window->addDockWidget(Qt::LeftDockWidgetArea, d.parameters);
+    window->tabifyDockWidget(d.path, d.parameters);
+    d.path->raise();
+    window->addDockWidget(Qt::BottomDockWidgetArea, d.plots);
+    window->addDockWidget(Qt::BottomDockWidgetArea, d.methods);
+    window->tabifyDockWidget(d.plots, d.methods);
+    window->addDockWidget(Qt::BottomDockWidgetArea, d.sweep);
+    window->tabifyDockWidget(d.methods, d.sweep);
+    d.plots->raise();
+    window->addDockWidget(Qt::RightDockWidgetArea, d.accuracy);
+    d.accuracy->setMinimumWidth(240);
+    d.path->setMinimumWidth(360);
+    d.parameters->setMinimumWidth(360);
+    return d;
+}
+
+void balanceDocks(QMainWindow* window, const Docks& docks) {
+    const int width = window->width(), height = window->height();
+    if (width < kNarrow) {
+        QDockWidget* last = docks.parameters;
+        for (QDockWidget* dock : window->findChildren<QDockWidget*>()) {
+            if (window->dockWidgetArea(dock) != Qt::RightDockWidgetArea || dock->isFloating())
+                continue;
+            window->addDockWidget(Qt::LeftDockWidgetArea, dock);
+            window->tabifyDockWidget(last, dock);
+            last = dock;
+        }
+        if (last != docks.parameters)
+            docks.path->raise();
+    }
+    window->resizeDocks({docks.plots}, {height < 900 ? std::max(200, height / 4) : height / 3},
+                        Qt::Vertical);
+    window->resizeDocks({docks.path}, {std::max(360, width / 4)}, Qt::Horizontal);
+}
+
+DockBalancer::DockBalancer(QMainWindow* window, const Docks& docks, bool balanceWhenShown)
+    : QObject(window), m_window(window), m_docks(docks), m_balanceWhenShown(balanceWhenShown) {
+    window->installEventFilter(this);
+}
+
+bool DockBalancer::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == m_window && event->type() == QEvent::Show && m_balanceWhenShown) {
+        m_balanceWhenShown = false;
+        balanceLater();
+    } else if (watched == m_window && event->type() == QEvent::Resize) {
+        auto* resize = static_cast<QResizeEvent*>(event);
+        if (resize->oldSize().width() >= kNarrow && resize->size().width() < kNarrow)
+            balanceLater();
+    }
+    return false;
+}
+
+// after the event, once the window's layout has its new geometry
+void DockBalancer::balanceLater() {
+    QMetaObject::invokeMethod(
+        this, [this] { balanceDocks(m_window, m_docks); }, Qt::QueuedConnection);
+}
+
+void bringDockForward(QMainWindow* window, QDockWidget* dock, int minimumHeight) {
+    dock->show();
+    dock->raise();
+    if (minimumHeight > 0)
+        window->resizeDocks({dock}, {minimumHeight}, Qt::Vertical);
+}
+
+} // namespace chaplygin::ui

@@ -1,0 +1,61 @@
+#pragma once
+#include <QObject>
+
+class QDockWidget;
+class QMainWindow;
+class QWidget;
+
+namespace chaplygin::ui {
+
+/// The panels the main window shows in docks.
+struct DockPanels {
+    QWidget* path;
+    QWidget* parameters;
+    QWidget* plots;
+    QWidget* methods;
+    QWidget* sweep;
+    QWidget* accuracy;
+};
+
+/// The main window's docks; their object names are pathDock, parametersDock, plotsDock,
+/// methodsDock, sweepDock and accuracyDock (the window's saved state refers to them).
+struct Docks {
+    QDockWidget* path = nullptr;
+    QDockWidget* parameters = nullptr;
+    QDockWidget* plots = nullptr;
+    QDockWidget* methods = nullptr;
+    QDockWidget* sweep = nullptr;
+    QDockWidget* accuracy = nullptr;
+};
+
+/// Path and parameters tabbed on the left and the accuracy on the right, each scrolling its
+/// panel; plots, methods and sweep tabbed at the bottom; the path and plots tabs in front.
+Docks placeDocks(QMainWindow* window, const DockPanels& panels);
+
+/// Gives the canvas most of the window: the plots a third of the height (a quarter, at least
+/// 200 px, below 900 px), the left docks a quarter of the width (at least 360 px). Below 1200 px
+/// the right-hand docks (accuracy, notes, equations) join the left tabs after the parameters, so
+/// the canvas keeps its width (docs/user-guide.md, small screens).
+void balanceDocks(QMainWindow* window, const Docks& docks);
+
+/// Keeps a window's docks balanced (balanceDocks): once when the window is first shown, when
+/// asked to (before that the docks have no geometry to resize), and whenever the window is
+/// narrowed below 1200 px while it runs. Widening leaves the docks where they are.
+class DockBalancer : public QObject {
+    Q_OBJECT
+  public:
+    DockBalancer(QMainWindow* window, const Docks& docks, bool balanceWhenShown);
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+  private:
+    void balanceLater();
+
+    QMainWindow* m_window;
+    Docks m_docks;
+    bool m_balanceWhenShown;
+};
+
+/// Shows and raises dock; a minimumHeight > 0 makes it at least that tall.
+void bringDockForward(QMainWindow* window, QDockWidget* dock, int minimumHeight = 0);
+
+} // namespace chaplygin::ui
