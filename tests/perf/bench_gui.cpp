@@ -1,6 +1,7 @@
 // chaplygin-bench: the GUI's recompute and animation-frame costs, measured on the real widgets
 // under the offscreen platform.
 #include "canvas/scene_canvas.h"
+#include "canvas/vector_painter.h"
 #include "document/scene_document.h"
 #include "plots/plot_series.h"
 #include "plots/plots_panel.h"
@@ -104,24 +105,45 @@ BENCHMARK(BM_StageDrawPlots)->Unit(benchmark::kMillisecond);
 class PaintCounter : public QObject {
   public:
     int count = 0;
+    QEvent::Type type = QEvent::Paint;
     bool eventFilter(QObject*, QEvent* e) override {
-        count += e->type() == QEvent::Paint ? 1 : 0;
+        count += e->type() == type ? 1 : 0;
         return false;
     }
 };
 
-// one animation frame at 1280x800: advance the clock, repaint the canvas and the four plots
+// the window at a benchmark size: 1280x800 or 1920x1080 (width given)
+void sizeWindow(MainWindow& window, long width) {
+    window.resize(int(width), width >= 1920 ? 1080 : 800);
+}
+
+// the third (vakonomic) body and every arrow of View > Vectors shown
+void showEverything(MainWindow& window) {
+    window.canvas()->setShowVakonomic(true);
+    Scene scene = window.document()->scene();
+    for (int i = 0; i < kVectorKinds; ++i)
+        (scene.vectors.*vectorToggle(VectorKind(i))).shown = true;
+    window.loadScene(scene);
+    window.document()->flush();
+}
+
+// one animation frame: advance the clock, repaint the canvas and the four plots
 void BM_AnimationFrame(benchmark::State& state) {
     MainWindow window(false);
-    window.resize(1280, 800);
+    sizeWindow(window, state.range(3));
     window.show();
+    QCoreApplication::processEvents();
+    if (state.range(4) != 0)
+        showEverything(window);
     QCoreApplication::processEvents();
     window.plotsPanel()->replotNow();
     Playback* playback = window.playback();
     playback->setLoop(true);
     playback->setSpeedFactor(double(state.range(0)));    // x1, or x4: every cursor moves by pixels
     window.canvas()->setFollowBody(state.range(1) != 0); // following redraws the cached background
-    PaintCounter canvasPaints, plotPaints;
+    PaintCounter canvasPaints, plotPaints, layouts;
+    layouts.type = QEvent::LayoutRequest;
+    window.installEventFilter(&layouts);
     window.canvas()->installEventFilter(&canvasPaints);
     for (int i = 0; i < 4; ++i)
         window.plotsPanel()->plot(i)->installEventFilter(&plotPaints);
@@ -139,32 +161,49 @@ void BM_AnimationFrame(benchmark::State& state) {
         benchmark::Counter(canvasPaints.count, benchmark::Counter::kAvgIterations);
     state.counters["plot_paints"] =
         benchmark::Counter(plotPaints.count, benchmark::Counter::kAvgIterations);
+    state.counters["layouts"] =
+        benchmark::Counter(layouts.count, benchmark::Counter::kAvgIterations);
+    state.counters["canvas_w"] = window.canvas()->width();
+    state.counters["arrows"] =
+        double(window.canvas()->vectorLayer().controlledShapes().arrows.size());
 }
+// width 1280 (x800) or 1920 (x1080); everything: the vakonomic body and all five vectors shown
 BENCHMARK(BM_AnimationFrame)
-    ->ArgNames({"speed", "follow", "whole"})
-    ->Args({1, 0, 0})
-    ->Args({4, 0, 0})
-    ->Args({1, 1, 0})
-    ->Args({1, 0, 1})
+    ->ArgNames({"speed", "follow", "whole", "width", "everything"})
+    ->ArgsProduct({{1}, {0}, {0}, {1280, 1920}, {0, 1}})
+    ->Args({4, 0, 0, 1280, 1})
+    ->Args({4, 0, 0, 1920, 1})
+    ->Args({1, 1, 0, 1280, 1})
+    ->Args({1, 1, 0, 1920, 1})
+    ->Args({1, 0, 1, 1280, 1})
+    ->Args({1, 0, 1, 1920, 1})
     ->Unit(benchmark::kMillisecond);
 
 // the breakdown of a frame: the canvas alone, the plots' cursor alone
 void BM_StageFrameCanvas(benchmark::State& state) {
     MainWindow window(false);
-    window.resize(1280, 800);
+    sizeWindow(window, state.range(0));
     window.show();
+    QCoreApplication::processEvents();
+    showEverything(window);
     QCoreApplication::processEvents();
     for (auto _ : state) {
         window.canvas()->setTime(std::fmod(window.canvas()->time() + 1.0 / 60, 17.0));
         window.canvas()->repaint();
     }
 }
-BENCHMARK(BM_StageFrameCanvas)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StageFrameCanvas)
+    ->ArgName("width")
+    ->Arg(1280)
+    ->Arg(1920)
+    ->Unit(benchmark::kMillisecond);
 
 void BM_StageFramePlots(benchmark::State& state) {
     MainWindow window(false);
-    window.resize(1280, 800);
+    sizeWindow(window, state.range(0));
     window.show();
+    QCoreApplication::processEvents();
+    showEverything(window);
     QCoreApplication::processEvents();
     window.plotsPanel()->replotNow();
     double t = 0;
@@ -175,7 +214,11 @@ void BM_StageFramePlots(benchmark::State& state) {
             window.plotsPanel()->plot(i)->repaint();
     }
 }
-BENCHMARK(BM_StageFramePlots)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StageFramePlots)
+    ->ArgName("width")
+    ->Arg(1280)
+    ->Arg(1920)
+    ->Unit(benchmark::kMillisecond);
 
 } // namespace
 

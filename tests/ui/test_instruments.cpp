@@ -79,6 +79,7 @@ class TestInstruments : public QObject {
     void notesEditedSavedLoadedAndShown();
     void galleryNoteShown();
     void equationsFollowTimeSystemAndMode();
+    void equationsInBackgroundTabWaitUntilRaised();
     void equationsWhileBackingUpThroughACusp();
     void screenshotShowsArrowsAndEquations();
 
@@ -503,6 +504,33 @@ void TestInstruments::equationsFollowTimeSystemAndMode() {
     double points = panel->view()->font().pointSizeF();
     panel->setFontScale(2);
     QVERIFY(std::fabs(panel->view()->font().pointSizeF() - 2 * points) < 0.01);
+}
+
+void TestInstruments::equationsInBackgroundTabWaitUntilRaised() {
+    // the Equations dock starts as a tab behind Accuracy: Qt moves it out of the window
+    auto* panel = m_window->findChild<EquationsPanel*>();
+    auto* dock = m_window->findChild<QDockWidget*>(QStringLiteral("equationsDock"));
+    auto* accuracy = m_window->findChild<QDockWidget*>(QStringLiteral("accuracyDock"));
+    QVERIFY(panel && dock && accuracy);
+    accuracy->raise();
+    QCoreApplication::processEvents();
+    QVERIFY(panel->visibleRegion().isEmpty());
+    // playing does not lay out a page nobody sees
+    m_window->playback()->seek(2.0);
+    QVERIFY(!panel->view()->toPlainText().contains(QStringLiteral("t = 2 s")));
+    // raised, it shows the current time at once, and follows the time from then on
+    dock->raise();
+    QCoreApplication::processEvents();
+    QVERIFY(!panel->visibleRegion().isEmpty());
+    QVERIFY(panel->view()->toPlainText().contains(QStringLiteral("t = 2 s")));
+    m_window->playback()->seek(3.0);
+    QVERIFY(panel->view()->toPlainText().contains(QStringLiteral("t = 3 s")));
+    // behind another tab again, it waits again
+    accuracy->raise();
+    QCoreApplication::processEvents();
+    m_window->playback()->seek(4.0);
+    QVERIFY(!panel->view()->toPlainText().contains(QStringLiteral("t = 4 s")));
+    QVERIFY(panel->html().contains(QStringLiteral("t = <b>4 s</b>")));
 }
 
 void TestInstruments::screenshotShowsArrowsAndEquations() {

@@ -43,6 +43,14 @@ QColor CanvasStyle::vakonomic() const {
     return highContrast ? kHcVakonomic : kVakonomic;
 }
 
+QPen CanvasStyle::pen(const QColor& color, double width, Qt::PenStyle style) const {
+    QPen pen(color, width * lineScale, style);
+    pen.setCosmetic(true);
+    pen.setCapStyle(Qt::RoundCap);
+    pen.setJoinStyle(Qt::RoundJoin);
+    return pen;
+}
+
 QColor CanvasStyle::path() const {
     return highContrast ? kHcPath : kPath;
 }

@@ -1,5 +1,6 @@
 #pragma once
 #include <QColor>
+#include <QPen>
 
 class QSettings;
 
@@ -25,6 +26,9 @@ struct CanvasStyle {
     QColor vakonomic() const;
     /// The path where the palette does not colour it by curvature.
     QColor path() const;
+
+    /// A cosmetic pen with round caps and joins, width [px] times lineScale.
+    QPen pen(const QColor& color, double width, Qt::PenStyle style = Qt::SolidLine) const;
 
     /// Clamps the numbers into their ranges.
     CanvasStyle sanitized() const;

@@ -1,14 +1,10 @@
 #include "canvas/scene_canvas.h"
 
 #include "canvas/body_painter.h"
-#include "canvas/pin_painter.h"
-#include "document/pin_set.h"
 #include "document/scene_document.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
-#include <QPainter>
-#include <QPainterPath>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -21,32 +17,6 @@ namespace {
 constexpr double kStrokeSpacingPx = 10;    // drawn points closer than this are dropped
 constexpr double kVertexPickPx = 8;        // how near a click must be to grab a vertex
 constexpr int kTopPx = 26, kLegendPx = 78; // the time line and the legend, before the scale
-
-// pen widths scale with the canvas style; set at the start of each paint
-double t_penScale = 1;
-
-QPen cosmetic(const QColor& c, double w, Qt::PenStyle style = Qt::SolidLine) {
-    QPen pen(c, w * t_penScale, style);
-    pen.setCosmetic(true);
-    pen.setCapStyle(Qt::RoundCap);
-    pen.setJoinStyle(Qt::RoundJoin);
-    return pen;
-}
-
-// curvature colour: grey when straight, blue for left turns (kappa > 0), red for right turns
-QColor curvatureColor(double kappa) {
-    double w = std::tanh(std::abs(kappa));
-    QColor turn = kappa > 0 ? QColor(40, 90, 230) : QColor(220, 60, 40);
-    QColor flat(150, 150, 150);
-    return QColor::fromRgbF(flat.redF() + w * (turn.redF() - flat.redF()),
-                            flat.greenF() + w * (turn.greenF() - flat.greenF()),
-                            flat.blueF() + w * (turn.blueF() - flat.blueF()));
-}
-
-// halfway to white, opaque (overlapping segments do not darken)
-QColor pale(const QColor& c) {
-    return QColor::fromRgbF(0.5 + 0.5 * c.redF(), 0.5 + 0.5 * c.greenF(), 0.5 + 0.5 * c.blueF());
-}
 
 } // namespace
 
@@ -90,10 +60,11 @@ void SceneCanvas::onSolutionChanged() {
 }
 
 void SceneCanvas::setTime(double t) {
+    double from = m_time;
     m_time = t;
     if (m_follow)
         centreOnBody();
-    update();
+    updateMoving(from);
 }
 
 void SceneCanvas::centreOnBody() {
@@ -101,7 +72,9 @@ void SceneCanvas::centreOnBody() {
     if (!solution)
         return;
     MotionSample m = solution->at(std::clamp(m_time, 0.0, solution->tEnd()));
-    m_centre = QPointF(m.x, m.y);
+    // on the pixel grid, so that the view moves by whole pixels and the static layer is shifted
+    // rather than drawn again
+    m_centre = QPointF(std::round(m.x * m_scale) / m_scale, std::round(m.y * m_scale) / m_scale);
 }
 
 QRectF SceneCanvas::sceneBounds() const {
@@ -216,249 +189,6 @@ void SceneCanvas::resizeEvent(QResizeEvent*) {
         fitScene();
 }
 
-void SceneCanvas::paintGrid(QPainter& p) const {
-    // grid lines every 1, 2 or 5 x 10^k metres, at least 40 px apart
-    double decade = std::pow(10.0, std::floor(std::log10(40.0 / m_scale)));
-    double step = decade;
-    for (double f : {1.0, 2.0, 5.0, 10.0})
-        if (f * decade * m_scale >= 40) {
-            step = f * decade;
-            break;
-        }
-    QPointF a = toWorld(QPointF(0, height())), b = toWorld(QPointF(width(), 0));
-    p.setPen(cosmetic(QColor(232, 232, 232), 1));
-    // counted, not accumulated: far from the origin x + step may round back to x
-    const double kx0 = std::floor(a.x() / step), kx1 = std::ceil(b.x() / step);
-    const double ky0 = std::floor(a.y() / step), ky1 = std::ceil(b.y() / step);
-    const bool countable =
-        std::max({std::abs(kx0), std::abs(kx1), std::abs(ky0), std::abs(ky1)}) < 1e15;
-    if (countable && kx1 - kx0 < 2000 && ky1 - ky0 < 2000) {
-        for (double k = kx0; k <= kx1; ++k)
-            p.drawLine(toPixel({k * step, a.y()}), toPixel({k * step, b.y()}));
-        for (double k = ky0; k <= ky1; ++k)
-            p.drawLine(toPixel({a.x(), k * step}), toPixel({b.x(), k * step}));
-    }
-    p.setPen(cosmetic(QColor(200, 200, 200), 1));
-    p.drawLine(toPixel({a.x(), 0}), toPixel({b.x(), 0}));
-    p.drawLine(toPixel({0, a.y()}), toPixel({0, b.y()}));
-    // scale bar, top right: one grid step
-    double len = step * m_scale;
-    QPointF right(width() - 14, topBandPx() - 2), left = right - QPointF(len, 0);
-    p.setPen(cosmetic(QColor(60, 60, 60), 1.5));
-    p.drawLine(left, right);
-    p.drawLine(left, left - QPointF(0, 5));
-    p.drawLine(right, right - QPointF(0, 5));
-    QFont f = font();
-    f.setPointSizeF(8 * m_style.lineScale);
-    p.setFont(f);
-    QString label =
-        step >= 1 ? QStringLiteral("%1 m").arg(step) : QStringLiteral("%1 cm").arg(step * 100);
-    p.drawText(QRectF(left.x() - 40, left.y() - 8 - 14 * m_style.lineScale, len + 80,
-                      14 * m_style.lineScale),
-               Qt::AlignCenter, label);
-}
-
-void SceneCanvas::paintPath(QPainter& p) const {
-    const auto& solution = m_document->solution();
-    for (const PathPiece& piece : solution->path()->pieces()) {
-        if (piece.kind == PathPiece::Kind::Pivot) {
-            p.setPen(cosmetic(QColor(120, 60, 160), 1.5));
-            p.setBrush(Qt::NoBrush);
-            p.drawEllipse(toPixel({piece.x, piece.y}), 5, 5);
-            continue;
-        }
-        const auto& nodes = piece.table->nodes();
-        for (std::size_t i = 1; i < nodes.size(); ++i) {
-            // a wide pale band, so that the trail on top of it stays visible
-            QPen pen =
-                cosmetic(m_style.highContrast
-                             ? m_style.path()
-                             : pale(curvatureColor(0.5 * (nodes[i - 1].kappa + nodes[i].kappa))),
-                         6);
-            pen.setCapStyle(Qt::FlatCap);
-            p.setPen(pen);
-            p.drawLine(toPixel({nodes[i - 1].x, nodes[i - 1].y}),
-                       toPixel({nodes[i].x, nodes[i].y}));
-        }
-    }
-    // start (filled) and end (open) of the path
-    const Path& path = *solution->path();
-    p.setPen(cosmetic(QColor(40, 40, 40), 1.5));
-    p.setBrush(QColor(40, 40, 40));
-    p.drawEllipse(toPixel({path.start().x, path.start().y}), 4, 4);
-    p.setBrush(Qt::white);
-    p.drawRect(QRectF(toPixel({path.end().x, path.end().y}) - QPointF(4, 4), QSizeF(8, 8)));
-}
-
-void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now) const {
-    const PlotSeries& s = m_document->series();
-    auto trail = [&](const QVector<double>& t, const QVector<double>& x, const QVector<double>& y,
-                     QPointF end, const QPen& pen) {
-        QPolygonF line;
-        for (int i = 0; i < t.size() && t[i] <= m_time; ++i)
-            line << toPixel({x[i], y[i]});
-        line << toPixel(end);
-        p.setPen(pen);
-        p.drawPolyline(line);
-    };
-    QColor free = m_style.free();
-    free.setAlpha(m_style.highContrast ? 255 : 150);
-    double w = m_style.trailWidth;
-    trail(s.freeT, s.freeX, s.freeY, {now.free.x, now.free.y},
-          cosmetic(free, std::max(0.75 * w, 1.5), Qt::DashLine));
-    trail(s.t, s.x, s.y, {now.x, now.y}, cosmetic(m_style.controlled().darker(150), w));
-    if (m_showVakonomic)
-        trail(s.vakT, s.vakX, s.vakY, {now.vak.x, now.vak.y},
-              cosmetic(m_style.vakonomic(), std::max(0.75 * w, 1.5), Qt::DashDotLine));
-}
-
-void SceneCanvas::paintLegend(QPainter& p) const {
-    // the legend has its own strip under the drawing area: nothing moves under it
-    const double k = m_style.lineScale;
-    QFont f = font();
-    f.setPointSizeF(9 * k);
-    p.setFont(f);
-    if (m_legendVisible) {
-        QRectF band(0, height() - legendBandPx(), width(), legendBandPx());
-        p.fillRect(band, QColor(246, 246, 246));
-        p.setPen(cosmetic(QColor(200, 200, 200), 1));
-        p.drawLine(band.topLeft(), band.topRight());
-        double y = band.top() + 8 * k, dy = 16 * k, x = 10, len = 24 * k;
-        p.setPen(cosmetic(m_style.controlled().darker(150), 2));
-        p.drawLine(QPointF(x, y), QPointF(x + len, y));
-        p.setPen(cosmetic(m_style.free(), 2, Qt::DashLine));
-        p.drawLine(QPointF(x, y + dy), QPointF(x + len, y + dy));
-        if (m_showVakonomic) {
-            p.setPen(cosmetic(m_style.vakonomic(), 2, Qt::DashDotLine));
-            p.drawLine(QPointF(x, y + 3 * dy), QPointF(x + len, y + 3 * dy));
-        }
-        for (int i = 0; i < 24; ++i) {
-            QColor c =
-                m_style.highContrast ? m_style.path() : pale(curvatureColor((i - 11.5) / 4.0));
-            QPen pen = cosmetic(c, 6);
-            pen.setCapStyle(Qt::FlatCap);
-            p.setPen(pen);
-            p.drawLine(QPointF(x + i * k, y + 2 * dy), QPointF(x + (i + 1) * k, y + 2 * dy));
-        }
-        p.setPen(Qt::black);
-        double tx = x + len + 6;
-        auto text = [&](double row, const QString& s) {
-            QRectF r(tx, y + row * dy - 0.5 * dy, width() - tx - 4, dy);
-            p.drawText(r, Qt::AlignLeft | Qt::AlignVCenter,
-                       p.fontMetrics().elidedText(s, Qt::ElideRight, int(r.width())));
-        };
-        text(0, tr("controlled body and its trail (tracks the path)"));
-        text(1, tr("free motion from the same start (ghost)"));
-        if (m_showVakonomic)
-            text(3, tr("genuine vakonomic body: \u03bb obeys its own equation (21)"));
-        text(2, m_style.highContrast
-                    ? tr("path (\u25cf start, \u25a1 end)")
-                    : tr("path (\u25cf start, \u25a1 end), coloured by its curvature \u03ba: red "
-                         "right turn, grey straight, blue left turn"));
-    }
-    if (m_drawMode)
-        p.drawText(QRectF(8, topBandPx(), width() - 16, 20 * k), Qt::AlignLeft,
-                   tr("Draw mode: drag to draw a new path; drag a square to move a point, "
-                      "right-click it to delete it"));
-}
-
-void SceneCanvas::paintBackground() {
-    // grid, path and legend change only with the view or the solution: cached between frames
-    qreal dpr = devicePixelRatioF();
-    BackgroundKey key{m_document->solution().get(),
-                      size(),
-                      m_scale,
-                      m_centre,
-                      m_drawMode,
-                      dpr,
-                      m_showVakonomic,
-                      m_style,
-                      m_legendVisible};
-    t_penScale = m_style.lineScale;
-    if (key == m_backgroundKey && !m_background.isNull())
-        return;
-    m_backgroundKey = key;
-    m_background = QPixmap(size() * dpr);
-    m_background.setDevicePixelRatio(dpr);
-    m_background.fill(Qt::white);
-    QPainter p(&m_background);
-    p.setRenderHint(QPainter::Antialiasing, true);
-    paintGrid(p);
-    if (m_document->solution()) {
-        paintPath(p);
-        paintLegend(p);
-    }
-}
-
-void SceneCanvas::paintEvent(QPaintEvent*) {
-    paintBackground();
-    t_penScale = m_style.lineScale;
-    QPainter p(this);
-    p.drawPixmap(0, 0, m_background);
-    p.setRenderHint(QPainter::Antialiasing, true);
-    const auto& solution = m_document->solution();
-    if (solution) {
-        MotionSample now = solution->at(m_time);
-        p.save();
-        p.setClipRect(drawingArea());
-        paintTrails(p, now);
-        paintPinnedRuns(p, *PinSet::of(m_document), worldTransform(), m_time, QPointF(10, 42));
-        const SystemSpec& spec = solution->scene().system;
-        p.setTransform(worldTransform());
-        // the translucent ghost on top, so that both stay visible where they overlap
-        BodyLook look{m_style.body, m_style.bodyOpacity, m_style.lineScale};
-        paintBody(p, spec, solution->system(), {now.x, now.y, now.phi}, m_style.controlled(), false,
-                  look);
-        paintBody(p, spec, solution->system(), {now.free.x, now.free.y, now.free.phi},
-                  m_style.free(), true, look);
-        if (m_showVakonomic)
-            paintBody(p, spec, solution->system(), {now.vak.x, now.vak.y, now.vak.phi},
-                      m_style.vakonomic(), true, look);
-        p.restore();
-        m_vectors.paint(p, solution, m_document->scene().vectors, now, worldTransform(), m_scale,
-                        rect());
-        paintTimeReadout(p, solution->tEnd());
-    }
-    if (m_drawMode)
-        paintVertices(p);
-    if (m_stroke.size() > 1) {
-        QPolygonF line;
-        for (QPointF w : m_stroke)
-            line << toPixel(w);
-        p.setPen(cosmetic(QColor(40, 40, 40), 2));
-        p.drawPolyline(line);
-    }
-}
-
-void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
-    QFont f = font();
-    p.setPen(Qt::black);
-    if (m_style.largeTime) {
-        // presentation: the time large enough for the back of the room
-        f.setPointSizeF(9 * m_style.lineScale * 2);
-        f.setBold(true);
-        p.setFont(f);
-        const QString now = tr("t = %1 s").arg(m_time, 0, 'f', 2);
-        QRectF band(10, 0, width() - 20, topBandPx());
-        p.drawText(band, Qt::AlignLeft | Qt::AlignVCenter, now);
-        double after =
-            10 + p.fontMetrics().horizontalAdvance(now) + p.fontMetrics().averageCharWidth();
-        f.setPointSizeF(9 * m_style.lineScale);
-        f.setBold(false);
-        p.setFont(f);
-        p.drawText(band.adjusted(after - 10, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter,
-                   tr("of %1 s").arg(tEnd, 0, 'f', 2));
-        return;
-    }
-    f.setPointSizeF(9 * m_style.lineScale);
-    p.setFont(f);
-    p.drawText(QRectF(8, 6, width() - 16, topBandPx()), Qt::AlignLeft,
-               tr("t = %1 s of %2 s    scale %3 px/m")
-                   .arg(m_time, 0, 'f', 2)
-                   .arg(tEnd, 0, 'f', 2)
-                   .arg(m_scale, 0, 'g', 3));
-}
-
 std::vector<std::pair<double, double>> SceneCanvas::drawnPoints() const {
     const auto& solution = m_document->solution();
     if (!solution || solution->scene().path.kind != PathKind::Polyline)
@@ -478,23 +208,6 @@ int SceneCanvas::vertexAt(QPointF pos) const {
         }
     }
     return best;
-}
-
-void SceneCanvas::paintVertices(QPainter& p) const {
-    const auto points = m_dragVertex >= 0 ? m_editPoints : drawnPoints();
-    if (m_dragVertex >= 0) {
-        QPolygonF line;
-        for (const auto& [x, y] : points)
-            line << toPixel({x, y});
-        p.setPen(cosmetic(QColor(60, 60, 60), 1, Qt::DashLine));
-        p.drawPolyline(line);
-    }
-    p.setPen(cosmetic(QColor(60, 60, 60), 1));
-    p.setBrush(QColor(255, 255, 255, 220));
-    for (const auto& [x, y] : points) {
-        QPointF c = toPixel({x, y});
-        p.drawRect(QRectF(c.x() - 3, c.y() - 3, 6, 6));
-    }
 }
 
 void SceneCanvas::wheelEvent(QWheelEvent* e) {

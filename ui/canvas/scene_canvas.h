@@ -1,4 +1,5 @@
 #pragma once
+#include "canvas/body_sprites.h"
 #include "canvas/canvas_style.h"
 #include "canvas/vector_layer.h"
 #include "paths/path_source.h"
@@ -78,12 +79,24 @@ class SceneCanvas : public QWidget {
   private:
     void onSolutionChanged();
     QTransform worldTransform() const;
-    void paintGrid(QPainter& p) const;
-    void paintPath(QPainter& p) const;
+    /// Grid lines every 1, 2 or 5 x 10^k m, at least 40 px apart.
+    double gridStep() const;
+    void paintGrid(QPainter& p, const QTransform& world, const QRectF& area) const;
+    void paintScaleBar(QPainter& p) const;
+    void paintPath(QPainter& p, const QTransform& world) const;
     void paintTrails(QPainter& p, const MotionSample& now) const;
     void paintLegend(QPainter& p) const;
     void paintTimeReadout(QPainter& p, double tEnd) const;
     void paintBackground();
+    /// The static layer onto the widget: the cached background, or while following the body the
+    /// world layer shifted by whole pixels under the legend and the scale bar.
+    void paintStaticLayer(QPainter& p);
+    /// Repaints what moved from time `from` to m_time: the bodies, their arrows and the new
+    /// end of each trail where that suffices, else the whole canvas.
+    void updateMoving(double from);
+    /// The box [px] of everything that moves drawn at time t, with the trails' vertices
+    /// after time `from`.
+    QRect movingBounds(const Solution& solution, const MotionSample& now, double from) const;
     void centreOnBody();
     /// The vertices of the current drawn path (empty unless it is a polyline).
     std::vector<std::pair<double, double>> drawnPoints() const;
@@ -117,9 +130,20 @@ class SceneCanvas : public QWidget {
         bool legend = true;
         bool operator==(const BackgroundKey&) const = default;
     };
+    BackgroundKey backgroundKey() const;
     BackgroundKey m_backgroundKey;
+    QRect m_movingPainted; // the box of what moves, as last painted
+    // following the body: grid and path drawn once over a margin around the view, then shifted
+    // by whole pixels (the followed centre snaps to the pixel grid); the legend on its own
+    BackgroundKey m_worldKey;
+    QPixmap m_worldLayer;
+    QPointF m_worldCentre;
+    int m_worldMargin = 0;
+    BackgroundKey m_legendKey;
+    QPixmap m_legendLayer;
     QPixmap m_background; // grid, path and legend
     VectorLayer m_vectors;
+    BodySprites m_bodies;
     CanvasStyle m_style;
     bool m_legendVisible = true;
     int topBandPx() const;

@@ -14,6 +14,12 @@ constexpr double kLongest = 1.2;                        // the largest arrow, in
 constexpr double kCoupleRadius = 0.45;                  // the couple's arc, in body extents
 constexpr double kLargestTurn = 1.5 * std::numbers::pi; // the largest couple's arc [rad]
 
+constexpr double kLabelPx = 48; // room for an arrowhead's label and its pen around a shape
+
+QPointF scaleBarsCorner(const QRectF& area) {
+    return area.bottomRight() - QPointF(10, 70);
+}
+
 double extentOf(const Solution& s) {
     return std::max(bodyExtent(s.scene().system, s.system()), 1e-3);
 }
@@ -56,27 +62,59 @@ VectorScales VectorLayer::scales(const std::shared_ptr<const Solution>& solution
     return out;
 }
 
+bool VectorLayer::shapes(const std::shared_ptr<const Solution>& solution,
+                         const VectorOverlay& overlay, const MotionSample& now,
+                         const QTransform& world, VectorShapes& free, VectorShapes& controlled,
+                         VectorScales& k) const {
+    if (!solution || overlay == VectorOverlay{})
+        return false;
+    bool any = false;
+    for (int i = 0; i < kVectorKinds; ++i)
+        any = any || (overlay.*vectorToggle(VectorKind(i))).shown;
+    if (!any)
+        return false;
+    k = scales(solution, overlay);
+    const DerivedSystem& sys = solution->system();
+    double radius = kCoupleRadius * extentOf(*solution);
+    // the free body has no control: its arrows are the velocities and the knife's reaction
+    free = vectorShapes(sys, freeBodyState(sys, now.free), overlay, k, world, radius, true);
+    controlled = vectorShapes(sys, controlledBodyState(now), overlay, k, world, radius, false);
+    return true;
+}
+
 void VectorLayer::paint(QPainter& p, const std::shared_ptr<const Solution>& solution,
                         const VectorOverlay& overlay, const MotionSample& now,
                         const QTransform& world, double pixelsPerMetre, const QRectF& area) {
     m_controlled = {};
     m_free = {};
-    if (!solution || overlay == VectorOverlay{})
+    VectorScales k{};
+    if (!shapes(solution, overlay, now, world, m_free, m_controlled, k))
         return;
-    bool any = false;
-    for (int i = 0; i < kVectorKinds; ++i)
-        any = any || (overlay.*vectorToggle(VectorKind(i))).shown;
-    if (!any)
-        return;
-    VectorScales k = scales(solution, overlay);
-    const DerivedSystem& sys = solution->system();
-    double radius = kCoupleRadius * extentOf(*solution);
-    // the free body has no control: its arrows are the velocities and the knife's reaction
-    m_free = vectorShapes(sys, freeBodyState(sys, now.free), overlay, k, world, radius, true);
-    m_controlled = vectorShapes(sys, controlledBodyState(now), overlay, k, world, radius, false);
     paintVectorShapes(p, m_free, false);
     paintVectorShapes(p, m_controlled, true);
-    paintScaleBars(p, overlay, k, pixelsPerMetre, area.bottomRight() - QPointF(10, 70));
+    paintScaleBars(p, overlay, k, pixelsPerMetre, scaleBarsCorner(area));
+}
+
+QRectF VectorLayer::bounds(const std::shared_ptr<const Solution>& solution,
+                           const VectorOverlay& overlay, const MotionSample& now,
+                           const QTransform& world) const {
+    VectorShapes free, controlled;
+    VectorScales k{};
+    if (!shapes(solution, overlay, now, world, free, controlled, k))
+        return {};
+    QRectF box;
+    auto add = [&](QRectF r) { box = box.isNull() ? r : box.united(r); };
+    for (const VectorShapes* s : {&free, &controlled}) {
+        for (const ArrowShape& a : s->arrows)
+            add(QRectF(a.tail, a.head)
+                    .normalized()
+                    .adjusted(-kLabelPx, -kLabelPx, kLabelPx, kLabelPx));
+        for (const CoupleShape& c : s->couples)
+            add(QRectF(c.centre, c.centre)
+                    .adjusted(-c.radius - kLabelPx, -c.radius - kLabelPx, c.radius + kLabelPx,
+                              c.radius + kLabelPx + 20)); // "tau = 0 while turning" under it
+    }
+    return box;
 }
 
 } // namespace chaplygin::ui

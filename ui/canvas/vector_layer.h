@@ -18,6 +18,11 @@ class VectorLayer {
                const VectorOverlay& overlay, const MotionSample& now, const QTransform& world,
                double pixelsPerMetre, const QRectF& area);
 
+    /// The box [px] of the arrows, arcs and labels paint draws for now (empty when none); the
+    /// scale bars stay put.
+    QRectF bounds(const std::shared_ptr<const Solution>& solution, const VectorOverlay& overlay,
+                  const MotionSample& now, const QTransform& world) const;
+
     /// The effective scales (the scene's, else automatic) for a solution.
     VectorScales scales(const std::shared_ptr<const Solution>& solution,
                         const VectorOverlay& overlay) const;
@@ -27,6 +32,11 @@ class VectorLayer {
     const VectorShapes& freeShapes() const { return m_free; }
 
   private:
+    /// The shapes of the free and the controlled body; false when no arrow is shown.
+    bool shapes(const std::shared_ptr<const Solution>& solution, const VectorOverlay& overlay,
+                const MotionSample& now, const QTransform& world, VectorShapes& free,
+                VectorShapes& controlled, VectorScales& k) const;
+
     mutable std::shared_ptr<const Solution> m_solution; // the one m_auto was computed for
     mutable VectorScales m_auto{};
     VectorShapes m_controlled, m_free;

@@ -29,8 +29,9 @@ void EquationsPanel::setTime(double t) {
 
 void EquationsPanel::refresh() {
     m_stale = true;
-    // while hidden (a closed dock, a background tab) the page waits until it is shown
-    if (isVisible())
+    // while hidden (a closed dock) or off screen (a background tab: Qt moves it out of the
+    // window rather than hiding it) the page waits until it is shown
+    if (isVisible() && !visibleRegion().isEmpty())
         html();
 }
 

@@ -16,7 +16,7 @@ class EquationsPanel : public QWidget {
 
     double time() const { return m_time; }
     QTextBrowser* view() const { return m_view; }
-    /// The page as shown (rebuilt now if it was skipped while hidden).
+    /// The page as shown (rebuilt now if it was skipped while hidden or in a background tab).
     QString html();
     /// Enlarges the text (presentation mode): 1 is the normal size.
     void setFontScale(double scale);

@@ -127,6 +127,12 @@ void installInstruments(MainWindow* window) {
     });
     QObject::connect(window->playback(), &Playback::timeChanged, equations,
                      &EquationsPanel::setTime);
+    // its tab brought to the front: the page catches up with the time
+    QObject::connect(equationsDock, &QDockWidget::visibilityChanged, equations,
+                     [equations](bool on) {
+                         if (on)
+                             equations->html();
+                     });
 
     if (auto* view = window->menuBar()->findChild<QMenu*>(QStringLiteral("viewMenu"))) {
         QAction* first = view->actions().value(0);

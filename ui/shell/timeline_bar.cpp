@@ -8,6 +8,7 @@
 #include <QSlider>
 #include <QStyle>
 
+#include <algorithm>
 #include <cmath>
 
 namespace chaplygin::ui {
@@ -46,7 +47,6 @@ TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
     m_slider->setAccessibleDescription(tr("The animation time; arrows and Page Up/Down scrub"));
     addWidget(m_slider);
     m_timeLabel = new QLabel;
-    m_timeLabel->setMinimumWidth(150);
     m_timeLabel->setAccessibleName(tr("Time read-out"));
     addWidget(m_timeLabel);
 
@@ -93,8 +93,23 @@ void TimelineBar::sync() {
     double end = m_playback->tEnd();
     m_slider->setValue(
         end > 0 ? static_cast<int>(std::lround(m_playback->time() / end * kSliderSteps)) : 0);
-    m_timeLabel->setText(
-        tr(" t = %1 s / %2 s").arg(m_playback->time(), 0, 'f', 2).arg(end, 0, 'f', 2));
+    auto text = [&](double t) {
+        return tr(" t = %1 s / %2 s").arg(t, 0, 'f', 2).arg(end, 0, 'f', 2);
+    };
+    // a size that fits every time up to the end: a new text then lays out the label alone,
+    // not the whole window
+    if (end != m_labelEnd || m_timeLabel->font() != m_labelFont) {
+        m_labelEnd = end;
+        m_labelFont = m_timeLabel->font();
+        m_timeLabel->setMinimumSize(0, 0);
+        m_timeLabel->setMaximumSize(QWIDGETSIZE_MAX, QWIDGETSIZE_MAX);
+        m_timeLabel->setText(text(std::max(end, 0.0)));
+        QSize widest = m_timeLabel->sizeHint();
+        m_timeLabel->setFixedSize(
+            std::max(widest.width() + m_timeLabel->fontMetrics().averageCharWidth(), 150),
+            widest.height());
+    }
+    m_timeLabel->setText(text(m_playback->time()));
     m_syncing = false;
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <QFont>
 #include <QToolBar>
 
 class QAction;
@@ -48,6 +49,8 @@ class TimelineBar : public QToolBar {
     QSlider* m_slider;
     QLabel* m_timeLabel;
     bool m_syncing = false;
+    double m_labelEnd = -1; // the end time and the font the label's fixed size was made for
+    QFont m_labelFont;
 };
 
 } // namespace chaplygin::ui

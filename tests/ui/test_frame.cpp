@@ -1,0 +1,337 @@
+// GUI tests of the animation frame's economies: what a frame repaints and lays out, and that
+// the cached layers draw what direct drawing draws. Offscreen, through the real window.
+#include "canvas/body_sprites.h"
+#include "canvas/scene_canvas.h"
+#include "document/scene_document.h"
+#include "gui_test_support.h"
+#include "scene/presets.h"
+#include "scene/solution.h"
+#include "shell/main_window.h"
+#include "shell/playback.h"
+#include "shell/timeline_bar.h"
+
+#include <QLabel>
+#include <QPaintEvent>
+#include <QPainter>
+#include <QScreen>
+#include <QtTest>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+using namespace chaplygin;
+using namespace chaplygin::ui;
+
+namespace {
+
+// counts the events of one type a widget receives
+class EventCounter : public QObject {
+  public:
+    explicit EventCounter(QEvent::Type type) : m_type(type) {}
+    int count = 0;
+    bool eventFilter(QObject*, QEvent* e) override {
+        count += e->type() == m_type ? 1 : 0;
+        return false;
+    }
+
+  private:
+    QEvent::Type m_type;
+};
+
+// the union of the regions of the paint events a widget receives
+class PaintRegions : public QObject {
+  public:
+    QRegion region;
+    int count = 0;
+    bool eventFilter(QObject*, QEvent* e) override {
+        if (e->type() == QEvent::Paint) {
+            region += static_cast<QPaintEvent*>(e)->region();
+            ++count;
+        }
+        return false;
+    }
+};
+
+// what the window shows of the canvas (the offscreen screen grabs the backing store) against
+// what a full repaint of the canvas draws now: the same pixels, but for the resampling of a
+// turned body image, whose fixed-point steps start where a repainted span starts (a level or two
+// on a few pixels; a stale body or a missed trail end differs by far more)
+bool showsAFullRepaint(MainWindow& window) {
+    SceneCanvas* canvas = window.canvas();
+    QPoint at = canvas->mapTo(&window, QPoint(0, 0));
+    QImage shown =
+        window.screen()
+            ->grabWindow(window.winId(), at.x(), at.y(), canvas->width(), canvas->height())
+            .toImage()
+            .convertToFormat(QImage::Format_RGB32);
+    QImage full = canvas->grab().toImage().convertToFormat(QImage::Format_RGB32);
+    if (shown.isNull() || shown.size() != full.size())
+        return false;
+    int differing = 0;
+    for (int y = 0; y < full.height(); ++y)
+        for (int x = 0; x < full.width(); ++x) {
+            QRgb a = shown.pixel(x, y), b = full.pixel(x, y);
+            int d = std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                              std::abs(qBlue(a) - qBlue(b))});
+            if (d > 4)
+                return false;
+            differing += d > 0 ? 1 : 0;
+        }
+    return differing <= full.width() * full.height() / 1000;
+}
+
+int area(const QRegion& r) {
+    int a = 0;
+    for (const QRect& rect : r)
+        a += rect.width() * rect.height();
+    return a;
+}
+
+// the canvas-sized image of bodies drawn either directly or through the sprite cache
+QImage drawBody(BodySprites* sprites, const SystemSpec& spec, const BodyPose& pose,
+                const BodyLook& look, double scale, bool ghost) {
+    QImage image(320, 240, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::white);
+    QPainter p(&image);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    QTransform world;
+    world.translate(160, 120);
+    world.scale(scale, -scale);
+    DerivedSystem derived = deriveSystem(spec);
+    if (sprites) {
+        sprites->paint(p, world, scale, spec, derived, pose, QColor(40, 90, 230), ghost, look);
+    } else {
+        p.setTransform(world);
+        paintBody(p, spec, derived, pose, QColor(40, 90, 230), ghost, look);
+    }
+    return image;
+}
+
+// the ink (765 - r - g - b) of each pixel, averaged over its 3 x 3 neighbourhood: what the eye
+// sees, blind to the sub-pixel shifts of resampling
+std::vector<double> blurredInk(const QImage& image) {
+    const int w = image.width(), h = image.height();
+    std::vector<double> ink(std::size_t(w * h), 0.0), out(ink.size(), 0.0);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            QRgb p = image.pixel(x, y);
+            ink[std::size_t(y * w + x)] = 765 - qRed(p) - qGreen(p) - qBlue(p);
+        }
+    for (int y = 1; y + 1 < h; ++y)
+        for (int x = 1; x + 1 < w; ++x) {
+            double sum = 0;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    sum += ink[std::size_t((y + dy) * w + x + dx)];
+            out[std::size_t(y * w + x)] = sum / 9;
+        }
+    return out;
+}
+
+struct Difference {
+    double total[2] = {0, 0}; // the ink of each image
+    double largest = 0;       // the largest difference of blurred ink [of 765]
+};
+
+Difference compare(const QImage& a, const QImage& b) {
+    std::vector<double> p = blurredInk(a), q = blurredInk(b);
+    Difference d;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        d.total[0] += p[i];
+        d.total[1] += q[i];
+        d.largest = std::max(d.largest, std::abs(p[i] - q[i]));
+    }
+    return d;
+}
+
+} // namespace
+
+class TestFrame : public QObject {
+    Q_OBJECT
+
+  private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void timeReadoutFitsWithoutLayingOutTheWindow();
+    void bodySpritesDrawWhatDirectDrawingDraws();
+    void framesRepaintWhatMovesAsAFullRepaintWould();
+    void followingShiftsTheStaticLayerAsRedrawingWould();
+
+  private:
+    std::unique_ptr<MainWindow> m_window;
+};
+
+void TestFrame::initTestCase() {
+    test::useTestSettings(QStringLiteral("ui_frame_tests"));
+}
+
+void TestFrame::init() {
+    m_window = test::showTestWindow();
+    QVERIFY(m_window && m_window->document()->solution());
+}
+
+void TestFrame::cleanup() {
+    m_window.reset();
+}
+
+void TestFrame::timeReadoutFitsWithoutLayingOutTheWindow() {
+    QLabel* label = m_window->timeline()->timeLabel();
+    Playback* playback = m_window->playback();
+    QTest::qWait(200); // the window's first layout settles
+    EventCounter layouts(QEvent::LayoutRequest);
+    m_window->installEventFilter(&layouts);
+    // every time up to the end fits the label, and a new time lays out no part of the window
+    for (double t : {0.0, 1.0, 9.99, playback->tEnd()}) {
+        playback->seek(t);
+        QCoreApplication::processEvents();
+        QVERIFY(label->text().contains(QString::number(t, 'f', 2)));
+        QVERIFY2(label->fontMetrics().horizontalAdvance(label->text()) <=
+                     label->contentsRect().width(),
+                 qPrintable(label->text()));
+    }
+    QCOMPARE(layouts.count, 0);
+    // a longer horizon makes room for its longer times
+    Scene s = m_window->document()->scene();
+    s.speed = 0.1; // ten times slower: the end is past 100 s
+    try {
+        m_window->loadScene(s);
+    } catch (const std::exception& e) {
+        QFAIL(e.what());
+    }
+    m_window->document()->flush();
+    playback->seek(111.11);
+    QCoreApplication::processEvents();
+    QVERIFY(label->text().contains(QStringLiteral("111.11")));
+    QVERIFY(label->fontMetrics().horizontalAdvance(label->text()) <= label->contentsRect().width());
+}
+
+void TestFrame::bodySpritesDrawWhatDirectDrawingDraws() {
+    // every system and display, turned and off the pixel grid: the sprite is the direct drawing
+    // resampled, so the two carry the same ink (within 1.5 %) and, seen through a 3 x 3 blur,
+    // differ nowhere by more than a fifth of black (a missing knife or a pixel's shift would)
+    SystemSpec carriage{SystemKind::Carriage, defaultSystemParams(SystemKind::Carriage)};
+    SystemSpec disk{SystemKind::Disk, defaultSystemParams(SystemKind::Disk)};
+    SystemSpec sleigh; // a = 0.5, b = 1
+    BodySprites sprites;
+    int cases = 0;
+    for (const SystemSpec& spec : {sleigh, disk, carriage})
+        for (BodyDisplay display :
+             {BodyDisplay::ToScale, BodyDisplay::Outline, BodyDisplay::Marker})
+            for (bool ghost : {false, true})
+                for (double phi : {0.0, 0.7, 2.9, -1.2}) {
+                    BodyPose pose{0.137, -0.071, phi};
+                    BodyLook look{display, 0.8, 1.0};
+                    QImage direct = drawBody(nullptr, spec, pose, look, 60, ghost);
+                    QImage cached = drawBody(&sprites, spec, pose, look, 60, ghost);
+                    Difference d = compare(direct, cached);
+                    QVERIFY(d.total[0] > 765 * 50);
+                    QVERIFY2(
+                        std::abs(d.total[0] - d.total[1]) <= 0.015 * d.total[0],
+                        qPrintable(QStringLiteral("ink %1 vs %2").arg(d.total[0]).arg(d.total[1])));
+                    QVERIFY2(d.largest <= 0.2 * 765, qPrintable(QString::number(d.largest)));
+                    ++cases;
+                }
+    QCOMPARE(cases, 72);
+    // zoomed far in, a body larger than any sprite is drawn directly: the very same pixels
+    BodyPose pose{0.01, 0.02, 0.3};
+    QImage direct = drawBody(nullptr, sleigh, pose, {}, 2000, false);
+    QImage cached = drawBody(&sprites, sleigh, pose, {}, 2000, false);
+    QCOMPARE(cached, direct);
+}
+
+void TestFrame::framesRepaintWhatMovesAsAFullRepaintWould() {
+    Scene s = m_window->document()->scene();
+    s.vectors.knifeVelocity.shown = s.vectors.lateralReaction.shown = true;
+    s.vectors.controlCouple.shown = true;
+    m_window->loadScene(s);
+    SceneCanvas* canvas = m_window->canvas();
+    Playback* playback = m_window->playback();
+    playback->seek(1.0);
+    QCoreApplication::processEvents();
+    QVERIFY(showsAFullRepaint(*m_window));
+    PaintRegions painted;
+    canvas->installEventFilter(&painted);
+    // playing: each frame repaints the bodies, their arrows, the trails' new ends and the time
+    // read-out, and the window then shows what a full repaint draws
+    const int whole = canvas->width() * canvas->height();
+    for (int frame = 0; frame < 40; ++frame) {
+        painted.region = {};
+        playback->advance(1.0 / 60);
+        QCoreApplication::processEvents();
+        QCOMPARE(painted.region.boundingRect().intersected(canvas->rect()).isEmpty(), false);
+        QVERIFY2(area(painted.region) < whole / 3,
+                 qPrintable(QStringLiteral("frame %1: %2 of %3 px")
+                                .arg(frame)
+                                .arg(area(painted.region))
+                                .arg(whole)));
+    }
+    QVERIFY(painted.count >= 40);
+    QVERIFY(showsAFullRepaint(*m_window));
+    // a jump forward along a straight line: the bodies leave their old places, which are
+    // repainted too
+    m_window->loadScene(presetScene("line"));
+    playback->seek(0.5);
+    QCoreApplication::processEvents();
+    QVERIFY(showsAFullRepaint(*m_window));
+    painted.region = {};
+    playback->seek(2.0);
+    QCoreApplication::processEvents();
+    QVERIFY(area(painted.region) < whole / 3);
+    QVERIFY(showsAFullRepaint(*m_window));
+    // back in time the trails shrink: the whole canvas
+    painted.region = {};
+    playback->seek(0.5);
+    QCoreApplication::processEvents();
+    QCOMPARE(painted.region.boundingRect(), canvas->rect());
+    QVERIFY(showsAFullRepaint(*m_window));
+    // following the body moves the view: the whole canvas
+    canvas->setFollowBody(true);
+    QCoreApplication::processEvents();
+    painted.region = {};
+    playback->advance(1.0 / 60);
+    QCoreApplication::processEvents();
+    QCOMPARE(painted.region.boundingRect(), canvas->rect());
+    QVERIFY(showsAFullRepaint(*m_window));
+}
+
+void TestFrame::followingShiftsTheStaticLayerAsRedrawingWould() {
+    SceneCanvas* canvas = m_window->canvas();
+    Playback* playback = m_window->playback();
+    playback->seek(2.0);
+    canvas->setFollowBody(true);
+    for (int frame = 0; frame < 90; ++frame) {
+        playback->advance(1.0 / 30); // three seconds: the view moves by many pixels
+        QCoreApplication::processEvents();
+        // the body stays in the middle (to the pixel grid)
+        MotionSample m = m_window->document()->solution()->at(playback->time());
+        QPointF p = canvas->toPixel({m.x, m.y});
+        QVERIFY(std::abs(p.x() - canvas->width() / 2.0) <= 0.5 + 1e-9);
+        QVERIFY(std::abs(p.y() - canvas->height() / 2.0) <= 0.5 + 1e-9);
+    }
+    QVERIFY(showsAFullRepaint(*m_window));
+    // the shifted layer is what drawing the grid, the path and the legend at this view draws
+    QImage following = canvas->grab().toImage();
+    canvas->setFollowBody(false); // the view stays
+    QImage drawn = canvas->grab().toImage();
+    // the same pixels, but for the rounding of the legend's antialiased line ends, which the
+    // cached legend composites from a translucent image (a few levels on a few pixels)
+    QCOMPARE(following.size(), drawn.size());
+    int differing = 0, most = 0;
+    for (int y = 0; y < drawn.height(); ++y)
+        for (int x = 0; x < drawn.width(); ++x) {
+            QRgb a = following.pixel(x, y), b = drawn.pixel(x, y);
+            int d = std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                              std::abs(qBlue(a) - qBlue(b))});
+            differing += d > 0 ? 1 : 0;
+            most = std::max(most, d);
+        }
+    QVERIFY2(most <= 12, qPrintable(QString::number(most)));
+    QVERIFY2(differing <= drawn.width() * drawn.height() / 1000,
+             qPrintable(QString::number(differing)));
+}
+
+QTEST_MAIN(TestFrame)
+#include "test_frame.moc"

@@ -1,0 +1,101 @@
+#include "canvas/body_sprites.h"
+
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+
+namespace chaplygin::ui {
+
+namespace {
+
+constexpr std::size_t kSprites = 6;       // controlled, free and vakonomic, with room to spare
+constexpr double kLargestSpritePx = 1536; // larger bodies are drawn directly
+
+// the radius [px] around P that holds the body and its pens (the widest is 4 px, scaled)
+double radiusPx(double pixelsPerMetre, const SystemSpec& spec, const DerivedSystem& derived,
+                const BodyLook& look) {
+    double lineScale = std::clamp(look.lineScale, 0.5, 4.0);
+    double pad = 3 + 3 * lineScale;
+    if (look.display == BodyDisplay::Marker) // knife 1.3 r, centre of mass at 2 r + 0.45 r
+        return 2.5 * kMarkerRadiusPx * lineScale + pad;
+    return bodyExtent(spec, derived) * pixelsPerMetre + pad;
+}
+
+} // namespace
+
+QRectF BodySprites::pixelBounds(const QTransform& world, double pixelsPerMetre,
+                                const SystemSpec& spec, const DerivedSystem& derived,
+                                const BodyPose& pose, const BodyLook& look) {
+    double r = radiusPx(pixelsPerMetre, spec, derived, look) + 1;
+    QPointF c = world.map(QPointF(pose.x, pose.y));
+    return {c.x() - r, c.y() - r, 2 * r, 2 * r};
+}
+
+const BodySprites::Sprite* BodySprites::find(const Key& key, const SystemSpec& spec,
+                                             const DerivedSystem& derived, const QColor& color,
+                                             const BodyLook& look) {
+    for (const Sprite& s : m_sprites)
+        if (s.key == key)
+            return &s;
+    double centre = std::ceil(radiusPx(key.pixelsPerMetre, spec, derived, look));
+    if (!(2 * centre * key.dpr <= kLargestSpritePx))
+        return nullptr;
+    Sprite s;
+    s.key = key;
+    s.centre = centre;
+    int side = int(std::ceil(2 * centre * key.dpr));
+    s.image = QImage(side, side, QImage::Format_ARGB32_Premultiplied);
+    s.image.setDevicePixelRatio(key.dpr);
+    s.image.fill(Qt::transparent);
+    {
+        QPainter p(&s.image);
+        p.setRenderHint(QPainter::Antialiasing, true);
+        p.translate(centre, centre);
+        p.scale(key.pixelsPerMetre, -key.pixelsPerMetre);
+        paintBody(p, spec, derived, {}, color, key.ghost, look);
+    }
+    if (m_sprites.size() < kSprites) {
+        m_sprites.push_back(std::move(s));
+        return &m_sprites.back();
+    }
+    Sprite& slot = m_sprites[m_next];
+    m_next = (m_next + 1) % kSprites;
+    slot = std::move(s);
+    return &slot;
+}
+
+void BodySprites::paint(QPainter& painter, const QTransform& world, double pixelsPerMetre,
+                        const SystemSpec& spec, const DerivedSystem& derived, const BodyPose& pose,
+                        const QColor& color, bool ghost, const BodyLook& look) {
+    Key key{spec,           derived.a,
+            derived.b,      color.rgba(),
+            ghost,          look.display,
+            look.opacity,   look.lineScale,
+            pixelsPerMetre, painter.device()->devicePixelRatioF()};
+    const Sprite* sprite = std::isfinite(pose.x) && std::isfinite(pose.y) &&
+                                   std::isfinite(pose.phi) && pixelsPerMetre > 0
+                               ? find(key, spec, derived, color, look)
+                               : nullptr;
+    painter.save();
+    if (!sprite) {
+        painter.setTransform(world);
+        paintBody(painter, spec, derived, pose, color, ghost, look);
+        painter.restore();
+        return;
+    }
+    // image pixels -> the body's frame [m] -> the world -> the widget
+    const double s = pixelsPerMetre, c = sprite->centre;
+    QTransform toBody(1 / s, 0, 0, -1 / s, -c / s, c / s);
+    QTransform pose2d;
+    pose2d.translate(pose.x, pose.y);
+    pose2d.rotate(pose.phi * 180.0 / M_PI);
+    painter.setTransform(toBody * pose2d * world);
+    // the image's margin is transparent: its own edges need no antialiasing
+    painter.setRenderHint(QPainter::Antialiasing, false);
+    painter.setRenderHint(QPainter::SmoothPixmapTransform, true);
+    painter.drawImage(QPointF(0, 0), sprite->image);
+    painter.restore();
+}
+
+} // namespace chaplygin::ui

@@ -1,0 +1,242 @@
+#include "canvas/scene_canvas.h"
+
+#include "document/scene_document.h"
+
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+
+// the canvas's static layer: grid, path and legend, drawn into a pixmap that is redrawn only
+// when the view or the solution changes
+namespace chaplygin::ui {
+
+namespace {
+
+// curvature colour: grey when straight, blue for left turns (kappa > 0), red for right turns
+QColor curvatureColor(double kappa) {
+    double w = std::tanh(std::abs(kappa));
+    QColor turn = kappa > 0 ? QColor(40, 90, 230) : QColor(220, 60, 40);
+    QColor flat(150, 150, 150);
+    return QColor::fromRgbF(flat.redF() + w * (turn.redF() - flat.redF()),
+                            flat.greenF() + w * (turn.greenF() - flat.greenF()),
+                            flat.blueF() + w * (turn.blueF() - flat.blueF()));
+}
+
+// halfway to white, opaque (overlapping segments do not darken)
+QColor pale(const QColor& c) {
+    return QColor::fromRgbF(0.5 + 0.5 * c.redF(), 0.5 + 0.5 * c.greenF(), 0.5 + 0.5 * c.blueF());
+}
+
+} // namespace
+
+double SceneCanvas::gridStep() const {
+    // grid lines every 1, 2 or 5 x 10^k metres, at least 40 px apart
+    double decade = std::pow(10.0, std::floor(std::log10(40.0 / m_scale)));
+    double step = decade;
+    for (double f : {1.0, 2.0, 5.0, 10.0})
+        if (f * decade * m_scale >= 40) {
+            step = f * decade;
+            break;
+        }
+    return step;
+}
+
+void SceneCanvas::paintGrid(QPainter& p, const QTransform& world, const QRectF& area) const {
+    double step = gridStep();
+    const QTransform toWorld = world.inverted();
+    QPointF a = toWorld.map(area.bottomLeft()), b = toWorld.map(area.topRight());
+    p.setPen(m_style.pen(QColor(232, 232, 232), 1));
+    // counted, not accumulated: far from the origin x + step may round back to x
+    const double kx0 = std::floor(a.x() / step), kx1 = std::ceil(b.x() / step);
+    const double ky0 = std::floor(a.y() / step), ky1 = std::ceil(b.y() / step);
+    const bool countable =
+        std::max({std::abs(kx0), std::abs(kx1), std::abs(ky0), std::abs(ky1)}) < 1e15;
+    if (countable && kx1 - kx0 < 2000 && ky1 - ky0 < 2000) {
+        for (double k = kx0; k <= kx1; ++k)
+            p.drawLine(world.map(QPointF{k * step, a.y()}), world.map(QPointF{k * step, b.y()}));
+        for (double k = ky0; k <= ky1; ++k)
+            p.drawLine(world.map(QPointF{a.x(), k * step}), world.map(QPointF{b.x(), k * step}));
+    }
+    p.setPen(m_style.pen(QColor(200, 200, 200), 1));
+    p.drawLine(world.map(QPointF{a.x(), 0}), world.map(QPointF{b.x(), 0}));
+    p.drawLine(world.map(QPointF{0, a.y()}), world.map(QPointF{0, b.y()}));
+}
+
+void SceneCanvas::paintScaleBar(QPainter& p) const {
+    double step = gridStep();
+    // scale bar, top right: one grid step
+    double len = step * m_scale;
+    QPointF right(width() - 14, topBandPx() - 2), left = right - QPointF(len, 0);
+    p.setPen(m_style.pen(QColor(60, 60, 60), 1.5));
+    p.drawLine(left, right);
+    p.drawLine(left, left - QPointF(0, 5));
+    p.drawLine(right, right - QPointF(0, 5));
+    QFont f = font();
+    f.setPointSizeF(8 * m_style.lineScale);
+    p.setFont(f);
+    QString label =
+        step >= 1 ? QStringLiteral("%1 m").arg(step) : QStringLiteral("%1 cm").arg(step * 100);
+    p.drawText(QRectF(left.x() - 40, left.y() - 8 - 14 * m_style.lineScale, len + 80,
+                      14 * m_style.lineScale),
+               Qt::AlignCenter, label);
+}
+
+void SceneCanvas::paintPath(QPainter& p, const QTransform& world) const {
+    const auto& solution = m_document->solution();
+    for (const PathPiece& piece : solution->path()->pieces()) {
+        if (piece.kind == PathPiece::Kind::Pivot) {
+            p.setPen(m_style.pen(QColor(120, 60, 160), 1.5));
+            p.setBrush(Qt::NoBrush);
+            p.drawEllipse(world.map(QPointF{piece.x, piece.y}), 5, 5);
+            continue;
+        }
+        const auto& nodes = piece.table->nodes();
+        for (std::size_t i = 1; i < nodes.size(); ++i) {
+            // a wide pale band, so that the trail on top of it stays visible
+            QPen pen =
+                m_style.pen(m_style.highContrast
+                                ? m_style.path()
+                                : pale(curvatureColor(0.5 * (nodes[i - 1].kappa + nodes[i].kappa))),
+                            6);
+            pen.setCapStyle(Qt::FlatCap);
+            p.setPen(pen);
+            p.drawLine(world.map(QPointF{nodes[i - 1].x, nodes[i - 1].y}),
+                       world.map(QPointF{nodes[i].x, nodes[i].y}));
+        }
+    }
+    // start (filled) and end (open) of the path
+    const Path& path = *solution->path();
+    p.setPen(m_style.pen(QColor(40, 40, 40), 1.5));
+    p.setBrush(QColor(40, 40, 40));
+    p.drawEllipse(world.map(QPointF{path.start().x, path.start().y}), 4, 4);
+    p.setBrush(Qt::white);
+    p.drawRect(
+        QRectF(world.map(QPointF{path.end().x, path.end().y}) - QPointF(4, 4), QSizeF(8, 8)));
+}
+
+void SceneCanvas::paintLegend(QPainter& p) const {
+    // the legend has its own strip under the drawing area: nothing moves under it
+    const double k = m_style.lineScale;
+    QFont f = font();
+    f.setPointSizeF(9 * k);
+    p.setFont(f);
+    if (m_legendVisible) {
+        QRectF band(0, height() - legendBandPx(), width(), legendBandPx());
+        p.fillRect(band, QColor(246, 246, 246));
+        p.setPen(m_style.pen(QColor(200, 200, 200), 1));
+        p.drawLine(band.topLeft(), band.topRight());
+        double y = band.top() + 8 * k, dy = 16 * k, x = 10, len = 24 * k;
+        p.setPen(m_style.pen(m_style.controlled().darker(150), 2));
+        p.drawLine(QPointF(x, y), QPointF(x + len, y));
+        p.setPen(m_style.pen(m_style.free(), 2, Qt::DashLine));
+        p.drawLine(QPointF(x, y + dy), QPointF(x + len, y + dy));
+        if (m_showVakonomic) {
+            p.setPen(m_style.pen(m_style.vakonomic(), 2, Qt::DashDotLine));
+            p.drawLine(QPointF(x, y + 3 * dy), QPointF(x + len, y + 3 * dy));
+        }
+        for (int i = 0; i < 24; ++i) {
+            QColor c =
+                m_style.highContrast ? m_style.path() : pale(curvatureColor((i - 11.5) / 4.0));
+            QPen pen = m_style.pen(c, 6);
+            pen.setCapStyle(Qt::FlatCap);
+            p.setPen(pen);
+            p.drawLine(QPointF(x + i * k, y + 2 * dy), QPointF(x + (i + 1) * k, y + 2 * dy));
+        }
+        p.setPen(Qt::black);
+        double tx = x + len + 6;
+        auto text = [&](double row, const QString& s) {
+            QRectF r(tx, y + row * dy - 0.5 * dy, width() - tx - 4, dy);
+            p.drawText(r, Qt::AlignLeft | Qt::AlignVCenter,
+                       p.fontMetrics().elidedText(s, Qt::ElideRight, int(r.width())));
+        };
+        text(0, tr("controlled body and its trail (tracks the path)"));
+        text(1, tr("free motion from the same start (ghost)"));
+        if (m_showVakonomic)
+            text(3, tr("genuine vakonomic body: \u03bb obeys its own equation (21)"));
+        text(2, m_style.highContrast
+                    ? tr("path (\u25cf start, \u25a1 end)")
+                    : tr("path (\u25cf start, \u25a1 end), coloured by its curvature \u03ba: red "
+                         "right turn, grey straight, blue left turn"));
+    }
+    if (m_drawMode)
+        p.drawText(QRectF(8, topBandPx(), width() - 16, 20 * k), Qt::AlignLeft,
+                   tr("Draw mode: drag to draw a new path; drag a square to move a point, "
+                      "right-click it to delete it"));
+}
+
+SceneCanvas::BackgroundKey SceneCanvas::backgroundKey() const {
+    return {m_document->solution().get(), size(),          m_scale, m_centre,       m_drawMode,
+            devicePixelRatioF(),          m_showVakonomic, m_style, m_legendVisible};
+}
+
+void SceneCanvas::paintBackground() {
+    // grid, path and legend change only with the view or the solution: cached between frames
+    BackgroundKey key = backgroundKey();
+    qreal dpr = key.dpr;
+    if (key == m_backgroundKey && !m_background.isNull())
+        return;
+    m_backgroundKey = key;
+    m_background = QPixmap(size() * dpr);
+    m_background.setDevicePixelRatio(dpr);
+    m_background.fill(Qt::white);
+    QPainter p(&m_background);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    paintGrid(p, worldTransform(), rect());
+    paintScaleBar(p);
+    if (m_document->solution()) {
+        paintPath(p, worldTransform());
+        paintLegend(p);
+    }
+}
+
+void SceneCanvas::paintStaticLayer(QPainter& p) {
+    const qreal dpr = devicePixelRatioF();
+    if (!m_follow || m_drawMode || dpr != std::round(dpr) || !m_document->solution()) {
+        paintBackground();
+        p.drawPixmap(0, 0, m_background);
+        return;
+    }
+    BackgroundKey key = backgroundKey();
+    key.centre = {};                                      // the world layer moves with the centre
+    QPointF shift = (m_centre - m_worldCentre) * m_scale; // [px], y up
+    const int margin = std::max(width(), height()) / 2;
+    if (!(key == m_worldKey) || m_worldLayer.isNull() || std::abs(shift.x()) > m_worldMargin ||
+        std::abs(shift.y()) > m_worldMargin) {
+        m_worldKey = key;
+        m_worldCentre = m_centre;
+        m_worldMargin = margin;
+        shift = {};
+        const QSize big = size() + QSize(2 * margin, 2 * margin);
+        m_worldLayer = QPixmap(big * dpr);
+        m_worldLayer.setDevicePixelRatio(dpr);
+        m_worldLayer.fill(Qt::white);
+        QPainter w(&m_worldLayer);
+        w.setRenderHint(QPainter::Antialiasing, true);
+        const QTransform world = worldTransform() * QTransform::fromTranslate(margin, margin);
+        paintGrid(w, world, QRectF(QPointF(0, 0), QSizeF(big)));
+        paintPath(w, world);
+    }
+    // the world moves left and down as the centre goes right and up
+    const QPointF source(m_worldMargin + qRound(shift.x()), m_worldMargin - qRound(shift.y()));
+    p.drawPixmap(QPointF(0, 0), m_worldLayer, QRectF(source * dpr, QSizeF(size()) * dpr));
+    p.setRenderHint(QPainter::Antialiasing, true);
+    paintScaleBar(p);
+    if (!m_legendVisible)
+        return;
+    // two rows above the legend's band hold the antialiased edge of its top line
+    const int top = height() - legendBandPx() - 2;
+    if (!(key == m_legendKey) || m_legendLayer.isNull()) {
+        m_legendKey = key;
+        m_legendLayer = QPixmap(QSize(width(), height() - top) * dpr);
+        m_legendLayer.setDevicePixelRatio(dpr);
+        m_legendLayer.fill(Qt::transparent);
+        QPainter l(&m_legendLayer);
+        l.setRenderHint(QPainter::Antialiasing, true);
+        l.translate(0, -top);
+        paintLegend(l);
+    }
+    p.drawPixmap(0, top, m_legendLayer);
+}
+
+} // namespace chaplygin::ui

@@ -1,0 +1,178 @@
+#include "canvas/scene_canvas.h"
+
+#include "canvas/pin_painter.h"
+#include "document/pin_set.h"
+#include "document/scene_document.h"
+
+#include <QPainter>
+
+#include <algorithm>
+#include <cmath>
+
+// the canvas's moving layer, painted every frame over the static one: trails, bodies, arrows
+// and the time read-out
+namespace chaplygin::ui {
+
+void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now) const {
+    const PlotSeries& s = m_document->series();
+    auto trail = [&](const QVector<double>& t, const QVector<double>& x, const QVector<double>& y,
+                     QPointF end, const QPen& pen) {
+        QPolygonF line;
+        for (int i = 0; i < t.size() && t[i] <= m_time; ++i)
+            line << toPixel({x[i], y[i]});
+        line << toPixel(end);
+        p.setPen(pen);
+        p.drawPolyline(line);
+    };
+    QColor free = m_style.free();
+    free.setAlpha(m_style.highContrast ? 255 : 150);
+    double w = m_style.trailWidth;
+    trail(s.freeT, s.freeX, s.freeY, {now.free.x, now.free.y},
+          m_style.pen(free, std::max(0.75 * w, 1.5), Qt::DashLine));
+    trail(s.t, s.x, s.y, {now.x, now.y}, m_style.pen(m_style.controlled().darker(150), w));
+    if (m_showVakonomic)
+        trail(s.vakT, s.vakX, s.vakY, {now.vak.x, now.vak.y},
+              m_style.pen(m_style.vakonomic(), std::max(0.75 * w, 1.5), Qt::DashDotLine));
+}
+
+QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& now,
+                                double from) const {
+    const QTransform world = worldTransform();
+    QRectF box;
+    auto add = [&](const QRectF& r) { box = box.isNull() ? r : box.united(r); };
+    const SystemSpec& spec = solution.scene().system;
+    BodyLook look{m_style.body, m_style.bodyOpacity, m_style.lineScale};
+    auto body = [&](double x, double y, double phi) {
+        add(BodySprites::pixelBounds(world, m_scale, spec, solution.system(), {x, y, phi}, look));
+    };
+    body(now.x, now.y, now.phi);
+    body(now.free.x, now.free.y, now.free.phi);
+    if (m_showVakonomic)
+        body(now.vak.x, now.vak.y, now.vak.phi);
+    // each trail from its last vertex at or before `from` to its end now
+    const double pad = 2 * std::max(m_style.trailWidth, 1.5) * m_style.lineScale + 3;
+    auto point = [&](double x, double y) {
+        QPointF c = world.map(QPointF(x, y));
+        add(QRectF(c.x() - pad, c.y() - pad, 2 * pad, 2 * pad));
+    };
+    const PlotSeries& s = m_document->series();
+    auto trail = [&](const QVector<double>& t, const QVector<double>& x, const QVector<double>& y,
+                     double endX, double endY) {
+        auto after = std::upper_bound(t.begin(), t.end(), std::min(from, m_time));
+        for (auto i = std::max<qsizetype>(after - t.begin() - 1, 0);
+             i < std::min({t.size(), x.size(), y.size()}) && t[i] <= m_time; ++i)
+            point(x[i], y[i]);
+        point(endX, endY);
+    };
+    trail(s.t, s.x, s.y, now.x, now.y);
+    trail(s.freeT, s.freeX, s.freeY, now.free.x, now.free.y);
+    if (m_showVakonomic)
+        trail(s.vakT, s.vakX, s.vakY, now.vak.x, now.vak.y);
+    add(m_vectors.bounds(m_document->solution(), m_document->scene().vectors, now, world));
+    return box.toAlignedRect().adjusted(-2, -2, 2, 2);
+}
+
+void SceneCanvas::updateMoving(double from) {
+    // only the moving parts when nothing else changed: the view, the static layer, the pins
+    // (their runs move too), a stroke or a vertex being drawn, a trail that shrinks
+    const auto& solution = m_document->solution();
+    if (!solution || m_follow || !(from <= m_time) || m_background.isNull() ||
+        m_movingPainted.isNull() || !(backgroundKey() == m_backgroundKey) || !m_stroke.empty() ||
+        m_dragVertex >= 0 || PinSet::of(m_document)->count() > 0) {
+        update();
+        return;
+    }
+    QRegion dirty(m_movingPainted);
+    dirty += movingBounds(*solution, solution->at(m_time), from);
+    dirty += QRect(0, 0, width(), topBandPx()); // the time read-out
+    update(dirty);
+}
+
+void SceneCanvas::paintEvent(QPaintEvent*) {
+    QPainter p(this);
+    paintStaticLayer(p);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    const auto& solution = m_document->solution();
+    if (solution) {
+        MotionSample now = solution->at(m_time);
+        p.save();
+        p.setClipRect(drawingArea());
+        paintTrails(p, now);
+        paintPinnedRuns(p, *PinSet::of(m_document), worldTransform(), m_time, QPointF(10, 42));
+        const SystemSpec& spec = solution->scene().system;
+        const QTransform world = worldTransform();
+        // the translucent ghost on top, so that both stay visible where they overlap
+        BodyLook look{m_style.body, m_style.bodyOpacity, m_style.lineScale};
+        auto body = [&](const BodyPose& pose, const QColor& color, bool ghost) {
+            m_bodies.paint(p, world, m_scale, spec, solution->system(), pose, color, ghost, look);
+        };
+        body({now.x, now.y, now.phi}, m_style.controlled(), false);
+        body({now.free.x, now.free.y, now.free.phi}, m_style.free(), true);
+        if (m_showVakonomic)
+            body({now.vak.x, now.vak.y, now.vak.phi}, m_style.vakonomic(), true);
+        p.restore();
+        m_vectors.paint(p, solution, m_document->scene().vectors, now, worldTransform(), m_scale,
+                        rect());
+        paintTimeReadout(p, solution->tEnd());
+        m_movingPainted = movingBounds(*solution, now, m_time);
+    } else {
+        m_movingPainted = {};
+    }
+    if (m_drawMode)
+        paintVertices(p);
+    if (m_stroke.size() > 1) {
+        QPolygonF line;
+        for (QPointF w : m_stroke)
+            line << toPixel(w);
+        p.setPen(m_style.pen(QColor(40, 40, 40), 2));
+        p.drawPolyline(line);
+    }
+}
+
+void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
+    QFont f = font();
+    p.setPen(Qt::black);
+    if (m_style.largeTime) {
+        // presentation: the time large enough for the back of the room
+        f.setPointSizeF(9 * m_style.lineScale * 2);
+        f.setBold(true);
+        p.setFont(f);
+        const QString now = tr("t = %1 s").arg(m_time, 0, 'f', 2);
+        QRectF band(10, 0, width() - 20, topBandPx());
+        p.drawText(band, Qt::AlignLeft | Qt::AlignVCenter, now);
+        double after =
+            10 + p.fontMetrics().horizontalAdvance(now) + p.fontMetrics().averageCharWidth();
+        f.setPointSizeF(9 * m_style.lineScale);
+        f.setBold(false);
+        p.setFont(f);
+        p.drawText(band.adjusted(after - 10, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter,
+                   tr("of %1 s").arg(tEnd, 0, 'f', 2));
+        return;
+    }
+    f.setPointSizeF(9 * m_style.lineScale);
+    p.setFont(f);
+    p.drawText(QRectF(8, 6, width() - 16, topBandPx()), Qt::AlignLeft,
+               tr("t = %1 s of %2 s    scale %3 px/m")
+                   .arg(m_time, 0, 'f', 2)
+                   .arg(tEnd, 0, 'f', 2)
+                   .arg(m_scale, 0, 'g', 3));
+}
+
+void SceneCanvas::paintVertices(QPainter& p) const {
+    const auto points = m_dragVertex >= 0 ? m_editPoints : drawnPoints();
+    if (m_dragVertex >= 0) {
+        QPolygonF line;
+        for (const auto& [x, y] : points)
+            line << toPixel({x, y});
+        p.setPen(m_style.pen(QColor(60, 60, 60), 1, Qt::DashLine));
+        p.drawPolyline(line);
+    }
+    p.setPen(m_style.pen(QColor(60, 60, 60), 1));
+    p.setBrush(QColor(255, 255, 255, 220));
+    for (const auto& [x, y] : points) {
+        QPointF c = toPixel({x, y});
+        p.drawRect(QRectF(c.x() - 3, c.y() - 3, 6, 6));
+    }
+}
+
+} // namespace chaplygin::ui
