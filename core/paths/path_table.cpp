@@ -133,10 +133,15 @@ struct Refiner {
             leaves.push_back(left);
             leaves.push_back(right);
         } else {
-            if (depth >= kMaxDepth || leaves.size() > kMaxPanels || splits > kMaxPanels)
+            if (depth >= kMaxDepth)
                 throw InputError(place(curve, mid),
                                  "the curvature varies too fast here to be tabulated "
                                  "(a singular point or a near-corner)");
+            if (leaves.size() > kMaxPanels || splits > kMaxPanels)
+                throw InputError(place(curve, mid),
+                                 "the path needs more than 50,000 panels to be tabulated (its "
+                                 "curvature varies too fast or too often); shorten the range or "
+                                 "smooth the expression");
             refine(left, depth + 1);
             refine(right, depth + 1);
         }

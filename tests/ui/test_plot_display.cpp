@@ -33,6 +33,7 @@ class TestPlotDisplay : public QObject, private test::WindowFixture {
     void legendsAreCompact();
     void legendEntriesWholeWhenNarrowOrPresenting();
     void methodsTitlesAboveAndLegendShort();
+    void valueTicksApartInPresentationAt1024();
 };
 
 void TestPlotDisplay::flatSeriesGetsSensibleRange() {
@@ -214,6 +215,40 @@ void TestPlotDisplay::legendEntriesWholeWhenNarrowOrPresenting() {
     check("presentation at 1280x800");
     m_window->presentation()->setActive(false);
     check("1280x800");
+}
+
+void TestPlotDisplay::valueTicksApartInPresentationAt1024() {
+    // a projector at 1024x768 in presentation mode (fonts x1.6): the plots are low, and their
+    // value tick labels must not run into each other
+    m_window->resize(1024, 768);
+    m_window->balanceDocks();
+    m_window->presentation()->setFullScreen(false);
+    m_window->presentation()->setActive(true);
+    QApplication::processEvents();
+    for (int i = 0; i < 4; ++i) {
+        QCustomPlot* plot = m_window->plotsPanel()->plot(i);
+        plot->replot();
+        QCPAxis* y = plot->axisRect()->axis(QCPAxis::atLeft);
+        // digits have no descenders: labels overlap when their ascents do
+        const int label = QFontMetrics(y->tickLabelFont()).ascent();
+        const QVector<double> ticks = y->tickVector();
+        QVERIFY2(ticks.size() >= 2,
+                 qPrintable(QStringLiteral("plot %1: %2 tick(s), rect %3 px, plot %4 px")
+                                .arg(i)
+                                .arg(ticks.size())
+                                .arg(plot->axisRect()->height())
+                                .arg(plot->height())));
+        for (int k = 1; k < ticks.size(); ++k) {
+            const double apart =
+                std::abs(y->coordToPixel(ticks[k]) - y->coordToPixel(ticks[k - 1]));
+            QVERIFY2(apart >= label, qPrintable(QStringLiteral("plot %1: ticks %2 px apart, labels "
+                                                               "%3 px high")
+                                                    .arg(i)
+                                                    .arg(apart)
+                                                    .arg(label)));
+        }
+    }
+    m_window->presentation()->setActive(false);
 }
 
 QTEST_MAIN(TestPlotDisplay)

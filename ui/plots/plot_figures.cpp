@@ -311,4 +311,22 @@ void fitLegendToWidth(QCustomPlot& plot) {
     }
 }
 
+void fitTicksToHeight(QCustomPlot& plot) {
+    // a low plot (presentation mode on a 1024x768 projector) gets fewer value ticks, so their
+    // labels never overlap: about one per 2.5 label heights of the axis rectangle
+    int legendHeight = 0;
+    for (int i = 0; i < plot.plotLayout()->elementCount(); ++i)
+        if (auto* l = qobject_cast<QCPLegend*>(plot.plotLayout()->elementAt(i)))
+            legendHeight = l->minimumOuterSizeHint().height();
+    for (QCPAxisRect* rect : plot.axisRects()) {
+        QCPAxis* y = rect->axis(QCPAxis::atLeft);
+        const int label = QFontMetrics(y->tickLabelFont()).height();
+        // the rectangle's height once laid out, else the plot's less the legend and the t axis
+        const int height =
+            rect->height() > 0 ? rect->height() : plot.height() - legendHeight - 3 * label;
+        y->ticker()->setTickStepStrategy(QCPAxisTicker::tssMeetTickCount);
+        y->ticker()->setTickCount(std::clamp(static_cast<int>(height / (2.5 * label)), 2, 5));
+    }
+}
+
 } // namespace chaplygin::ui

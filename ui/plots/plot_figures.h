@@ -34,6 +34,8 @@ void setPlotLook(QCustomPlot& plot, const CanvasStyle& look);
 /// (at most the legend's "maxColumns" property when set), so that no entry is cut off. Call
 /// after drawing and after every resize.
 void fitLegendToWidth(QCustomPlot& plot);
+/// Fewer value ticks on a low plot, so that their labels do not overlap.
+void fitTicksToHeight(QCustomPlot& plot);
 
 /// Adds the caption line above the plot(s).
 void addCaption(QCustomPlot& plot, const QString& caption);

@@ -74,6 +74,7 @@ bool PlotsPanel::eventFilter(QObject* watched, QEvent* event) {
         for (QCustomPlot* plot : m_plots)
             if (plot == watched) {
                 fitLegendToWidth(*plot);
+                fitTicksToHeight(*plot);
                 plot->replot(QCustomPlot::rpQueuedReplot);
             }
     return QWidget::eventFilter(watched, event);
@@ -84,6 +85,7 @@ void PlotsPanel::refresh() {
         drawPlot(*m_plots[i], kKinds[i], m_document->series());
         addPinnedSeries(*m_plots[i], kKinds[i], *PinSet::of(m_document));
         fitLegendToWidth(*m_plots[i]);
+        fitTicksToHeight(*m_plots[i]);
         m_plots[i]->replot(QCustomPlot::rpQueuedReplot);
     }
 }
