@@ -47,6 +47,10 @@
         <translation>%1 (canto: bκ → %2)</translation>
     </message>
     <message>
+        <source>at or after a cusp the sleigh backs up: Ψ leaves (0, π) continuously (docs/physics.md §3)</source>
+        <translation>na cúspide ou depois dela o trenó anda de ré: Ψ sai de (0, π) continuamente (docs/physics.md §3)</translation>
+    </message>
+    <message>
         <source>pivot about P, docs/physics.md §2.8</source>
         <translation>pivô em torno de P, docs/physics.md §2.8</translation>
     </message>
@@ -606,8 +610,8 @@ corpo vakonômico: %1</translation>
         <translation>Um canto no modo de energia constante: pivô no lugar</translation>
     </message>
     <message>
-        <source>A cusp: the tangent vanishes</source>
-        <translation>Uma cúspide: a tangente se anula</translation>
+        <source>A cusp: the sleigh backs up</source>
+        <translation>Uma cúspide: o trenó anda de ré</translation>
     </message>
     <message>
         <source>Very high curvature, b kappa = 1000</source>

@@ -10,7 +10,7 @@ namespace {
     QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu", "A corner in constant-speed mode: cannot turn"),
     QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu",
                       "A corner in constant-energy mode: pivot in place"),
-    QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu", "A cusp: the tangent vanishes"),
+    QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu", "A cusp: the sleigh backs up"),
     QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu", "Very high curvature, b kappa = 1000"),
     QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu", "A long horizon: t = 5000 s"),
     QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu",
