@@ -1,6 +1,7 @@
 #include "motion/time_law.h"
 
 #include "common/input_error.h"
+#include "paths/panel_geometry.h"
 
 #include <algorithm>
 #include <atomic>
@@ -75,9 +76,7 @@ TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
         }
         const PathTable& table = *piece.table;
         if (!energy && table.cuspEnds().end) {
-            const Curve& c = table.curve();
-            throw InputError("path at " + c.parameterName() + " = " +
-                                 formatNumber(c.parameterValue(table.cuspEnds().end->u)),
+            throw InputError(pathPlace(table.curve(), table.cuspEnds().end->u),
                              "constant-speed mode cannot pass this cusp (sdot would have to jump "
                              "from +v_s to -v_s); use the constant-energy mode");
         }

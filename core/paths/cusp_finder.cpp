@@ -1,6 +1,7 @@
 #include "paths/cusp_finder.h"
 
 #include "common/input_error.h"
+#include "paths/panel_geometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -36,10 +37,6 @@ double refineMinimum(const Curve& c, double lo, double hi, double u) {
     return u;
 }
 
-std::string place(const Curve& c, double u) {
-    return "path at " + c.parameterName() + " = " + formatNumber(c.parameterValue(u));
-}
-
 } // namespace
 
 std::vector<Cusp> findCusps(const Curve& c) {
@@ -69,11 +66,12 @@ std::vector<Cusp> findCusps(const Curve& c) {
             continue; // the same point seen from two samples
         const double accel = std::hypot(p.ddx, p.ddy), jerk = std::hypot(p.dddx, p.dddy);
         if (!(accel > kZeroAccel * scale / width))
-            throw InputError(place(c, u), "the path stops here (x' = y' = 0 and x'' = y'' = 0): "
-                                          "not a cusp the body can be driven through");
+            throw InputError(pathPlace(c, u),
+                             "the path stops here (x' = y' = 0 and x'' = y'' = 0): "
+                             "not a cusp the body can be driven through");
         const double cross = p.ddx * p.dddy - p.ddy * p.dddx;
         if (!(std::fabs(cross) > kZeroCross * accel * std::max(jerk, accel / width)))
-            throw InputError(place(c, u),
+            throw InputError(pathPlace(c, u),
                              "the path stops and retraces itself here (x' = y' = 0 without a "
                              "turn): the body would have to reverse at once");
         cusps.push_back({u, accel, cross / (2 * accel * accel)});

@@ -1,6 +1,8 @@
 #include "paths/path_table.h"
 
 #include "common/input_error.h"
+#include "paths/panel_certifier.h"
+#include "paths/panel_geometry.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,40 +17,6 @@ constexpr std::size_t kMaxPanels = 50000; // y = sin(20 x) on [0, 100] needs 42,
 constexpr double kPanelTolerance = 1e-11; // parent-versus-halves difference, relative to the whole
 constexpr double kRounding = 1e-15;       // the same difference at rounding: keep the parent
 constexpr double kMaxTurnPerPanel = 1.0;  // rad; keeps the unwrapping of phi unambiguous
-// the time law sqrt(1 + b^2 kappa^2) sharpens near inflections as b grows; the table resolves
-// it for gyration radii up to this many times the path's size
-constexpr double kStiffScale = 100.0;
-
-std::string place(const Curve& c, double u) {
-    return "path at " + c.parameterName() + " = " + formatNumber(c.parameterValue(u));
-}
-
-bool finite(const CurvePoint& p) {
-    return std::isfinite(p.dx) && std::isfinite(p.dy) && std::isfinite(p.ddx) &&
-           std::isfinite(p.ddy) && std::isfinite(p.dddx) && std::isfinite(p.dddy);
-}
-
-CurveGeometry checkedGeometry(const Curve& c, double u, CurvePoint* out = nullptr) {
-    CurvePoint p = c.eval(u);
-    if (!std::isfinite(p.x) || !std::isfinite(p.y))
-        throw InputError(place(c, u),
-                         "the path is not defined here (division by zero, log of 0 or of a "
-                         "negative number, sqrt of a negative number, or overflow)");
-    if (!finite(p))
-        throw InputError(place(c, u),
-                         "the path has no finite tangent or curvature here (a vertical "
-                         "tangent, a kink, or a singular point)");
-    if (p.dx == 0 && p.dy == 0)
-        throw InputError(place(c, u),
-                         "the path stops here (x' = y' = 0): a cusp or a stationary point "
-                         "has no direction to follow");
-    CurveGeometry g = geometryOf(p);
-    if (!std::isfinite(g.kappa) || !std::isfinite(g.dkappa))
-        throw InputError(place(c, u), "the curvature overflows here");
-    if (out)
-        *out = p;
-    return g;
-}
 
 // The limits at a cusp (docs/physics.md §3): ds/du = 0, kappa = +-inf with the sign of the
 // heading's turn, and the tangent line's heading: r' ~ (u - u*) r'', so the stretch that starts at
@@ -64,34 +32,6 @@ PathNode cuspNode(const Curve& c, const Cusp& cusp, bool atStart) {
     n.dkappa = 0;
     n.phi = atStart ? std::atan2(p.ddy, p.ddx) : std::atan2(-p.ddy, -p.ddx);
     return n;
-}
-
-struct PanelData {
-    double a = 0, b = 0;
-    double length = 0, turn = 0, absTurn = 0; // \int ds, \int kappa ds, \int |kappa| ds
-    double weighted = 0, stiff = 0; // time-law proxies for b ~ the path's size and b >> it
-    PathTable::GaussPanel gauss;
-    std::array<CurvePoint, gauss::kPoints> points; // exact, for certifying the interpolants
-};
-
-PanelData computePanel(const Curve& c, double a, double b, double lengthScale) {
-    PanelData d;
-    d.a = a;
-    d.b = b;
-    gauss::Mapped m = gauss::mapTo(a, b);
-    for (int i = 0; i < gauss::kPoints; ++i) {
-        CurveGeometry g = checkedGeometry(c, m.x[i], &d.points[i]);
-        double ds = m.w[i] * g.speed;
-        d.gauss.weight[i] = ds;
-        d.gauss.kappa[i] = g.kappa;
-        d.length += ds;
-        d.turn += ds * g.kappa;
-        d.absTurn += ds * std::fabs(g.kappa);
-        // proxy for the time-law integrand sqrt(1 + b^2 kappa^2) ds with b of the path's size
-        d.weighted += ds * std::hypot(1.0, lengthScale * g.kappa);
-        d.stiff += ds * std::hypot(1.0, kStiffScale * lengthScale * g.kappa);
-    }
-    return d;
 }
 
 struct Refiner {
@@ -134,180 +74,17 @@ struct Refiner {
             leaves.push_back(right);
         } else {
             if (depth >= kMaxDepth)
-                throw InputError(place(curve, mid),
+                throw InputError(pathPlace(curve, mid),
                                  "the curvature varies too fast here to be tabulated "
                                  "(a singular point or a near-corner)");
             if (leaves.size() > kMaxPanels || splits > kMaxPanels)
-                throw InputError(place(curve, mid),
+                throw InputError(pathPlace(curve, mid),
                                  "the path needs more than 50,000 panels to be tabulated (its "
                                  "curvature varies too fast or too often); shorten the range or "
                                  "smooth the expression");
             refine(left, depth + 1);
             refine(right, depth + 1);
         }
-    }
-};
-
-constexpr int kMaxCertifyDepth = 6; // further halvings of a panel whose interpolants fail
-constexpr double kEps = 2.220446049250313e-16;
-constexpr double kRateTolerance = 1e-13; // as TimeLaw's bound on t over a panel
-
-double maxAbs(const std::array<double, cheb::kPoints>& v) {
-    double m = 0;
-    for (double x : v)
-        m = std::max(m, std::fabs(x));
-    return m;
-}
-
-// The interpolants of one panel and their error bounds: the larger of twice the coefficient
-// tail and the largest deviation from the exact values at the panel's 8 Gauss nodes (points
-// the interpolant was not built from). Returns the largest ratio of a bound to its tolerance
-// (certified when <= 1); `bound` receives this panel's bounds.
-double interpolate(const Curve& c, bool piecewise, const PanelData& d, double lengthScale,
-                   PathTable::ChebPanel& out, PathTable::Bounds& bound) {
-    using Q = PathTable::Quantity;
-    constexpr int N = cheb::kDegree;
-    const auto& xs = cheb::points();
-    const double half = 0.5 * (d.b - d.a), mid = 0.5 * (d.a + d.b);
-    std::array<std::array<double, cheb::kPoints>, PathTable::kQuantities> v{};
-    // a curve evaluates a breakpoint with the piece that starts there; the panel's end takes
-    // the piece it ends (one ulp inside), so a jump in a derivative stays outside the panel
-    const double end = piecewise ? std::nextafter(d.b, d.a) : d.b;
-    double prevPhi = 0, kappaNoise = 0, dkappaNoise = 0;
-    for (int j = N; j >= 0; --j) { // from the panel's start (xi = -1) so phi unwraps in order
-        double u = j == N ? d.a : (j == 0 ? end : mid + half * xs[j]);
-        CurvePoint p;
-        CurveGeometry g = checkedGeometry(c, u, &p);
-        double phi = g.heading;
-        if (j != N)
-            phi += 2 * std::numbers::pi * std::round((prevPhi - phi) / (2 * std::numbers::pi));
-        prevPhi = phi;
-        // rounding in kappa and dkappa/ds: the size of the terms that cancel in them
-        const double dd = p.dx * p.dx + p.dy * p.dy, d15 = dd * std::sqrt(dd);
-        const double nTerms = std::fabs(p.dx * p.ddy) + std::fabs(p.dy * p.ddx);
-        kappaNoise = std::max(kappaNoise, 64 * kEps * nTerms / d15);
-        dkappaNoise =
-            std::max(dkappaNoise,
-                     64 * kEps *
-                         (std::fabs(p.dx * p.dddy) + std::fabs(p.dy * p.dddx) +
-                          3 * nTerms * (std::fabs(p.dx * p.ddx) + std::fabs(p.dy * p.ddy)) / dd) /
-                         (d15 * std::sqrt(dd)));
-        v[Q::kX][j] = p.x;
-        v[Q::kY][j] = p.y;
-        v[Q::kPhi][j] = phi;
-        v[Q::kKappa][j] = g.kappa;
-        v[Q::kDkappa][j] = g.dkappa;
-        v[Q::kSpeed][j] = g.speed;
-        out.dsdxi[j] = half * g.speed;
-        out.kappa[j] = g.kappa;
-    }
-    std::array<std::array<double, cheb::kPoints + 1>, PathTable::kQuantities> coef{};
-    for (int q : {Q::kX, Q::kY, Q::kPhi, Q::kKappa, Q::kDkappa, Q::kSpeed})
-        cheb::coefficients(v[q].data(), coef[q].data());
-    std::array<double, cheb::kPoints> dsdxiCoef;
-    cheb::coefficients(out.dsdxi.data(), dsdxiCoef.data());
-    cheb::integrate(dsdxiCoef.data(), cheb::kPoints, coef[Q::kS].data());
-    for (int k = 0; k <= cheb::kPoints; ++k)
-        for (int q = 0; q < PathTable::kQuantities; ++q)
-            out.c[k][q] = coef[q][k];
-
-    auto tail = [&](int q) { return 2 * cheb::tailEstimate(coef[q].data(), cheb::kPoints); };
-    double ePos = std::max(tail(Q::kX), tail(Q::kY)), ePhi = tail(Q::kPhi),
-           eKappa = tail(Q::kKappa), eDkappa = tail(Q::kDkappa);
-    double eS = 2 * half * cheb::tailEstimate(dsdxiCoef.data(), cheb::kPoints);
-    for (int i = 0; i < gauss::kPoints; ++i) {
-        double f[PathTable::kQuantities];
-        cheb::evaluateMany(out.c, gauss::kNodes[i], f);
-        const CurvePoint& p = d.points[i];
-        CurveGeometry g = geometryOf(p);
-        double dphi = g.heading - f[Q::kPhi];
-        dphi -= 2 * std::numbers::pi * std::round(dphi / (2 * std::numbers::pi));
-        ePos = std::max(ePos, std::hypot(f[Q::kX] - p.x, f[Q::kY] - p.y));
-        ePhi = std::max(ePhi, std::fabs(dphi));
-        eKappa = std::max(eKappa, std::fabs(f[Q::kKappa] - g.kappa));
-        eDkappa = std::max(eDkappa, std::fabs(f[Q::kDkappa] - g.dkappa));
-    }
-    double f[PathTable::kQuantities];
-    cheb::evaluateMany(out.c, 1.0, f);
-    eS = std::max(eS, std::fabs(f[Q::kS] - d.length)); // against the Gauss rule's panel length
-
-    const double L = lengthScale;
-    const double kappaMax = maxAbs(v[Q::kKappa]);
-    const double tolPos =
-        std::max({2e-15 * L, 8 * kEps * maxAbs(v[Q::kX]), 8 * kEps * maxAbs(v[Q::kY])});
-    const double tolPhi = std::max(1e-14, 8 * kEps * maxAbs(v[Q::kPhi]));
-    const double tolKappa = std::max({1e-14 / L, 1e-13 * kappaMax, kappaNoise});
-    const double tolDkappa = std::max(
-        {1e-14 / (L * L), 1e-13 * kappaMax / L, 1e-12 * maxAbs(v[Q::kDkappa]), dkappaNoise});
-    // the time law's integrand for b of the path's size, |r'| sqrt(1 + (L kappa)^2), is
-    // resolved as well (larger b may leave panels to exact evaluation, TimeLaw)
-    std::array<double, cheb::kPoints> rate, rateCoef;
-    std::array<double, cheb::kPoints + 1> rateIntegral;
-    for (int j = 0; j < cheb::kPoints; ++j)
-        rate[j] = out.dsdxi[j] * std::hypot(1.0, L * out.kappa[j]);
-    cheb::coefficients(rate.data(), rateCoef.data());
-    cheb::integrate(rateCoef.data(), cheb::kPoints, rateIntegral.data());
-    double rateSum = 0; // the integral over the panel
-    for (double a : rateIntegral)
-        rateSum += a;
-    const double tolS = std::max(2e-15 * L, 1e-14 * d.length);
-    const double score = std::max(
-        {ePos / tolPos, ePhi / tolPhi, eKappa / tolKappa, eDkappa / tolDkappa, eS / tolS,
-         4 * cheb::tailEstimate(rateCoef.data(), cheb::kPoints) / (kRateTolerance * rateSum)});
-    out.certified = score <= 1;
-    out.bound = score;
-    bound.position = ePos;
-    bound.heading = ePhi;
-    bound.kappa = eKappa;
-    bound.dkappa = eDkappa;
-    bound.arcLength = eS;
-    return score;
-}
-
-struct Certifier {
-    const Curve& curve;
-    bool piecewise; // the curve has breakpoints
-    double lengthScale;
-    double cuspStart, cuspEnd; // u of a cusp at either end, or NaN
-    std::vector<PanelData> leaves;
-    std::vector<PathTable::ChebPanel> cheb;
-    PathTable::Bounds bounds;
-
-    // Splits a panel whose interpolants miss their tolerance. A resolved function's error falls
-    // by orders of magnitude per halving; when a halving gains less than a factor 4 the error is
-    // the rounding noise of the exact evaluation itself (a jittery interpolating spline), which
-    // no panel can beat: the panel is kept with that measured bound (noiseLimited).
-    void certify(const PanelData& d, int depth, double parentScore) {
-        PathTable::ChebPanel panel;
-        if (d.a == cuspStart || d.b == cuspEnd) {
-            // kappa and dkappa/ds grow without bound towards a cusp: no interpolant
-            bounds.exactPanels += 1;
-            leaves.push_back(d);
-            cheb.push_back(panel);
-            return;
-        }
-        PathTable::Bounds b;
-        double score = interpolate(curve, piecewise, d, lengthScale, panel, b);
-        bool noise = score > 1 && depth > 0 && score > 0.25 * parentScore;
-        if (score <= 1 || noise || depth >= kMaxCertifyDepth) {
-            if (score <= 1 || noise) {
-                panel.certified = true;
-                panel.noiseLimited = noise;
-                bounds.position = std::max(bounds.position, b.position);
-                bounds.heading = std::max(bounds.heading, b.heading);
-                bounds.kappa = std::max(bounds.kappa, b.kappa);
-                bounds.dkappa = std::max(bounds.dkappa, b.dkappa);
-                bounds.arcLength = std::max(bounds.arcLength, b.arcLength);
-                bounds.noisePanels += noise ? 1 : 0;
-            }
-            bounds.exactPanels += panel.certified ? 0 : 1;
-            leaves.push_back(d);
-            cheb.push_back(panel);
-            return;
-        }
-        double mid = 0.5 * (d.a + d.b);
-        certify(computePanel(curve, d.a, mid, lengthScale), depth + 1, score);
-        certify(computePanel(curve, mid, d.b, lengthScale), depth + 1, score);
     }
 };
 

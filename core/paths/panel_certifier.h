@@ -1,0 +1,26 @@
+#pragma once
+#include "paths/panel_geometry.h"
+
+#include <vector>
+
+namespace chaplygin {
+
+/// The per-panel Chebyshev interpolants of a path table (PathTable::ChebPanel), certified
+/// against the exact curve; panels that miss their tolerance are halved (docs/numerics.md §7).
+struct Certifier {
+    const Curve& curve;
+    bool piecewise; // the curve has breakpoints
+    double lengthScale;
+    double cuspStart, cuspEnd; // u of a cusp at either end, or NaN
+    std::vector<PanelData> leaves;
+    std::vector<PathTable::ChebPanel> cheb;
+    PathTable::Bounds bounds;
+
+    // Splits a panel whose interpolants miss their tolerance. A resolved function's error falls
+    // by orders of magnitude per halving; when a halving gains less than a factor 4 the error is
+    // the rounding noise of the exact evaluation itself (a jittery interpolating spline), which
+    // no panel can beat: the panel is kept with that measured bound (noiseLimited).
+    void certify(const PanelData& d, int depth, double parentScore);
+};
+
+} // namespace chaplygin

@@ -1,0 +1,30 @@
+#pragma once
+#include "paths/path_table.h"
+
+#include <array>
+#include <string>
+
+namespace chaplygin {
+
+// The exact geometry of one panel of a path table, shared by its refinement (path_table.cpp) and
+// the certification of its interpolants (panel_certifier.cpp).
+
+/// "path at u = ..." in the curve's own parameter, for messages.
+std::string pathPlace(const Curve& c, double u);
+
+/// The geometry at u; throws InputError naming the place where the curve is undefined, has no
+/// finite tangent or curvature, or stops (r' = 0).
+CurveGeometry checkedGeometry(const Curve& c, double u, CurvePoint* out = nullptr);
+
+/// A panel [a, b] with its 8-point Gauss sums.
+struct PanelData {
+    double a = 0, b = 0;
+    double length = 0, turn = 0, absTurn = 0; // \int ds, \int kappa ds, \int |kappa| ds
+    double weighted = 0, stiff = 0; // time-law proxies for b ~ the path's size and b >> it
+    PathTable::GaussPanel gauss;
+    std::array<CurvePoint, gauss::kPoints> points; // exact, for certifying the interpolants
+};
+
+PanelData computePanel(const Curve& c, double a, double b, double lengthScale);
+
+} // namespace chaplygin
