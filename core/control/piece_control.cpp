@@ -9,9 +9,12 @@ ControlState controlOnPiece(const ControlParams& p, const PathPiece& piece, cons
     const double heading = node.phi + piece.phiOffset;
     if (phi)
         *phi = heading;
-    if (!std::isfinite(node.kappa)) {
-        const PathTable::CuspEnds& ends = piece.table->cuspEnds();
-        const Cusp& cusp = (ends.start && node.u == ends.start->u) ? *ends.start : *ends.end;
+    const PathTable::CuspEnds& ends = piece.table->cuspEnds();
+    if (!std::isfinite(node.kappa) && (ends.start || ends.end)) {
+        // at a cusp end, or so close to it that |r'|^3 underflows: the limit at the nearer one
+        const bool start = ends.start && (!ends.end || std::fabs(node.u - ends.start->u) <=
+                                                           std::fabs(node.u - ends.end->u));
+        const Cusp& cusp = start ? *ends.start : *ends.end;
         // Psi there: atan2(direction * 0, dphi/du) + the piece's 2 pi n
         const double psi = std::atan2(piece.direction * 0.0, cusp.turnRate) + piece.psiOffset;
         return controlAtCusp(p, heading, psi, cusp.turnRate, cusp.accel);

@@ -4,6 +4,7 @@
 // Newton-Euler balance, and prints the tables below. A second scene turns right and is rotated, so
 // Psi leaves (0, pi) above pi; the astroid has two cusps and a duration by independent quadrature.
 #include "common/input_error.h"
+#include "control/piece_control.h"
 #include "scene/solution.h"
 
 #include <gsl/gsl_integration.h>
@@ -217,6 +218,26 @@ TEST(Cusp, TableNodesIncludeTheCuspWithItsLimits) {
         }
     }
     EXPECT_TRUE(seen);
+}
+
+// u = 1e-200 from the cusp: |r'|^3 underflows and the exact curvature is not a number; the state
+// is the cusp's limit, as the reference's row at the cusp
+TEST(Cusp, StateBesideTheCuspWhereTheCurvatureUnderflows) {
+    const Reference& ref = references()[0];
+    Solution s = Solution::compute(sleighOn(ref.x, ref.y, ref.u0, ref.u1, ref.vT));
+    for (const PathPiece& piece : s.path()->pieces())
+        for (double u : {-1e-200, 1e-200}) {
+            if (u < piece.table->nodes().front().u || u > piece.table->nodes().back().u)
+                continue;
+            PathNode n = piece.table->at(u);
+            ControlState c = controlOnPiece(controlParamsOf(s.scene()), piece, n);
+            const Row& want = ref.rows[3];
+            EXPECT_NEAR(c.psi, want[5], 1e-12) << u;
+            EXPECT_NEAR(c.lambda, want[7], 1e-12) << u;
+            EXPECT_NEAR(c.sdot, want[9], 1e-12) << u;
+            EXPECT_NEAR(c.phidot, want[10], 1e-12) << u;
+            EXPECT_NEAR(c.controlCouple, want[14], 1e-12) << u;
+        }
 }
 
 TEST(Cusp, ConstantSpeedRefusesTheCuspNamingIt) {
