@@ -15,8 +15,7 @@ ControlState controlOnPiece(const ControlParams& p, const PathPiece& piece, cons
         const bool start = ends.start && (!ends.end || std::fabs(node.u - ends.start->u) <=
                                                            std::fabs(node.u - ends.end->u));
         const Cusp& cusp = start ? *ends.start : *ends.end;
-        // Psi there: atan2(direction * 0, dphi/du) + the piece's 2 pi n
-        const double psi = std::atan2(piece.direction * 0.0, cusp.turnRate) + piece.psiOffset;
+        const double psi = psiAtCusp(cusp, piece.direction) + piece.psiOffset;
         return controlAtCusp(p, heading, psi, cusp.turnRate, cusp.accel);
     }
     // the body's curvature dphi/ds with s along its heading: the table's, reversed when backing

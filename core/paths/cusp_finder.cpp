@@ -39,6 +39,10 @@ double refineMinimum(const Curve& c, double lo, double hi, double u) {
 
 } // namespace
 
+double psiAtCusp(const Cusp& cusp, int direction) {
+    return std::atan2(direction * 0.0, cusp.turnRate);
+}
+
 std::vector<Cusp> findCusps(const Curve& c) {
     const double u0 = c.u0(), u1 = c.u1(), width = u1 - u0;
     std::vector<double> us(kSamples + 1), q(kSamples + 1);

@@ -72,12 +72,6 @@ std::vector<PathPiece> singleCurve(std::shared_ptr<const Curve> curve) {
     return {piece};
 }
 
-// Psi = atan2(direction, b kappa) at a cusp end, before the 2 pi n of the piece: kappa -> +-inf
-// and sdot -> 0 with the sign of the direction
-double rawPsiAtCusp(int direction, double turnRate) {
-    return std::atan2(direction * 0.0, turnRate);
-}
-
 // A curve with cusps inside: one piece per stretch between them, alternating forward and
 // backing up; the heading is continuous (the tangent line), and so is Psi (docs/physics.md §3)
 std::vector<PathPiece> throughCusps(const std::shared_ptr<const Curve>& curve) {
@@ -108,12 +102,12 @@ std::vector<PathPiece> throughCusps(const std::shared_ptr<const Curve>& curve) {
             piece.phiOffset =
                 (piece.direction < 0 ? std::numbers::pi : 0.0) +
                 2 * std::numbers::pi * std::round((target - heading) / (2 * std::numbers::pi));
-            const double start = rawPsiAtCusp(piece.direction, cusps[k - 1].turnRate);
+            const double start = psiAtCusp(cusps[k - 1], piece.direction);
             piece.psiOffset =
                 2 * std::numbers::pi * std::round((psiEnd - start) / (2 * std::numbers::pi));
         }
         if (k < cusps.size())
-            psiEnd = rawPsiAtCusp(piece.direction, cusps[k].turnRate) + piece.psiOffset;
+            psiEnd = psiAtCusp(cusps[k], piece.direction) + piece.psiOffset;
         pieces.push_back(piece);
         ua = ub;
     }
