@@ -69,7 +69,13 @@ QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& no
     if (m_showVakonomic)
         trail(s.vakT, s.vakX, s.vakY, now.vak.x, now.vak.y);
     add(m_vectors.bounds(m_document->solution(), m_document->scene().vectors, now, world));
-    return box.toAlignedRect().adjusted(-2, -2, 2, 2);
+    // only the widget is painted: a body far outside the view (a wild zoom) must not overflow int
+    if (!std::isfinite(box.x()) || !std::isfinite(box.y()) || !std::isfinite(box.width()) ||
+        !std::isfinite(box.height()))
+        return rect();
+    return box.intersected(QRectF(rect()).adjusted(-4, -4, 4, 4))
+        .toAlignedRect()
+        .adjusted(-2, -2, 2, 2);
 }
 
 void SceneCanvas::updateMoving(double from) {
