@@ -137,7 +137,7 @@ void Certifier::certify(const PanelData& d, int depth, double parentScore) {
     PathTable::Bounds b;
     double score = interpolate(curve, piecewise, d, lengthScale, panel, b);
     bool noise = score > 1 && depth > 0 && score > 0.25 * parentScore;
-    if (score <= 1 || noise || depth >= kMaxCertifyDepth) {
+    if (score <= 1 || noise || depth >= kMaxCertifyDepth || halvingsLeft == 0) {
         if (score <= 1 || noise) {
             panel.certified = true;
             panel.noiseLimited = noise;
@@ -153,6 +153,7 @@ void Certifier::certify(const PanelData& d, int depth, double parentScore) {
         cheb.push_back(panel);
         return;
     }
+    --halvingsLeft;
     double mid = 0.5 * (d.a + d.b);
     certify(computePanel(curve, d.a, mid, lengthScale), depth + 1, score);
     certify(computePanel(curve, mid, d.b, lengthScale), depth + 1, score);

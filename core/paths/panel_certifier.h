@@ -1,6 +1,7 @@
 #pragma once
 #include "paths/panel_geometry.h"
 
+#include <cstddef>
 #include <vector>
 
 namespace chaplygin {
@@ -12,6 +13,7 @@ struct Certifier {
     bool piecewise; // the curve has breakpoints
     double lengthScale;
     double cuspStart, cuspEnd; // u of a cusp at either end, or NaN
+    std::size_t halvingsLeft;  // of the table's budget; when none are left, panels stay exact
     std::vector<PanelData> leaves;
     std::vector<PathTable::ChebPanel> cheb;
     PathTable::Bounds bounds;
@@ -19,7 +21,8 @@ struct Certifier {
     // Splits a panel whose interpolants miss their tolerance. A resolved function's error falls
     // by orders of magnitude per halving; when a halving gains less than a factor 4 the error is
     // the rounding noise of the exact evaluation itself (a jittery interpolating spline), which
-    // no panel can beat: the panel is kept with that measured bound (noiseLimited).
+    // no panel can beat: the panel is kept with that measured bound (noiseLimited). A panel that
+    // needs halving when the budget is spent is left to exact evaluation.
     void certify(const PanelData& d, int depth, double parentScore);
 };
 

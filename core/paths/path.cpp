@@ -66,18 +66,20 @@ std::vector<PathPiece> pivotPolyline(const std::vector<std::pair<double, double>
     return pieces;
 }
 
-std::vector<PathPiece> singleCurve(std::shared_ptr<const Curve> curve) {
+std::vector<PathPiece> singleCurve(std::shared_ptr<const Curve> curve, std::size_t halvingBudget) {
     PathPiece piece;
-    piece.table = std::make_shared<const PathTable>(std::move(curve));
+    piece.table =
+        std::make_shared<const PathTable>(std::move(curve), PathTable::CuspEnds{}, halvingBudget);
     return {piece};
 }
 
 // A curve with cusps inside: one piece per stretch between them, alternating forward and
 // backing up; the heading is continuous (the tangent line), and so is Psi (docs/physics.md §3)
-std::vector<PathPiece> throughCusps(const std::shared_ptr<const Curve>& curve) {
+std::vector<PathPiece> throughCusps(const std::shared_ptr<const Curve>& curve,
+                                    std::size_t halvingBudget) {
     std::vector<Cusp> cusps = findCusps(*curve);
     if (cusps.empty())
-        return singleCurve(curve);
+        return singleCurve(curve, halvingBudget);
     std::vector<PathPiece> pieces;
     double ua = curve->u0(), psiEnd = 0;
     for (std::size_t k = 0; k <= cusps.size(); ++k) {
@@ -89,7 +91,7 @@ std::vector<PathPiece> throughCusps(const std::shared_ptr<const Curve>& curve) {
             ends.end = cusps[k];
         PathPiece piece;
         piece.table = std::make_shared<const PathTable>(std::make_shared<SubCurve>(curve, ua, ub),
-                                                        std::move(ends));
+                                                        std::move(ends), halvingBudget);
         piece.direction = k % 2 == 0 ? 1 : -1;
         const double heading = piece.table->nodes().front().phi;
         if (k == 0) {
@@ -148,18 +150,18 @@ int Path::pivotCount() const {
     return n;
 }
 
-std::shared_ptr<const Path> buildPath(const PathSource& source) {
+std::shared_ptr<const Path> buildPath(const PathSource& source, std::size_t halvingBudget) {
     switch (source.kind) {
     case PathKind::Graph: {
         Expression y = Expression::compile(source.y, "x", "y(x)");
         return std::make_shared<const Path>(
-            singleCurve(std::make_shared<GraphCurve>(y, source.from, source.to)));
+            singleCurve(std::make_shared<GraphCurve>(y, source.from, source.to), halvingBudget));
     }
     case PathKind::Parametric: {
         Expression x = Expression::compile(source.xOfU, "u", "x(u)");
         Expression y = Expression::compile(source.yOfU, "u", "y(u)");
-        return std::make_shared<const Path>(
-            throughCusps(std::make_shared<ParametricCurve>(x, y, source.from, source.to)));
+        return std::make_shared<const Path>(throughCusps(
+            std::make_shared<ParametricCurve>(x, y, source.from, source.to), halvingBudget));
     }
     case PathKind::Polyline: {
         auto pts = distinctPoints(source);
@@ -174,7 +176,7 @@ std::shared_ptr<const Path> buildPath(const PathSource& source) {
             ys.push_back(y);
         }
         return std::make_shared<const Path>(
-            singleCurve(std::make_shared<SplineCurve>(xs, ys, source.smoothing)));
+            singleCurve(std::make_shared<SplineCurve>(xs, ys, source.smoothing), halvingBudget));
     }
     }
     throw InputError("path", "unknown path kind");

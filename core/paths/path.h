@@ -40,8 +40,10 @@ class Path {
     double m_length = 0;
 };
 
-/// Builds and tabulates the path. Throws InputError naming the expression position, the
-/// x or u where the path breaks, or the point of a polyline.
-std::shared_ptr<const Path> buildPath(const PathSource& source);
+/// Builds and tabulates the path within a budget of panel halvings per piece (PathTable). Throws
+/// InputError naming the expression position, the x or u where the path breaks, or the point of a
+/// polyline.
+std::shared_ptr<const Path> buildPath(const PathSource& source,
+                                      std::size_t halvingBudget = PathTable::kHalvingBudget);
 
 } // namespace chaplygin

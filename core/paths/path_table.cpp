@@ -7,13 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 namespace chaplygin {
 namespace {
 
 constexpr int kInitialPanels = 32;
 constexpr int kMaxDepth = 40;
-constexpr std::size_t kMaxPanels = 50000; // y = sin(20 x) on [0, 100] needs 42,000
 constexpr double kPanelTolerance = 1e-11; // parent-versus-halves difference, relative to the whole
 constexpr double kRounding = 1e-15;       // the same difference at rounding: keep the parent
 constexpr double kMaxTurnPerPanel = 1.0;  // rad; keeps the unwrapping of phi unambiguous
@@ -34,9 +34,21 @@ PathNode cuspNode(const Curve& c, const Cusp& cusp, bool atStart) {
     return n;
 }
 
+// 50000 -> "50,000"
+std::string groupedThousands(std::size_t n) {
+    std::string digits = std::to_string(n), out;
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (i > 0 && (digits.size() - i) % 3 == 0)
+            out += ',';
+        out += digits[i];
+    }
+    return out;
+}
+
 struct Refiner {
     const Curve& curve;
     double lengthScale, totalWidth, lengthRef, weightedRef, stiffRef;
+    std::size_t budget; // halvings allowed
     std::vector<PanelData> leaves;
     std::size_t splits = 0; // panels halved so far: the work, bounded like the leaves
 
@@ -77,11 +89,11 @@ struct Refiner {
                 throw InputError(pathPlace(curve, mid),
                                  "the curvature varies too fast here to be tabulated "
                                  "(a singular point or a near-corner)");
-            if (leaves.size() > kMaxPanels || splits > kMaxPanels)
+            if (leaves.size() > budget || splits > budget)
                 throw InputError(pathPlace(curve, mid),
-                                 "the path needs more than 50,000 panels to be tabulated (its "
-                                 "curvature varies too fast or too often); shorten the range or "
-                                 "smooth the expression");
+                                 "the path needs more than " + groupedThousands(budget) +
+                                     " panels to be tabulated (its curvature varies too fast or "
+                                     "too often); shorten the range or smooth the expression");
             refine(left, depth + 1);
             refine(right, depth + 1);
         }
@@ -104,9 +116,7 @@ bool uniformAtGaussNodes(const std::vector<PanelData>& leaves) {
 
 } // namespace
 
-PathTable::PathTable(std::shared_ptr<const Curve> curve) : PathTable(std::move(curve), {}) {}
-
-PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends)
+PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::size_t halvingBudget)
     : m_curve(std::move(curve)), m_ends(std::move(ends)) {
     const Curve& c = *m_curve;
     double u0 = c.u0(), u1 = c.u1();
@@ -179,9 +189,12 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends)
         weightedRef += initial.back().weighted;
         stiffRef += initial.back().stiff;
     }
-    Refiner refiner{c, lengthScale, u1 - u0, lengthRef, weightedRef, stiffRef, {}, 0};
+    Refiner refiner{c,        lengthScale,   u1 - u0, lengthRef, weightedRef,
+                    stiffRef, halvingBudget, {},      0};
     for (const PanelData& p : initial)
         refiner.refine(p, 0);
+    m_halvings = refiner.splits;
+    const std::size_t certifierBudget = halvingBudget - std::min(halvingBudget, refiner.splits);
 
     // interpolants on every panel of a curve that is not a line or a circle, split where
     // they cannot be certified
@@ -192,11 +205,13 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends)
                             lengthScale,
                             m_ends.start ? u0 : NAN,
                             m_ends.end ? u1 : NAN,
+                            certifierBudget,
                             {},
                             {},
                             {}};
         for (const PanelData& d : refiner.leaves)
             certifier.certify(d, 0, INFINITY);
+        m_halvings += certifierBudget - certifier.halvingsLeft;
         certifiedLeaves = std::move(certifier.leaves);
         m_cheb = std::move(certifier.cheb);
         m_bounds = certifier.bounds;

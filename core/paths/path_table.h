@@ -27,16 +27,20 @@ struct PathNode {
 /// (uniform()) have closed-form geometry and no interpolants.
 class PathTable {
   public:
-    /// Tabulates; throws InputError naming the x or u where the curve is undefined,
-    /// has no finite tangent or curvature, or stops (r' = 0).
-    explicit PathTable(std::shared_ptr<const Curve> curve);
     /// A stretch of a curve that starts and/or ends at a cusp (docs/physics.md §3): the node there
     /// carries the limits (speed 0, kappa = +-inf, the tangent line's heading) and the panels
     /// touching it are left to exact evaluation.
     struct CuspEnds {
         std::optional<Cusp> start, end;
     };
-    PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends);
+    /// The work a table may do: panel halvings by the refinement and the certification together.
+    /// y = sin(20 x) on [0, 100] needs 42,000.
+    static constexpr std::size_t kHalvingBudget = 50000;
+    /// Tabulates; throws InputError naming the x or u where the curve is undefined, has no finite
+    /// tangent or curvature, or stops (r' = 0), or where the refinement exceeds `halvingBudget`.
+    /// Certification that would exceed it leaves the remaining panels to exact evaluation.
+    explicit PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends = {},
+                       std::size_t halvingBudget = kHalvingBudget);
 
     struct GaussPanel {
         std::array<double, gauss::kPoints> weight; ///< Gauss weight times ds/du: ds at each node
@@ -83,6 +87,8 @@ class PathTable {
         int noisePanels = 0; ///< certified at the rounding noise of the exact evaluation
     };
     const Bounds& bounds() const { return m_bounds; }
+    /// Panel halvings done by the refinement and the certification (within the budget).
+    std::size_t halvings() const { return m_halvings; }
     /// Geometry at the Gauss nodes of [u_k, u] in panel k (for partial integrals).
     struct Partial {
         std::array<CurveGeometry, gauss::kPoints> geometry;
@@ -102,6 +108,7 @@ class PathTable {
     bool m_uniform = false;
     std::vector<ChebPanel> m_cheb;
     Bounds m_bounds;
+    std::size_t m_halvings = 0;
 };
 
 } // namespace chaplygin

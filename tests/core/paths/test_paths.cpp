@@ -22,9 +22,9 @@ PathSource graph(const std::string& y, double x0, double x1) {
     return p;
 }
 
-std::string errorOf(const PathSource& p) {
+std::string errorOf(const PathSource& p, std::size_t halvingBudget = PathTable::kHalvingBudget) {
     try {
-        buildPath(p);
+        buildPath(p, halvingBudget);
     } catch (const InputError& e) {
         return e.what();
     }
@@ -195,4 +195,32 @@ TEST(Paths, SmoothingSplineGivesSmoothCurvatureForAShakyCircle) {
     CurvePoint q = exact->pieces().front().table->curve().eval(0);
     EXPECT_NEAR(q.x, p.points[0].first, 1e-12);
     EXPECT_NEAR(q.y, p.points[0].second, 1e-12);
+}
+
+// The certification of the interpolants shares the budget: when it is spent, the panels that
+// still miss their tolerance are left to exact evaluation, which keeps every value exact.
+TEST(Paths, CertificationStopsAtTheBudgetAndLeavesPanelsExact) {
+    const PathSource tall = graph("100*cos(10*x)", -1, 1);
+    auto full = buildPath(tall);
+    const PathTable& whole = *full->pieces().front().table;
+    ASSERT_EQ(whole.bounds().exactPanels, 0);
+    const std::size_t budget = whole.halvings() - 10;
+    auto limited = buildPath(tall, budget);
+    const PathTable& t = *limited->pieces().front().table;
+    EXPECT_LE(t.halvings(), budget);
+    EXPECT_GT(t.bounds().exactPanels, 0);
+    EXPECT_LT(t.nodes().size(), whole.nodes().size());
+    for (int i = 0; i <= 2000; ++i) {
+        const double u = -1 + 2.0 * i / 2000;
+        const PathNode a = t.at(u), b = t.interpolatedAt(u), c = whole.at(u);
+        EXPECT_NEAR(b.x, a.x, 1e-12) << u;
+        EXPECT_NEAR(b.y, a.y, 1e-12 * 100) << u;
+        EXPECT_NEAR(b.kappa, a.kappa, 1e-12 * std::fabs(a.kappa) + 1e-12) << u;
+        EXPECT_NEAR(b.s, c.s, 1e-12 * full->length()) << u;
+    }
+    EXPECT_NEAR(limited->length(), full->length(), 1e-13 * full->length());
+    // a budget the refinement alone exceeds is refused, naming the budget
+    const std::string e = errorOf(tall, 100);
+    EXPECT_NE(e.find("path at x = "), std::string::npos) << e;
+    EXPECT_NE(e.find("needs more than 100 panels"), std::string::npos) << e;
 }
