@@ -168,6 +168,8 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     std::vector<PanelData> initial;
     double lengthRef = 0, weightedRef = 0, stiffRef = 0;
     std::vector<double> edges = c.breakpoints();
+    const bool piecewise = edges.size() >= 2;
+    initial.reserve(std::max<std::size_t>(edges.size(), kInitialPanels));
     if (edges.size() < 2) {
         edges.clear();
         // a line or a circular arc starts from as few panels as the turn per panel allows
@@ -191,6 +193,7 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     }
     Refiner refiner{c,        lengthScale,   u1 - u0, lengthRef, weightedRef,
                     stiffRef, halvingBudget, {},      0};
+    refiner.leaves.reserve(2 * initial.size()); // a drawn stroke keeps its knot intervals whole
     for (const PanelData& p : initial)
         refiner.refine(p, 0);
     m_halvings = refiner.splits;
@@ -201,7 +204,7 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     std::vector<PanelData> certifiedLeaves;
     if (!uniformAtGaussNodes(refiner.leaves)) {
         Certifier certifier{c,
-                            c.breakpoints().size() >= 2,
+                            piecewise,
                             lengthScale,
                             m_ends.start ? u0 : NAN,
                             m_ends.end ? u1 : NAN,
@@ -209,6 +212,8 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
                             {},
                             {},
                             {}};
+        certifier.leaves.reserve(refiner.leaves.size());
+        certifier.cheb.reserve(refiner.leaves.size());
         for (const PanelData& d : refiner.leaves)
             certifier.certify(d, 0, INFINITY);
         m_halvings += certifierBudget - certifier.halvingsLeft;

@@ -18,6 +18,19 @@
 using namespace chaplygin;
 using namespace chaplygin::ui;
 
+namespace {
+
+// the legend laid out in the plot (under it, not inset)
+QCPLegend* legendOf(QCustomPlot* plot) {
+    QCPLegend* legend = nullptr;
+    for (QCPLayoutElement* e : plot->plotLayout()->elements(true))
+        if (auto* l = qobject_cast<QCPLegend*>(e))
+            legend = l;
+    return legend;
+}
+
+} // namespace
+
 class TestPlotDisplay : public QObject, private test::WindowFixture {
     Q_OBJECT
 
@@ -125,10 +138,7 @@ void TestPlotDisplay::legendsAreCompact() {
     for (int i = 0; i < 4; ++i) {
         QCustomPlot* plot = m_window->plotsPanel()->plot(i);
         plot->replot();
-        QCPLegend* legend = nullptr;
-        for (QCPLayoutElement* e : plot->plotLayout()->elements(true))
-            if (auto* l = qobject_cast<QCPLegend*>(e))
-                legend = l;
+        QCPLegend* legend = legendOf(plot);
         QVERIFY(legend);
         QVERIFY(legend->itemCount() <= 3);
         // one short row under the plot: its entries fit the width, it takes little height
@@ -189,10 +199,7 @@ void TestPlotDisplay::legendEntriesWholeWhenNarrowOrPresenting() {
         for (int i = 0; i < 4; ++i) {
             QCustomPlot* plot = m_window->plotsPanel()->plot(i);
             plot->replot();
-            QCPLegend* legend = nullptr;
-            for (QCPLayoutElement* e : plot->plotLayout()->elements(true))
-                if (auto* l = qobject_cast<QCPLegend*>(e))
-                    legend = l;
+            QCPLegend* legend = legendOf(plot);
             QVERIFY(legend);
             QVERIFY2(legend->minimumOuterSizeHint().width() <= plot->width(),
                      qPrintable(QStringLiteral("%1, plot %2: the legend needs %3 px of %4")
