@@ -1,23 +1,36 @@
 #include "translations.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QTranslator>
 
 namespace chaplygin::app {
 
-bool installTranslations(QCoreApplication& app, const QLocale& locale) {
+QStringList catalogueDirectories() {
+    const QDir bin(QCoreApplication::applicationDirPath());
+    return {QDir::cleanPath(bin.filePath(QStringLiteral("../share/chaplygin-lab/translations"))),
+            QStringLiteral(":/i18n")};
+}
+
+QString installTranslations(QCoreApplication& app, const QLocale& locale,
+                            const QStringList& directories) {
     auto* qt = new QTranslator(&app);
     if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
                  QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
         QCoreApplication::installTranslator(qt);
-    auto* own = new QTranslator(&app);
-    if (!own->load(locale, QStringLiteral("chaplygin-lab"), QStringLiteral("_"),
-                   QStringLiteral(":/i18n")))
-        return false;
-    QCoreApplication::installTranslator(own);
-    return true;
+    else
+        delete qt;
+    for (const QString& directory : directories) {
+        auto* own = new QTranslator(&app);
+        if (own->load(locale, QStringLiteral("chaplygin-lab"), QStringLiteral("_"), directory)) {
+            QCoreApplication::installTranslator(own);
+            return own->filePath();
+        }
+        delete own;
+    }
+    return {};
 }
 
 } // namespace chaplygin::app

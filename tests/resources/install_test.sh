@@ -21,6 +21,10 @@ for f in share/applications/io.github.chaplyginlab.ChaplyginLab.desktop \
          share/chaplygin-lab/scenes/presets/circle.json share/chaplygin-lab/scenes/gallery/cusp.json; do
   [ -s "$usr/$f" ] || fail "no $f"
 done
+# the pt_BR catalogue is a Qt .qm file (its magic number), where the program looks for it first
+qm=$usr/share/chaplygin-lab/translations/chaplygin-lab_pt_BR.qm
+[ -s "$qm" ] || fail "no share/chaplygin-lab/translations/chaplygin-lab_pt_BR.qm"
+[ "$(od -An -tx1 -N16 "$qm" | tr -d ' \n')" = 3cb86418caef9c95cd211cbf60a1bddd ] || fail "$qm is not a .qm file"
 # each hicolor PNG is a PNG of its size (IHDR width and height, big-endian, at byte 16)
 for size in 16 22 24 32 48 64 128 256 512; do
   png=$usr/share/icons/hicolor/${size}x${size}/apps/chaplygin-lab.png

@@ -1,5 +1,5 @@
-// Translations: the pt_BR catalogue (resources/translations/) compiled in under :/i18n, the
-// View > Language choice saved in the settings, and the screenshot mode's --language.
+// Translations: the pt_BR catalogue (resources/translations/), installed or compiled in under
+// :/i18n, the View > Language choice saved in the settings, and the screenshot mode's --language.
 #include "desktop_entry.h"
 #include "gui_test_support.h"
 #include "shell/language_menu.h"
@@ -9,8 +9,10 @@
 #include <QAction>
 #include <QApplication>
 #include <QDockWidget>
+#include <QFile>
 #include <QMenu>
 #include <QMenuBar>
+#include <QTemporaryDir>
 #include <QTranslator>
 #include <QtTest>
 
@@ -53,6 +55,7 @@ class TestTranslations : public QObject {
     void cleanup();
     void portugueseMenusAndDocks();
     void englishNeedsNoCatalogue();
+    void installedCatalogueComesFirst();
     void languageChoiceSavedInSettings();
     void screenshotRefusesUnknownLanguage();
 };
@@ -72,7 +75,7 @@ void TestTranslations::portugueseMenusAndDocks() {
     english.reset();
     QVERIFY(englishMenus.contains(QStringLiteral("&File")));
 
-    QVERIFY(app::installTranslations(*qApp, QLocale(QStringLiteral("pt_BR"))));
+    QVERIFY(!app::installTranslations(*qApp, QLocale(QStringLiteral("pt_BR"))).isEmpty());
     MainWindow window(false);
     const QStringList menus = menuTitles(window);
     QVERIFY2(menus.contains(QStringLiteral("&Arquivo")), qPrintable(menus.join(u' ')));
@@ -95,10 +98,37 @@ void TestTranslations::portugueseMenusAndDocks() {
 }
 
 void TestTranslations::englishNeedsNoCatalogue() {
-    QVERIFY(!app::installTranslations(*qApp, QLocale(QStringLiteral("en"))));
+    QVERIFY(app::installTranslations(*qApp, QLocale(QStringLiteral("en"))).isEmpty());
     MainWindow window(false);
     QVERIFY(menuTitles(window).contains(QStringLiteral("&File")));
     QCOMPARE(dockTitles(window).value(QStringLiteral("pathDock")), QStringLiteral("Path"));
+}
+
+void TestTranslations::installedCatalogueComesFirst() {
+    // the installed share/chaplygin-lab/translations wins over the compiled-in copy; without it
+    // the compiled-in one serves
+    QTemporaryDir installed;
+    QVERIFY(installed.isValid());
+    const QString file = installed.filePath(QStringLiteral("chaplygin-lab_pt_BR.qm"));
+    QVERIFY(QFile::copy(QStringLiteral(":/i18n/chaplygin-lab_pt_BR.qm"), file));
+    const QLocale pt(QStringLiteral("pt_BR"));
+    QCOMPARE(app::installTranslations(*qApp, pt, {installed.path(), QStringLiteral(":/i18n")}),
+             file);
+    MainWindow window(false);
+    QVERIFY2(menuTitles(window).contains(QStringLiteral("&Arquivo")),
+             qPrintable(menuTitles(window).join(u' ')));
+    removeTranslators();
+    QCOMPARE(
+        app::installTranslations(
+            *qApp, pt, {installed.filePath(QStringLiteral("absent")), QStringLiteral(":/i18n")}),
+        QStringLiteral(":/i18n/chaplygin-lab_pt_BR.qm"));
+    removeTranslators();
+    // the program looks beside its own prefix first
+    const QStringList dirs = app::catalogueDirectories();
+    QCOMPARE(dirs.size(), 2);
+    QVERIFY2(dirs[0].endsWith(QLatin1String("/share/chaplygin-lab/translations")),
+             qPrintable(dirs[0]));
+    QCOMPARE(dirs[1], QStringLiteral(":/i18n"));
 }
 
 void TestTranslations::languageChoiceSavedInSettings() {
