@@ -125,32 +125,53 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
 
 } // namespace
 
+void Certifier::keep(const PanelData& d, const PathTable::ChebPanel& panel,
+                     const PathTable::Bounds& b) {
+    if (panel.certified) {
+        bounds.position = std::max(bounds.position, b.position);
+        bounds.heading = std::max(bounds.heading, b.heading);
+        bounds.kappa = std::max(bounds.kappa, b.kappa);
+        bounds.dkappa = std::max(bounds.dkappa, b.dkappa);
+        bounds.arcLength = std::max(bounds.arcLength, b.arcLength);
+        bounds.noisePanels += panel.noiseLimited ? 1 : 0;
+    } else {
+        bounds.exactPanels += 1;
+    }
+    leaves.push_back(d);
+    cheb.push_back(panel);
+}
+
+bool Certifier::acceptWhole(const PanelData& d, double stiffTolerance) {
+    if (d.a == cuspStart || d.b == cuspEnd)
+        return false;
+    PathTable::ChebPanel panel;
+    PathTable::Bounds b;
+    if (interpolate(curve, piecewise, d, lengthScale, panel, b) > 1)
+        return false;
+    std::array<double, cheb::kPoints> stiff, stiffCoef;
+    for (int j = 0; j < cheb::kPoints; ++j)
+        stiff[j] = panel.dsdxi[j] * std::hypot(1.0, kStiffScale * lengthScale * panel.kappa[j]);
+    cheb::coefficients(stiff.data(), stiffCoef.data());
+    if (4 * cheb::tailEstimate(stiffCoef.data(), cheb::kPoints) > stiffTolerance)
+        return false;
+    keep(d, panel, b);
+    return true;
+}
+
 void Certifier::certify(const PanelData& d, int depth, double parentScore) {
     PathTable::ChebPanel panel;
     if (d.a == cuspStart || d.b == cuspEnd) {
         // kappa and dkappa/ds grow without bound towards a cusp: no interpolant
-        bounds.exactPanels += 1;
-        leaves.push_back(d);
-        cheb.push_back(panel);
+        keep(d, panel, {});
         return;
     }
     PathTable::Bounds b;
     double score = interpolate(curve, piecewise, d, lengthScale, panel, b);
     bool noise = score > 1 && depth > 0 && score > 0.25 * parentScore;
     if (score <= 1 || noise || depth >= kMaxCertifyDepth || halvingsLeft == 0) {
-        if (score <= 1 || noise) {
-            panel.certified = true;
-            panel.noiseLimited = noise;
-            bounds.position = std::max(bounds.position, b.position);
-            bounds.heading = std::max(bounds.heading, b.heading);
-            bounds.kappa = std::max(bounds.kappa, b.kappa);
-            bounds.dkappa = std::max(bounds.dkappa, b.dkappa);
-            bounds.arcLength = std::max(bounds.arcLength, b.arcLength);
-            bounds.noisePanels += noise ? 1 : 0;
-        }
-        bounds.exactPanels += panel.certified ? 0 : 1;
-        leaves.push_back(d);
-        cheb.push_back(panel);
+        panel.certified = score <= 1 || noise;
+        panel.noiseLimited = noise;
+        keep(d, panel, b);
         return;
     }
     --halvingsLeft;

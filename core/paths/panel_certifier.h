@@ -24,6 +24,15 @@ struct Certifier {
     // no panel can beat: the panel is kept with that measured bound (noiseLimited). A panel that
     // needs halving when the budget is spent is left to exact evaluation.
     void certify(const PanelData& d, int depth, double parentScore);
+
+    // Takes a knot interval of a piecewise curve as one panel, without the refinement's
+    // comparison against its halves, when its interpolants are certified and the stiff time-law
+    // integrand (PanelData::stiff) is resolved to `stiffTolerance`: the Chebyshev tails then bound
+    // the error of the panel's Gauss sums. Returns false, keeping nothing, otherwise.
+    bool acceptWhole(const PanelData& d, double stiffTolerance);
+
+  private:
+    void keep(const PanelData& d, const PathTable::ChebPanel& panel, const PathTable::Bounds& b);
 };
 
 } // namespace chaplygin

@@ -7,10 +7,6 @@
 namespace chaplygin {
 namespace {
 
-// the time law sqrt(1 + b^2 kappa^2) sharpens near inflections as b grows; the table resolves
-// it for gyration radii up to this many times the path's size
-constexpr double kStiffScale = 100.0;
-
 bool finite(const CurvePoint& p) {
     return std::isfinite(p.dx) && std::isfinite(p.dy) && std::isfinite(p.ddx) &&
            std::isfinite(p.ddy) && std::isfinite(p.dddx) && std::isfinite(p.dddy);

@@ -16,6 +16,10 @@ std::string pathPlace(const Curve& c, double u);
 /// finite tangent or curvature, or stops (r' = 0).
 CurveGeometry checkedGeometry(const Curve& c, double u, CurvePoint* out = nullptr);
 
+/// The time law sqrt(1 + b^2 kappa^2) sharpens near inflections as b grows; the table resolves it
+/// for gyration radii up to this many times the path's size.
+constexpr double kStiffScale = 100.0;
+
 /// A panel [a, b] with its 8-point Gauss sums.
 struct PanelData {
     double a = 0, b = 0;

@@ -193,35 +193,45 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     }
     Refiner refiner{c,        lengthScale,   u1 - u0, lengthRef, weightedRef,
                     stiffRef, halvingBudget, {},      0};
-    refiner.leaves.reserve(2 * initial.size()); // a drawn stroke keeps its knot intervals whole
-    for (const PanelData& p : initial)
-        refiner.refine(p, 0);
-    m_halvings = refiner.splits;
-    const std::size_t certifierBudget = halvingBudget - std::min(halvingBudget, refiner.splits);
-
-    // interpolants on every panel of a curve that is not a line or a circle, split where
-    // they cannot be certified
-    std::vector<PanelData> certifiedLeaves;
-    if (!uniformAtGaussNodes(refiner.leaves)) {
-        Certifier certifier{c,
-                            piecewise,
-                            lengthScale,
-                            m_ends.start ? u0 : NAN,
-                            m_ends.end ? u1 : NAN,
-                            certifierBudget,
-                            {},
-                            {},
-                            {}};
-        certifier.leaves.reserve(refiner.leaves.size());
-        certifier.cheb.reserve(refiner.leaves.size());
-        for (const PanelData& d : refiner.leaves)
-            certifier.certify(d, 0, INFINITY);
-        m_halvings += certifierBudget - certifier.halvingsLeft;
-        certifiedLeaves = std::move(certifier.leaves);
-        m_cheb = std::move(certifier.cheb);
-        m_bounds = certifier.bounds;
+    Certifier certifier{
+        c, piecewise, lengthScale, m_ends.start ? u0 : NAN, m_ends.end ? u1 : NAN, 0, {}, {}, {}};
+    if (piecewise && !uniformAtGaussNodes(initial)) {
+        // the knot intervals of a spline: each is certified as it is, and refined only where
+        // that fails
+        certifier.leaves.reserve(initial.size());
+        certifier.cheb.reserve(initial.size());
+        for (const PanelData& p : initial) {
+            const double stiffTolerance = kPanelTolerance * stiffRef * ((p.b - p.a) / (u1 - u0));
+            if (p.absTurn <= kMaxTurnPerPanel && certifier.acceptWhole(p, stiffTolerance))
+                continue;
+            refiner.leaves.clear();
+            refiner.refine(p, 0);
+            certifier.halvingsLeft = halvingBudget - std::min(halvingBudget, refiner.splits);
+            for (const PanelData& d : refiner.leaves)
+                certifier.certify(d, 0, INFINITY);
+            refiner.splits = halvingBudget - certifier.halvingsLeft; // the certifier's count too
+        }
+        m_halvings = refiner.splits;
+    } else {
+        refiner.leaves.reserve(2 * initial.size());
+        for (const PanelData& p : initial)
+            refiner.refine(p, 0);
+        m_halvings = refiner.splits;
+        // interpolants on every panel of a curve that is not a line or a circle, split where
+        // they cannot be certified
+        if (!uniformAtGaussNodes(refiner.leaves)) {
+            certifier.halvingsLeft = halvingBudget - std::min(halvingBudget, refiner.splits);
+            const std::size_t certifierBudget = certifier.halvingsLeft;
+            certifier.leaves.reserve(refiner.leaves.size());
+            certifier.cheb.reserve(refiner.leaves.size());
+            for (const PanelData& d : refiner.leaves)
+                certifier.certify(d, 0, INFINITY);
+            m_halvings += certifierBudget - certifier.halvingsLeft;
+        }
     }
-    const auto& leaves = m_cheb.empty() ? refiner.leaves : certifiedLeaves;
+    m_cheb = std::move(certifier.cheb);
+    m_bounds = certifier.bounds;
+    const auto& leaves = m_cheb.empty() ? refiner.leaves : certifier.leaves;
 
     // panel ends carry the exact geometry; phi is unwrapped by the quadrature of kappa ds
     m_nodes.reserve(leaves.size() + 1);

@@ -6,6 +6,7 @@
 #include "scene/presets.h"
 #include "scene/solution.h"
 
+#include <gsl/gsl_integration.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -47,6 +48,18 @@ Errors interpolationErrors(const PathTable& table, int samples = 4000) {
         e.s = std::max(e.s, std::fabs(a.s - x.s));
     }
     return e;
+}
+
+// GSL's adaptive Gauss-Kronrod (21 points) on [a, b]
+template <class F> double qag(F f, double a, double b) {
+    gsl_integration_workspace* w = gsl_integration_workspace_alloc(200);
+    gsl_function g;
+    g.function = [](double x, void* p) { return (*static_cast<F*>(p))(x); };
+    g.params = &f;
+    double result = 0, err = 0;
+    gsl_integration_qag(&g, a, b, 0, 2e-14, 200, GSL_INTEG_GAUSS21, w, &result, &err);
+    gsl_integration_workspace_free(w);
+    return result;
 }
 
 } // namespace
@@ -200,6 +213,45 @@ TEST(PathTable, DrawnStrokesAreCertifiedWithFewPanels) {
         if (smoothing > 0) {
             EXPECT_LE(table.panels().size(), 510u); // 500 knot intervals
         }
+    }
+}
+
+// A smoothed stroke's knot intervals are each taken as one panel, without halving, when their
+// interpolants certify; the Gauss sums the arc length and the time law rest on then agree with
+// GSL's adaptive quadrature over every knot interval, for b from 1 to 100 times the path's size
+// (the sharpest time-law integrand the table resolves, docs/numerics.md §7).
+TEST(PathTable, WholeKnotIntervalsKeepTheirSumsExact) {
+    PathSource p;
+    p.kind = PathKind::Polyline;
+    p.corners = CornerMode::Smooth;
+    p.smoothing = 10;
+    for (int i = 0; i < 500; ++i) {
+        const double th = 3.0 * i / 500;
+        p.points.emplace_back(3 * std::cos(th) + 0.01 * std::sin(7.0 * i),
+                              3 * std::sin(th) + 0.01 * std::cos(5.0 * i));
+    }
+    auto path = buildPath(p);
+    const PathTable& table = *path->pieces().front().table;
+    EXPECT_EQ(table.halvings(), 0u);
+    EXPECT_EQ(table.panels().size(), 499u);
+    EXPECT_EQ(table.bounds().exactPanels, 0);
+    const Curve& c = table.curve();
+    const std::vector<double> knots = c.breakpoints();
+    for (double b : {0.0, 1.0, 6.0, 600.0}) {
+        auto integrand = [&](double u) {
+            const CurvePoint q = c.eval(u);
+            const double speed = std::hypot(q.dx, q.dy);
+            const double kappa = (q.dx * q.ddy - q.dy * q.ddx) / (speed * speed * speed);
+            return speed * std::hypot(1.0, b * kappa);
+        };
+        double reference = 0, sum = 0;
+        for (std::size_t k = 0; k + 1 < knots.size(); ++k)
+            reference += qag(integrand, knots[k], knots[k + 1]);
+        for (const PathTable::GaussPanel& panel : table.panels())
+            for (int i = 0; i < gauss::kPoints; ++i)
+                sum += panel.weight[i] * std::hypot(1.0, b * panel.kappa[i]);
+        std::cout << "b = " << b << ": relative error " << (sum - reference) / reference << "\n";
+        EXPECT_NEAR(sum, reference, 1e-13 * reference) << "b = " << b;
     }
 }
 
