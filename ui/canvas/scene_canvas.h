@@ -84,7 +84,8 @@ class SceneCanvas : public QWidget {
     void paintGrid(QPainter& p, const QTransform& world, const QRectF& area) const;
     void paintScaleBar(QPainter& p) const;
     void paintPath(QPainter& p, const QTransform& world) const;
-    void paintTrails(QPainter& p, const MotionSample& now) const;
+    /// The trails up to now, as far as they reach area [px].
+    void paintTrails(QPainter& p, const MotionSample& now, const QRegion& area) const;
     void paintLegend(QPainter& p) const;
     void paintTimeReadout(QPainter& p, double tEnd) const;
     void paintBackground();

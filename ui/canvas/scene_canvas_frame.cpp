@@ -1,9 +1,11 @@
 #include "canvas/scene_canvas.h"
 
 #include "canvas/pin_painter.h"
+#include "canvas/trail_stroke.h"
 #include "document/pin_set.h"
 #include "document/scene_document.h"
 
+#include <QPaintEvent>
 #include <QPainter>
 
 #include <algorithm>
@@ -13,7 +15,7 @@
 // and the time read-out
 namespace chaplygin::ui {
 
-void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now) const {
+void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now, const QRegion& area) const {
     const PlotSeries& s = m_document->series();
     auto trail = [&](const QVector<double>& t, const QVector<double>& x, const QVector<double>& y,
                      QPointF end, const QPen& pen) {
@@ -21,8 +23,8 @@ void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now) const {
         for (int i = 0; i < t.size() && t[i] <= m_time; ++i)
             line << toPixel({x[i], y[i]});
         line << toPixel(end);
-        p.setPen(pen);
-        p.drawPolyline(line);
+        // a frame repaints a small area: only the segments near it are stroked
+        strokePolylineWithin(p, line, pen, area);
     };
     QColor free = m_style.free();
     free.setAlpha(m_style.highContrast ? 255 : 150);
@@ -94,7 +96,7 @@ void SceneCanvas::updateMoving(double from) {
     update(dirty);
 }
 
-void SceneCanvas::paintEvent(QPaintEvent*) {
+void SceneCanvas::paintEvent(QPaintEvent* e) {
     QPainter p(this);
     paintStaticLayer(p);
     p.setRenderHint(QPainter::Antialiasing, true);
@@ -103,7 +105,7 @@ void SceneCanvas::paintEvent(QPaintEvent*) {
         MotionSample now = solution->at(m_time);
         p.save();
         p.setClipRect(drawingArea());
-        paintTrails(p, now);
+        paintTrails(p, now, e->region() & drawingArea().toAlignedRect());
         paintPinnedRuns(p, *PinSet::of(m_document), worldTransform(), m_time, QPointF(10, 42));
         const SystemSpec& spec = solution->scene().system;
         const QTransform world = worldTransform();
@@ -118,7 +120,7 @@ void SceneCanvas::paintEvent(QPaintEvent*) {
             body({now.vak.x, now.vak.y, now.vak.phi}, m_style.vakonomic(), true);
         p.restore();
         m_vectors.paint(p, solution, m_document->scene().vectors, now, worldTransform(), m_scale,
-                        rect());
+                        rect(), e->region());
         paintTimeReadout(p, solution->tEnd());
         m_movingPainted = movingBounds(*solution, now, m_time);
     } else {
