@@ -80,17 +80,42 @@ QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& no
         .adjusted(-2, -2, 2, 2);
 }
 
-void SceneCanvas::updateMoving(double from) {
-    // only the moving parts when nothing else changed: the view, the static layer, the pins
-    // (their runs move too), a stroke or a vertex being drawn, a trail that shrinks
+void SceneCanvas::updateMoving(double from, QPointF centre) {
+    // only the moving parts when nothing else changed: the view (but for following the body by
+    // whole pixels), the static layer, the pins (their runs move too), a stroke or a vertex
+    // being drawn, a trail that shrinks
     const auto& solution = m_document->solution();
-    if (!solution || m_follow || !(from <= m_time) || m_background.isNull() ||
-        m_movingPainted.isNull() || !(backgroundKey() == m_backgroundKey) || !m_stroke.empty() ||
-        m_dragVertex >= 0 || PinSet::of(m_document)->count() > 0) {
+    bool steady = solution && from <= m_time && !m_movingPainted.isNull() && m_stroke.empty() &&
+                  m_dragVertex < 0 && PinSet::of(m_document)->count() == 0;
+    QPoint shift; // [px] how far the scene's pixels move
+    if (steady && !m_follow) {
+        steady = !m_background.isNull() && backgroundKey() == m_backgroundKey;
+    } else if (steady) {
+        BackgroundKey key = backgroundKey();
+        key.centre = {};
+        // the centre snaps to the pixel grid: the scene moves by whole pixels, y up
+        const QPointF moved((centre.x() - m_centre.x()) * m_scale,
+                            (m_centre.y() - centre.y()) * m_scale);
+        shift = moved.toPoint();
+        steady = followsWithWorldLayer() && key == m_worldKey && !m_worldLayer.isNull() &&
+                 std::abs(moved.x() - shift.x()) < 1e-6 && std::abs(moved.y() - shift.y()) < 1e-6;
+    }
+    if (!steady) {
         update();
         return;
     }
-    QRegion dirty(m_movingPainted);
+    QRegion dirty;
+    if (!shift.isNull()) {
+        // Qt moves the pixels and repaints what they uncover; the scale bars stay put, and
+        // so do the rows at the area's edges, where the bands' antialiased lines reach in
+        const QRect area = drawingArea().toAlignedRect();
+        const QRect moving = area.adjusted(0, 3, 0, -3);
+        scroll(shift.x(), shift.y(), moving);
+        m_movingPainted.translate(shift);
+        dirty += QRegion(area) - moving;
+        dirty += m_vectors.scaleBarsBounds(m_document->scene().vectors, rect());
+    }
+    dirty += m_movingPainted;
     dirty += movingBounds(*solution, solution->at(m_time), from);
     dirty += QRect(0, 0, width(), topBandPx()); // the time read-out
     update(dirty);

@@ -101,11 +101,15 @@ void VectorLayer::paint(QPainter& p, const std::shared_ptr<const Solution>& solu
     paintVectorShapes(p, m_free, false);
     paintVectorShapes(p, m_controlled, true);
     // the scale bars stay put: a frame that repaints what moves need not draw them
+    if (repainted.intersects(scaleBarsBounds(overlay, area)))
+        paintScaleBars(p, overlay, k, pixelsPerMetre, scaleBarsCorner(area));
+}
+
+QRect VectorLayer::scaleBarsBounds(const VectorOverlay& overlay, const QRectF& area) const {
     int rows = 0;
     for (int i = 0; i < kVectorKinds; ++i)
         rows += (overlay.*vectorToggle(VectorKind(i))).shown ? 1 : 0;
-    if (repainted.intersects(scaleBarsBox(scaleBarsCorner(area), rows)))
-        paintScaleBars(p, overlay, k, pixelsPerMetre, scaleBarsCorner(area));
+    return rows > 0 ? scaleBarsBox(scaleBarsCorner(area), rows) : QRect();
 }
 
 QRectF VectorLayer::bounds(const std::shared_ptr<const Solution>& solution,

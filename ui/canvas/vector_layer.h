@@ -25,6 +25,9 @@ class VectorLayer {
     QRectF bounds(const std::shared_ptr<const Solution>& solution, const VectorOverlay& overlay,
                   const MotionSample& now, const QTransform& world) const;
 
+    /// The box [px] of the scale bars paint draws in the corner of area (empty when none).
+    QRect scaleBarsBounds(const VectorOverlay& overlay, const QRectF& area) const;
+
     /// The effective scales (the scene's, else automatic) for a solution.
     VectorScales scales(const std::shared_ptr<const Solution>& solution,
                         const VectorOverlay& overlay) const;
