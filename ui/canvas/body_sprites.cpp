@@ -84,6 +84,11 @@ void BodySprites::paint(QPainter& painter, const QTransform& world, double pixel
         painter.restore();
         return;
     }
+    // the turned image's rows are cut at the body's box whatever the repainted region, so
+    // that a partial repaint resamples them as a full one does
+    painter.setClipRect(
+        pixelBounds(world, pixelsPerMetre, spec, derived, pose, look).toAlignedRect(),
+        Qt::IntersectClip);
     // image pixels -> the body's frame [m] -> the world -> the widget
     const double s = pixelsPerMetre, c = sprite->centre;
     QTransform toBody(1 / s, 0, 0, -1 / s, -c / s, c / s);

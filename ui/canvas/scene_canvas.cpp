@@ -61,10 +61,11 @@ void SceneCanvas::onSolutionChanged() {
 
 void SceneCanvas::setTime(double t) {
     double from = m_time;
+    QPointF centre = m_centre;
     m_time = t;
     if (m_follow)
         centreOnBody();
-    updateMoving(from);
+    updateMoving(from, centre);
 }
 
 void SceneCanvas::centreOnBody() {

@@ -84,16 +84,21 @@ class SceneCanvas : public QWidget {
     void paintGrid(QPainter& p, const QTransform& world, const QRectF& area) const;
     void paintScaleBar(QPainter& p) const;
     void paintPath(QPainter& p, const QTransform& world) const;
-    void paintTrails(QPainter& p, const MotionSample& now) const;
+    /// The trails up to now, as far as they reach area [px].
+    void paintTrails(QPainter& p, const MotionSample& now, const QRegion& area) const;
     void paintLegend(QPainter& p) const;
     void paintTimeReadout(QPainter& p, double tEnd) const;
     void paintBackground();
     /// The static layer onto the widget: the cached background, or while following the body the
     /// world layer shifted by whole pixels under the legend and the scale bar.
     void paintStaticLayer(QPainter& p);
-    /// Repaints what moved from time `from` to m_time: the bodies, their arrows and the new
-    /// end of each trail where that suffices, else the whole canvas.
-    void updateMoving(double from);
+    /// Repaints what moved from time `from` (and the view centred on `centre`) to m_time: the
+    /// bodies, their arrows and the new end of each trail where that suffices, else the whole
+    /// canvas. Following the body, the drawing area's pixels are scrolled by the whole pixels
+    /// the view moved, and what scrolling uncovers is repainted with the rest.
+    void updateMoving(double from, QPointF centre);
+    /// Whether the static layer is the world layer shifted with the followed body.
+    bool followsWithWorldLayer() const;
     /// The box [px] of everything that moves drawn at time t, with the trails' vertices
     /// after time `from`.
     QRect movingBounds(const Solution& solution, const MotionSample& now, double from) const;

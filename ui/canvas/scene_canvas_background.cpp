@@ -190,9 +190,14 @@ void SceneCanvas::paintBackground() {
     }
 }
 
+bool SceneCanvas::followsWithWorldLayer() const {
+    const qreal dpr = devicePixelRatioF();
+    return m_follow && !m_drawMode && dpr == std::round(dpr) && m_document->solution();
+}
+
 void SceneCanvas::paintStaticLayer(QPainter& p) {
     const qreal dpr = devicePixelRatioF();
-    if (!m_follow || m_drawMode || dpr != std::round(dpr) || !m_document->solution()) {
+    if (!followsWithWorldLayer()) {
         paintBackground();
         p.drawPixmap(0, 0, m_background);
         return;

@@ -1,9 +1,11 @@
 #include "canvas/scene_canvas.h"
 
 #include "canvas/pin_painter.h"
+#include "canvas/trail_stroke.h"
 #include "document/pin_set.h"
 #include "document/scene_document.h"
 
+#include <QPaintEvent>
 #include <QPainter>
 
 #include <algorithm>
@@ -13,7 +15,7 @@
 // and the time read-out
 namespace chaplygin::ui {
 
-void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now) const {
+void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now, const QRegion& area) const {
     const PlotSeries& s = m_document->series();
     auto trail = [&](const QVector<double>& t, const QVector<double>& x, const QVector<double>& y,
                      QPointF end, const QPen& pen) {
@@ -21,8 +23,8 @@ void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now) const {
         for (int i = 0; i < t.size() && t[i] <= m_time; ++i)
             line << toPixel({x[i], y[i]});
         line << toPixel(end);
-        p.setPen(pen);
-        p.drawPolyline(line);
+        // a frame repaints a small area: only the segments near it are stroked
+        strokePolylineWithin(p, line, pen, area);
     };
     QColor free = m_style.free();
     free.setAlpha(m_style.highContrast ? 255 : 150);
@@ -78,23 +80,48 @@ QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& no
         .adjusted(-2, -2, 2, 2);
 }
 
-void SceneCanvas::updateMoving(double from) {
-    // only the moving parts when nothing else changed: the view, the static layer, the pins
-    // (their runs move too), a stroke or a vertex being drawn, a trail that shrinks
+void SceneCanvas::updateMoving(double from, QPointF centre) {
+    // only the moving parts when nothing else changed: the view (but for following the body by
+    // whole pixels), the static layer, the pins (their runs move too), a stroke or a vertex
+    // being drawn, a trail that shrinks
     const auto& solution = m_document->solution();
-    if (!solution || m_follow || !(from <= m_time) || m_background.isNull() ||
-        m_movingPainted.isNull() || !(backgroundKey() == m_backgroundKey) || !m_stroke.empty() ||
-        m_dragVertex >= 0 || PinSet::of(m_document)->count() > 0) {
+    bool steady = solution && from <= m_time && !m_movingPainted.isNull() && m_stroke.empty() &&
+                  m_dragVertex < 0 && PinSet::of(m_document)->count() == 0;
+    QPoint shift; // [px] how far the scene's pixels move
+    if (steady && !m_follow) {
+        steady = !m_background.isNull() && backgroundKey() == m_backgroundKey;
+    } else if (steady) {
+        BackgroundKey key = backgroundKey();
+        key.centre = {};
+        // the centre snaps to the pixel grid: the scene moves by whole pixels, y up
+        const QPointF moved((centre.x() - m_centre.x()) * m_scale,
+                            (m_centre.y() - centre.y()) * m_scale);
+        shift = moved.toPoint();
+        steady = followsWithWorldLayer() && key == m_worldKey && !m_worldLayer.isNull() &&
+                 std::abs(moved.x() - shift.x()) < 1e-6 && std::abs(moved.y() - shift.y()) < 1e-6;
+    }
+    if (!steady) {
         update();
         return;
     }
-    QRegion dirty(m_movingPainted);
+    QRegion dirty;
+    if (!shift.isNull()) {
+        // Qt moves the pixels and repaints what they uncover; the scale bars stay put, and
+        // so do the rows at the area's edges, where the bands' antialiased lines reach in
+        const QRect area = drawingArea().toAlignedRect();
+        const QRect moving = area.adjusted(0, 3, 0, -3);
+        scroll(shift.x(), shift.y(), moving);
+        m_movingPainted.translate(shift);
+        dirty += QRegion(area) - moving;
+        dirty += m_vectors.scaleBarsBounds(m_document->scene().vectors, rect());
+    }
+    dirty += m_movingPainted;
     dirty += movingBounds(*solution, solution->at(m_time), from);
     dirty += QRect(0, 0, width(), topBandPx()); // the time read-out
     update(dirty);
 }
 
-void SceneCanvas::paintEvent(QPaintEvent*) {
+void SceneCanvas::paintEvent(QPaintEvent* e) {
     QPainter p(this);
     paintStaticLayer(p);
     p.setRenderHint(QPainter::Antialiasing, true);
@@ -103,7 +130,7 @@ void SceneCanvas::paintEvent(QPaintEvent*) {
         MotionSample now = solution->at(m_time);
         p.save();
         p.setClipRect(drawingArea());
-        paintTrails(p, now);
+        paintTrails(p, now, e->region() & drawingArea().toAlignedRect());
         paintPinnedRuns(p, *PinSet::of(m_document), worldTransform(), m_time, QPointF(10, 42));
         const SystemSpec& spec = solution->scene().system;
         const QTransform world = worldTransform();
@@ -118,7 +145,7 @@ void SceneCanvas::paintEvent(QPaintEvent*) {
             body({now.vak.x, now.vak.y, now.vak.phi}, m_style.vakonomic(), true);
         p.restore();
         m_vectors.paint(p, solution, m_document->scene().vectors, now, worldTransform(), m_scale,
-                        rect());
+                        rect(), e->region());
         paintTimeReadout(p, solution->tEnd());
         m_movingPainted = movingBounds(*solution, now, m_time);
     } else {

@@ -20,6 +20,13 @@ QPointF scaleBarsCorner(const QRectF& area) {
     return area.bottomRight() - QPointF(10, 70);
 }
 
+// a box around the scale bars stacked up from corner: a row of 18 px each, its bar at most
+// 110 + 2 x 80 px left of the corner (paintScaleBars)
+QRect scaleBarsBox(QPointF corner, int rows) {
+    return QRectF(corner - QPointF(320, 18.0 * rows + 12), corner + QPointF(12, 12))
+        .toAlignedRect();
+}
+
 double extentOf(const Solution& s) {
     return std::max(bodyExtent(s.scene().system, s.system()), 1e-3);
 }
@@ -84,7 +91,8 @@ bool VectorLayer::shapes(const std::shared_ptr<const Solution>& solution,
 
 void VectorLayer::paint(QPainter& p, const std::shared_ptr<const Solution>& solution,
                         const VectorOverlay& overlay, const MotionSample& now,
-                        const QTransform& world, double pixelsPerMetre, const QRectF& area) {
+                        const QTransform& world, double pixelsPerMetre, const QRectF& area,
+                        const QRegion& repainted) {
     m_controlled = {};
     m_free = {};
     VectorScales k{};
@@ -92,7 +100,16 @@ void VectorLayer::paint(QPainter& p, const std::shared_ptr<const Solution>& solu
         return;
     paintVectorShapes(p, m_free, false);
     paintVectorShapes(p, m_controlled, true);
-    paintScaleBars(p, overlay, k, pixelsPerMetre, scaleBarsCorner(area));
+    // the scale bars stay put: a frame that repaints what moves need not draw them
+    if (repainted.intersects(scaleBarsBounds(overlay, area)))
+        paintScaleBars(p, overlay, k, pixelsPerMetre, scaleBarsCorner(area));
+}
+
+QRect VectorLayer::scaleBarsBounds(const VectorOverlay& overlay, const QRectF& area) const {
+    int rows = 0;
+    for (int i = 0; i < kVectorKinds; ++i)
+        rows += (overlay.*vectorToggle(VectorKind(i))).shown ? 1 : 0;
+    return rows > 0 ? scaleBarsBox(scaleBarsCorner(area), rows) : QRect();
 }
 
 QRectF VectorLayer::bounds(const std::shared_ptr<const Solution>& solution,

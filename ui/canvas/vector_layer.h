@@ -3,6 +3,7 @@
 #include "scene/solution.h"
 
 #include <QRectF>
+#include <QRegion>
 
 #include <memory>
 
@@ -14,14 +15,18 @@ namespace chaplygin::ui {
 /// and so do the forces, so that they compare).
 class VectorLayer {
   public:
+    /// Draws the arrows and, where they meet repainted, the scale bars in the corner of area.
     void paint(QPainter& painter, const std::shared_ptr<const Solution>& solution,
                const VectorOverlay& overlay, const MotionSample& now, const QTransform& world,
-               double pixelsPerMetre, const QRectF& area);
+               double pixelsPerMetre, const QRectF& area, const QRegion& repainted);
 
     /// The box [px] of the arrows, arcs and labels paint draws for now (empty when none); the
     /// scale bars stay put.
     QRectF bounds(const std::shared_ptr<const Solution>& solution, const VectorOverlay& overlay,
                   const MotionSample& now, const QTransform& world) const;
+
+    /// The box [px] of the scale bars paint draws in the corner of area (empty when none).
+    QRect scaleBarsBounds(const VectorOverlay& overlay, const QRectF& area) const;
 
     /// The effective scales (the scene's, else automatic) for a solution.
     VectorScales scales(const std::shared_ptr<const Solution>& solution,
