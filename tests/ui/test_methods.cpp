@@ -10,6 +10,7 @@
 #include "shell/playback.h"
 
 #include <QAction>
+#include <QElapsedTimer>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QStandardPaths>
@@ -62,6 +63,7 @@ class TestMethods : public QObject {
     void cancelStopsCatenarySweep();
     void sceneChangeCancelsSweep();
     void accuracyReadoutOnCircleAndCatenary();
+    void accuracyReadoutRefreshesAtAMetersPace();
     void galleryRefusedEntryKeepsScene();
     void galleryAcceptedEntryShowsExplanation();
 
@@ -166,13 +168,32 @@ void TestMethods::accuracyReadoutOnCircleAndCatenary() {
 
     load("catenary");
     m_window->playback()->seek(2);
-    // the readout follows the playback time within a frame
+    // the readout follows the playback time within a quarter second
     QTRY_COMPARE(readout->values().t, 2.0);
     const AccuracyValues& v = readout->values();
     QVERIFY2(v.trackingResidual <= 1e-9, qPrintable(QString::number(v.trackingResidual)));
     QVERIFY(!v.paperError);
     QVERIFY(v.controlledDrift && *v.controlledDrift <= 1e-12);
     QVERIFY(readout->modelsText().contains(QLatin1String("quadrature")));
+}
+
+void TestMethods::accuracyReadoutRefreshesAtAMetersPace() {
+    // during playback the read-out takes the latest time a few times a second, not every frame:
+    // frames 16 ms apart change nothing until a quarter second has passed
+    load("circle");
+    AccuracyReadout* readout = m_window->accuracyReadout();
+    readout->setTime(0.5);
+    QTRY_COMPARE(readout->values().t, 0.5);
+    QElapsedTimer clock;
+    clock.start();
+    for (double t : {1.0, 1.5, 2.0}) {
+        readout->setTime(t);
+        QTest::qWait(16);
+    }
+    if (clock.elapsed() < 200) // a slow machine may reach the refresh within the frames
+        QCOMPARE(readout->values().t, 0.5);
+    QTRY_COMPARE(readout->values().t, 2.0);
+    QVERIFY2(clock.elapsed() >= 200, qPrintable(QString::number(clock.elapsed())));
 }
 
 void TestMethods::galleryRefusedEntryKeepsScene() {

@@ -15,7 +15,10 @@ namespace chaplygin::ui {
 
 namespace {
 
-constexpr int kFrameMs = 16;
+// The read-out changes at most four times a second, as a meter's display does: faster digits
+// cannot be read, and each change of its word-wrapped values lays out the dock (a twelfth of an
+// animation frame at 1920 x 1080, docs/numerics.md §7).
+constexpr int kRefreshMs = 250;
 
 // the path's own point at the arc length s, looked up independently of the time law
 double distanceFromPath(const Path& path, const MotionSample& m) {
@@ -88,9 +91,9 @@ AccuracyReadout::AccuracyReadout(SceneDocument* document, QWidget* parent)
     layout->addWidget(m_models);
     layout->addStretch(1);
 
-    m_frame.setSingleShot(true);
-    m_frame.setInterval(kFrameMs);
-    connect(&m_frame, &QTimer::timeout, this, &AccuracyReadout::refresh);
+    m_refresh.setSingleShot(true);
+    m_refresh.setInterval(kRefreshMs);
+    connect(&m_refresh, &QTimer::timeout, this, &AccuracyReadout::refresh);
     connect(m_document, &SceneDocument::solutionChanged, this, &AccuracyReadout::onSolutionChanged);
     if (m_document->solution())
         onSolutionChanged();
@@ -106,8 +109,8 @@ QString AccuracyReadout::modelsText() const {
 
 void AccuracyReadout::setTime(double t) {
     m_t = t;
-    if (!m_frame.isActive())
-        m_frame.start();
+    if (!m_refresh.isActive())
+        m_refresh.start();
 }
 
 void AccuracyReadout::setNote(const QString& title, const QString& text, bool warning) {
@@ -141,7 +144,7 @@ void AccuracyReadout::onSolutionChanged() {
 }
 
 void AccuracyReadout::refresh() {
-    m_frame.stop();
+    m_refresh.stop();
     const auto& solution = m_document->solution();
     if (!solution)
         return;

@@ -58,7 +58,7 @@ class AccuracyReadout : public QWidget {
     QLabel* m_controlledDrift;
     QLabel* m_freeDrift;
     QLabel* m_models;
-    QTimer m_frame;
+    QTimer m_refresh;
     double m_t = 0;
     double m_controlledT0 = 0, m_freeT0 = 0;
     AccuracyValues m_values;
