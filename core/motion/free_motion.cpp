@@ -12,11 +12,21 @@ namespace {
 
 constexpr double kTailTau = 40.0; // sech(40) < 1e-17
 
-// sinh(x)/cosh(c + x) without overflow for any x and without cancellation for small x
-double sinhOverCosh(double x, double c) {
-    if (x >= 0)
-        return -std::expm1(-2 * x) / (std::exp(c) + std::exp(-c - 2 * x));
-    return std::expm1(2 * x) / (std::exp(c + 2 * x) + std::exp(-c));
+// e^y and e^y - 1 for y <= 0: expm1 only where e^y - 1 would cancel (e^-0.7 ~ 0.5)
+void expAndExpm1(double y, double* e, double* em) {
+    *e = std::exp(y);
+    *em = y > -0.7 ? std::expm1(y) : *e - 1;
+}
+
+// sinh(x)/cosh(c + x) without overflow for any x and without cancellation for small x, given
+// e^c and e^-c (one exponential per call; |c| <= 300 keeps both finite)
+double sinhOverCosh(double x, double c, double expC, double expMinusC) {
+    double e, em;
+    expAndExpm1(-2 * std::fabs(x), &e, &em);
+    if (std::fabs(c) > 300)
+        return x >= 0 ? -em / (std::exp(c) + std::exp(-c - 2 * x))
+                      : em / (std::exp(c + 2 * x) + std::exp(-c));
+    return x >= 0 ? -em / (expC + expMinusC * e) : em / (expC * e + expMinusC);
 }
 
 } // namespace
@@ -42,6 +52,8 @@ FreeMotion::FreeMotion(const DerivedSystem& system, const FreeInitial& initial, 
     // tanh c = sdot0/V and sech c = b|phidot0|/V, so sinh c = sdot0/(b|phidot0|): well conditioned
     // even when sdot0/V rounds to 1 (tiny curvature), where atanh(sdot0/V) is not
     m_c = std::asinh(initial.sdot / (b * std::fabs(initial.phidot)));
+    m_expC = std::exp(m_c);
+    m_expMinusC = std::exp(-m_c);
     m_sigma = initial.phidot > 0 ? 1.0 : -1.0;
     m_beta = b / a;
     // past the tail the heading differs from its limit by |beta| 2 e^-|tau|; the position by
@@ -124,8 +136,9 @@ void FreeMotion::velocities(double t, double* sdot, double* phidot, double* phi)
         // e = exp(-|tau|), em = e - 1: tanh|tau| = -em (2 + em)/(1 + e^2) keeps its digits for
         // small tau, sech tau = 2e/(1 + e^2) for large tau (1 + em would lose e's); the heading
         // from turn(t), which does not cancel
-        const double tau = m_k * t + m_c, em = std::expm1(-std::fabs(tau)),
-                     e = std::exp(-std::fabs(tau));
+        const double tau = m_k * t + m_c;
+        double e, em;
+        expAndExpm1(-std::fabs(tau), &e, &em);
         const double inv = 1 / (1 + e * e), sign = tau < 0 ? -1.0 : 1.0;
         *sdot = sign * m_v * (-em * (2 + em)) * inv;
         *phidot = m_sigma * (m_v / b) * (2 * e * inv);
@@ -222,7 +235,8 @@ double FreeMotion::turn(double t) const {
     case Case::General:
         // gd(kt + c) - gd(c) = 2 atan(sinh(kt/2)/cosh(c + kt/2)): no cancellation when beta is
         // large (tiny a) or c is large (tiny curvature)
-        return m_sigma * m_beta * 2 * std::atan(sinhOverCosh(0.5 * m_k * t, m_c));
+        return m_sigma * m_beta * 2 *
+               std::atan(sinhOverCosh(0.5 * m_k * t, m_c, m_expC, m_expMinusC));
     }
     return 0;
 }

@@ -59,7 +59,8 @@ class FreeMotion {
     double m_horizon;
     Case m_case = Case::General;
     double m_v = 0, m_k = 0, m_c = 0, m_sigma = 1, m_beta = 0;
-    double m_tail = 0; // time after which the heading is constant
+    double m_expC = 1, m_expMinusC = 1; // e^c, e^-c
+    double m_tail = 0;                  // time after which the heading is constant
     std::vector<double> m_panelT;
     std::vector<std::complex<double>> m_panelZ;
     // per panel: Chebyshev coefficients of z - z(panel start) in the panel's local variable
