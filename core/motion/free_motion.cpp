@@ -164,20 +164,20 @@ FreeState FreeMotion::at(double t) const {
     velocities(t, &st.sdot, &st.phidot, &st.phi);
     st.energy = 0.5 * m_sys.mass * (st.sdot * st.sdot + m_sys.b * m_sys.b * st.phidot * st.phidot);
     std::complex<double> z0(m_init.x, m_init.y), z;
-    const std::complex<double> dir0(std::cos(m_init.phi), std::sin(m_init.phi));
+    auto dir0 = [this] { return std::complex<double>(std::cos(m_init.phi), std::sin(m_init.phi)); };
     switch (m_case) {
     case Case::Rest:
         z = z0;
         break;
     case Case::Line:
-        z = z0 + m_init.sdot * t * dir0;
+        z = z0 + m_init.sdot * t * dir0();
         break;
     case Case::Circle: {
         // z = z0 + sdot/(i omega) (e^{i omega t} - 1) e^{i phi0}, with e^{i th} - 1 = -2
         // sin^2(th/2) + i sin th
         double th = m_init.phidot * t, s = std::sin(0.5 * th);
         std::complex<double> em1(-2 * s * s, std::sin(th));
-        z = z0 + m_init.sdot / m_init.phidot * std::complex<double>(0, -1) * em1 * dir0;
+        z = z0 + m_init.sdot / m_init.phidot * std::complex<double>(0, -1) * em1 * dir0();
         break;
     }
     case Case::General: {
