@@ -195,6 +195,14 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
                     stiffRef, halvingBudget, {},      0};
     Certifier certifier{
         c, piecewise, lengthScale, m_ends.start ? u0 : NAN, m_ends.end ? u1 : NAN, 0, {}, {}, {}};
+    // interpolants on the refined panels, split where they cannot be certified, within what the
+    // refinement left of the budget; the halvings of both are counted in refiner.splits
+    auto certifyRefined = [&] {
+        certifier.halvingsLeft = halvingBudget - std::min(halvingBudget, refiner.splits);
+        for (const PanelData& d : refiner.leaves)
+            certifier.certify(d, 0, INFINITY);
+        refiner.splits = halvingBudget - certifier.halvingsLeft;
+    };
     if (piecewise && !uniformAtGaussNodes(initial)) {
         // the knot intervals of a spline: each is certified as it is, and refined only where
         // that fails
@@ -206,29 +214,20 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
                 continue;
             refiner.leaves.clear();
             refiner.refine(p, 0);
-            certifier.halvingsLeft = halvingBudget - std::min(halvingBudget, refiner.splits);
-            for (const PanelData& d : refiner.leaves)
-                certifier.certify(d, 0, INFINITY);
-            refiner.splits = halvingBudget - certifier.halvingsLeft; // the certifier's count too
+            certifyRefined();
         }
-        m_halvings = refiner.splits;
     } else {
         refiner.leaves.reserve(2 * initial.size());
         for (const PanelData& p : initial)
             refiner.refine(p, 0);
-        m_halvings = refiner.splits;
-        // interpolants on every panel of a curve that is not a line or a circle, split where
-        // they cannot be certified
+        // a line or a circle needs no interpolants
         if (!uniformAtGaussNodes(refiner.leaves)) {
-            certifier.halvingsLeft = halvingBudget - std::min(halvingBudget, refiner.splits);
-            const std::size_t certifierBudget = certifier.halvingsLeft;
             certifier.leaves.reserve(refiner.leaves.size());
             certifier.cheb.reserve(refiner.leaves.size());
-            for (const PanelData& d : refiner.leaves)
-                certifier.certify(d, 0, INFINITY);
-            m_halvings += certifierBudget - certifier.halvingsLeft;
+            certifyRefined();
         }
     }
+    m_halvings = refiner.splits;
     m_cheb = std::move(certifier.cheb);
     m_bounds = certifier.bounds;
     const auto& leaves = m_cheb.empty() ? refiner.leaves : certifier.leaves;
