@@ -24,7 +24,7 @@ double solveXi(const TimeLaw::TimePanel& p, double tau, double D) {
     xi = std::clamp(xi, lo, hi);
     for (int iter = 0; iter < 60; ++iter) {
         double fr[2];
-        cheb::evaluateMany(p.c, xi, fr);
+        cheb::evaluateMany(p.c, xi, fr, p.rows);
         const double f = fr[0] - tau;
         (f > 0 ? hi : lo) = xi;
         const double step = f / fr[1];
@@ -109,28 +109,34 @@ void TimeLaw::buildPanel(int piece, int k, TimePanel& tp) const {
         return;
     const bool energy = m_params.mode == SpeedMode::Energy;
     const double b2 = m_params.system.b * m_params.system.b, invSpeed = 1 / m_params.speed;
-    // dt/dxi at the Chebyshev points, its interpolant, and the interpolant's integral
-    std::array<double, cheb::kPoints> r, a;
-    for (int j = 0; j < cheb::kPoints; ++j) {
+    // dt/dxi at the Chebyshev points of the panel's degree, its interpolant, and the
+    // interpolant's integral
+    const int n = cp.degree;
+    std::array<std::array<double, 1>, cheb::kPoints> r, a;
+    for (int j = 0; j <= n; ++j) {
         const double kappa = cp.kappa[j];
-        r[j] = cp.dsdxi[j] * invSpeed * (energy ? std::sqrt(1 + b2 * kappa * kappa) : 1.0);
+        r[j][0] = cp.dsdxi[j] * invSpeed * (energy ? std::sqrt(1 + b2 * kappa * kappa) : 1.0);
     }
-    cheb::coefficients(r.data(), a.data());
-    std::array<double, cheb::kPoints + 1> F;
-    cheb::integrate(a.data(), cheb::kPoints, F.data());
+    cheb::coefficientsMany(r.data(), n, a.data());
+    std::array<double, cheb::kPoints> coef{};
+    for (int j = 0; j <= n; ++j)
+        coef[j] = a[j][0];
+    std::array<double, cheb::kPoints + 1> F{};
+    cheb::integrate(coef.data(), n + 1, F.data());
     double duration = 0;
-    for (int j = 0; j <= cheb::kPoints; ++j) {
+    for (int j = 0; j <= n + 1; ++j) {
         tp.c[j][0] = F[j];
-        tp.c[j][1] = j < cheb::kPoints ? a[j] : 0.0;
+        tp.c[j][1] = j <= n ? coef[j] : 0.0;
         duration += F[j]; // T_k(1) = 1
     }
-    tp.rateStart = r[cheb::kDegree];
-    tp.rateEnd = r[0];
+    tp.rows = n + 2;
+    tp.rateStart = r[n][0];
+    tp.rateEnd = r[0][0];
     // \int |r - p| dxi <= 2 max |r - p|, estimated as twice the tail; and the integral over the
     // panel against the Gauss rule on the exact values (the node times)
     const double gaussDuration = m_nodeTimes[piece][k + 1] - m_nodeTimes[piece][k];
-    const double bound = std::max(4 * cheb::tailEstimate(a.data(), cheb::kPoints),
-                                  std::fabs(duration - gaussDuration));
+    const double bound =
+        std::max(4 * cheb::tailEstimate(coef.data(), n + 1), std::fabs(duration - gaussDuration));
     tp.bound = bound;
     // the node times themselves are rounded to a few ulps of t
     const double floor = 8 * 2.220446049250313e-16 * std::fabs(m_nodeTimes[piece][k + 1]);
@@ -213,7 +219,7 @@ double TimeLaw::timeAt(int piece, double u) const {
     if (!p.panel)
         return timeAtExact(piece, u);
     double f[2];
-    cheb::evaluateMany(p.panel->c, p.xi, f);
+    cheb::evaluateMany(p.panel->c, p.xi, f, p.panel->rows);
     return m_nodeTimes[piece][p.index] + f[0];
 }
 

@@ -56,8 +56,9 @@ class TimeLaw {
     /// Per panel: coefficients c[k][0] of t - t(panel start) and c[k][1] of dt/dxi.
     struct TimePanel {
         std::array<std::array<double, 2>, cheb::kPoints + 1> c{};
-        double rateStart = 0, rateEnd = 0; ///< dt/dxi at xi = -1 and 1
-        double bound = 0;                  ///< error bound of t over the panel [s]
+        std::size_t rows = cheb::kPoints + 1; ///< the coefficients in use (the rest are zero)
+        double rateStart = 0, rateEnd = 0;    ///< dt/dxi at xi = -1 and 1
+        double bound = 0;                     ///< error bound of t over the panel [s]
         bool certified = false;
     };
     /// Whether a Curve piece has interpolated panels (not closed form, not a pivot).

@@ -7,20 +7,27 @@
 namespace chaplygin::cheb {
 namespace {
 
+// c = dct * f for degree n, row-major (n + 1) x (n + 1)
+template <int n> std::array<double, (n + 1) * (n + 1)> dctOf() {
+    std::array<double, (n + 1) * (n + 1)> m;
+    for (int k = 0; k <= n; ++k)
+        for (int j = 0; j <= n; ++j) {
+            double w = (j == 0 || j == n) ? 0.5 : 1.0;
+            double v = (k == 0 || k == n) ? 0.5 : 1.0;
+            m[k * (n + 1) + j] =
+                2.0 / n * w * v * std::cos(std::numbers::pi * ((j * k) % (2 * n)) / n);
+        }
+    return m;
+}
+
 struct Tables {
     std::array<double, kPoints> x;
-    std::array<std::array<double, kPoints>, kPoints> dct; // c = dct * f
+    std::array<double, kPoints* kPoints> dct = dctOf<kDegree>();
+    std::array<double, (kLowDegree + 1) * (kLowDegree + 1)> dctLow = dctOf<kLowDegree>();
     Tables() {
         for (int j = 0; j < kPoints; ++j)
             x[j] = std::cos(std::numbers::pi * j / kDegree);
         x[kDegree / 2] = 0; // exactly
-        for (int k = 0; k < kPoints; ++k)
-            for (int j = 0; j < kPoints; ++j) {
-                double w = (j == 0 || j == kDegree) ? 0.5 : 1.0;
-                double v = (k == 0 || k == kDegree) ? 0.5 : 1.0;
-                dct[k][j] = 2.0 / kDegree * w * v *
-                            std::cos(std::numbers::pi * ((j * k) % (2 * kDegree)) / kDegree);
-            }
     }
 };
 
@@ -35,12 +42,16 @@ const std::array<double, kPoints>& points() {
     return tables().x;
 }
 
+const double* transform(int degree) {
+    return degree == kLowDegree ? tables().dctLow.data() : tables().dct.data();
+}
+
 void coefficients(const double* values, double* coeffs) {
     const auto& m = tables().dct;
     for (int k = 0; k < kPoints; ++k) {
         double s = 0;
         for (int j = 0; j < kPoints; ++j)
-            s += m[k][j] * values[j];
+            s += m[k * kPoints + j] * values[j];
         coeffs[k] = s;
     }
 }

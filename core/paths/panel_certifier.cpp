@@ -11,34 +11,54 @@ constexpr int kMaxCertifyDepth = 6; // further halvings of a panel whose interpo
 constexpr double kEps = 2.220446049250313e-16;
 constexpr double kRateTolerance = 1e-13; // as TimeLaw's bound on t over a panel
 
-double maxAbs(const std::array<double, cheb::kPoints>& v) {
-    double m = 0;
-    for (double x : v)
-        m = std::max(m, std::fabs(x));
-    return m;
-}
+// The exact geometry at the degree-kDegree Chebyshev points of a panel, each evaluated on first
+// use: a panel tried at kLowDegree and then at kDegree evaluates the curve once per point.
+struct Samples {
+    std::array<CurvePoint, cheb::kPoints> point;
+    std::array<CurveGeometry, cheb::kPoints> geometry;
+    std::array<bool, cheb::kPoints> done{};
+};
 
-// The interpolants of one panel and their error bounds: the larger of twice the coefficient
-// tail and the largest deviation from the exact values at the panel's 8 Gauss nodes (points
-// the interpolant was not built from). Returns the largest ratio of a bound to its tolerance
-// (certified when <= 1); `bound` receives this panel's bounds.
-double interpolate(const Curve& c, bool piecewise, const PanelData& d, double lengthScale,
-                   PathTable::ChebPanel& out, PathTable::Bounds& bound) {
-    using Q = PathTable::Quantity;
-    constexpr int N = cheb::kDegree;
-    const auto& xs = cheb::points();
-    const double half = 0.5 * (d.b - d.a), mid = 0.5 * (d.a + d.b);
-    std::array<std::array<double, cheb::kPoints>, PathTable::kQuantities> v{};
+void sampleAt(const Curve& c, bool piecewise, const PanelData& d, int j, Samples& s) {
+    if (s.done[j])
+        return;
     // a curve evaluates a breakpoint with the piece that starts there; the panel's end takes
     // the piece it ends (one ulp inside), so a jump in a derivative stays outside the panel
     const double end = piecewise ? std::nextafter(d.b, d.a) : d.b;
+    const double u =
+        j == cheb::kDegree
+            ? d.a
+            : (j == 0 ? end : 0.5 * (d.a + d.b) + 0.5 * (d.b - d.a) * cheb::points()[j]);
+    s.geometry[j] = checkedGeometry(c, u, &s.point[j]);
+    s.done[j] = true;
+}
+
+// The interpolants of one panel at `degree` and their error bounds: the larger of twice the
+// coefficient tail and the largest deviation from the exact values at the panel's 8 Gauss nodes
+// (points the interpolant was not built from). Returns the largest ratio of a bound to its
+// tolerance (certified when <= 1); `bound` receives this panel's bounds and `stiffBound` the
+// error bound of the stiff time-law integrand's interpolant (PanelData::stiff).
+double interpolate(const Curve& c, bool piecewise, const PanelData& d, double lengthScale,
+                   int degree, Samples& samples, PathTable::ChebPanel& out,
+                   PathTable::Bounds& bound, double& stiffBound) {
+    using Q = PathTable::Quantity;
+    // the series transformed together: the quantities, and the time-law integrands for b of the
+    // path's size (rate) and kStiffScale times it (stiff)
+    enum Column { cX, cY, cPhi, cKappa, cDkappa, cSpeed, cRate, cStiff, cColumns };
+    const int n = degree, stride = cheb::kDegree / degree;
+    const double half = 0.5 * (d.b - d.a), L = lengthScale;
+    out = {};
+    out.degree = degree;
+    std::array<std::array<double, cColumns>, cheb::kPoints> v; // [i][column] at cos(pi i/n)
     double prevPhi = 0, kappaNoise = 0, dkappaNoise = 0;
-    for (int j = N; j >= 0; --j) { // from the panel's start (xi = -1) so phi unwraps in order
-        double u = j == N ? d.a : (j == 0 ? end : mid + half * xs[j]);
-        CurvePoint p;
-        CurveGeometry g = checkedGeometry(c, u, &p);
+    double maxX = 0, maxY = 0, maxPhi = 0, kappaMax = 0, dkappaMax = 0;
+    for (int i = n; i >= 0; --i) { // from the panel's start (xi = -1) so phi unwraps in order
+        const int j = i * stride;
+        sampleAt(c, piecewise, d, j, samples);
+        const CurvePoint& p = samples.point[j];
+        const CurveGeometry& g = samples.geometry[j];
         double phi = g.heading;
-        if (j != N)
+        if (i != n)
             phi += 2 * std::numbers::pi * std::round((prevPhi - phi) / (2 * std::numbers::pi));
         prevPhi = phi;
         // rounding in kappa and dkappa/ds: the size of the terms that cancel in them
@@ -51,32 +71,53 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
                          (std::fabs(p.dx * p.dddy) + std::fabs(p.dy * p.dddx) +
                           3 * nTerms * (std::fabs(p.dx * p.ddx) + std::fabs(p.dy * p.ddy)) / dd) /
                          (d15 * std::sqrt(dd)));
-        v[Q::kX][j] = p.x;
-        v[Q::kY][j] = p.y;
-        v[Q::kPhi][j] = phi;
-        v[Q::kKappa][j] = g.kappa;
-        v[Q::kDkappa][j] = g.dkappa;
-        v[Q::kSpeed][j] = g.speed;
-        out.dsdxi[j] = half * g.speed;
-        out.kappa[j] = g.kappa;
+        const double ds = half * g.speed, lk = L * g.kappa;
+        v[i] = {p.x,
+                p.y,
+                phi,
+                g.kappa,
+                g.dkappa,
+                g.speed,
+                ds * std::sqrt(1 + lk * lk),
+                ds * std::sqrt(1 + kStiffScale * kStiffScale * lk * lk)};
+        out.dsdxi[i] = ds;
+        out.kappa[i] = g.kappa;
+        maxX = std::max(maxX, std::fabs(p.x));
+        maxY = std::max(maxY, std::fabs(p.y));
+        maxPhi = std::max(maxPhi, std::fabs(phi));
+        kappaMax = std::max(kappaMax, std::fabs(g.kappa));
+        dkappaMax = std::max(dkappaMax, std::fabs(g.dkappa));
     }
-    std::array<std::array<double, cheb::kPoints + 1>, PathTable::kQuantities> coef{};
-    for (int q : {Q::kX, Q::kY, Q::kPhi, Q::kKappa, Q::kDkappa, Q::kSpeed})
-        cheb::coefficients(v[q].data(), coef[q].data());
-    std::array<double, cheb::kPoints> dsdxiCoef;
-    cheb::coefficients(out.dsdxi.data(), dsdxiCoef.data());
-    cheb::integrate(dsdxiCoef.data(), cheb::kPoints, coef[Q::kS].data());
-    for (int k = 0; k <= cheb::kPoints; ++k)
-        for (int q = 0; q < PathTable::kQuantities; ++q)
-            out.c[k][q] = coef[q][k];
+    std::array<std::array<double, cColumns>, cheb::kPoints> coef;
+    cheb::coefficientsMany(v.data(), n, coef.data());
+    std::array<double, cheb::kPoints> dsdxiCoef{}, rateCoef{};
+    for (int k = 0; k <= n; ++k) {
+        out.c[k][Q::kX] = coef[k][cX];
+        out.c[k][Q::kY] = coef[k][cY];
+        out.c[k][Q::kPhi] = coef[k][cPhi];
+        out.c[k][Q::kKappa] = coef[k][cKappa];
+        out.c[k][Q::kDkappa] = coef[k][cDkappa];
+        out.c[k][Q::kSpeed] = coef[k][cSpeed];
+        dsdxiCoef[k] = half * coef[k][cSpeed];
+        rateCoef[k] = coef[k][cRate];
+    }
+    std::array<double, cheb::kPoints + 1> sCoef{}, rateIntegral{};
+    cheb::integrate(dsdxiCoef.data(), n + 1, sCoef.data());
+    for (int k = 0; k <= n + 1; ++k)
+        out.c[k][Q::kS] = sCoef[k];
 
-    auto tail = [&](int q) { return 2 * cheb::tailEstimate(coef[q].data(), cheb::kPoints); };
-    double ePos = std::max(tail(Q::kX), tail(Q::kY)), ePhi = tail(Q::kPhi),
-           eKappa = tail(Q::kKappa), eDkappa = tail(Q::kDkappa);
-    double eS = 2 * half * cheb::tailEstimate(dsdxiCoef.data(), cheb::kPoints);
+    auto tail = [&](int column) {
+        return 2 * std::max({std::fabs(coef[n][column]), std::fabs(coef[n - 1][column]),
+                             std::fabs(coef[n - 2][column])});
+    };
+    double ePos = std::max(tail(cX), tail(cY)), ePhi = tail(cPhi), eKappa = tail(cKappa),
+           eDkappa = tail(cDkappa);
+    // s integrates ds/dxi = half ds/du over at most 2 in xi
+    double eS = 2 * half * tail(cSpeed);
+    const std::size_t rows = static_cast<std::size_t>(n) + 2;
     for (int i = 0; i < gauss::kPoints; ++i) {
         double f[PathTable::kQuantities];
-        cheb::evaluateMany(out.c, gauss::kNodes[i], f);
+        cheb::evaluateMany(out.c, gauss::kNodes[i], f, rows);
         const CurvePoint& p = d.points[i];
         CurveGeometry g = geometryOf(p);
         double dphi = g.heading - f[Q::kPhi];
@@ -86,33 +127,27 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
         eKappa = std::max(eKappa, std::fabs(f[Q::kKappa] - g.kappa));
         eDkappa = std::max(eDkappa, std::fabs(f[Q::kDkappa] - g.dkappa));
     }
-    double f[PathTable::kQuantities];
-    cheb::evaluateMany(out.c, 1.0, f);
-    eS = std::max(eS, std::fabs(f[Q::kS] - d.length)); // against the Gauss rule's panel length
+    double sEnd = 0; // s - s(panel start) at xi = 1: the sum of its coefficients
+    for (int k = 0; k <= n + 1; ++k)
+        sEnd += sCoef[k];
+    eS = std::max(eS, std::fabs(sEnd - d.length)); // against the Gauss rule's panel length
 
-    const double L = lengthScale;
-    const double kappaMax = maxAbs(v[Q::kKappa]);
-    const double tolPos =
-        std::max({2e-15 * L, 8 * kEps * maxAbs(v[Q::kX]), 8 * kEps * maxAbs(v[Q::kY])});
-    const double tolPhi = std::max(1e-14, 8 * kEps * maxAbs(v[Q::kPhi]));
+    const double tolPos = std::max({2e-15 * L, 8 * kEps * maxX, 8 * kEps * maxY});
+    const double tolPhi = std::max(1e-14, 8 * kEps * maxPhi);
     const double tolKappa = std::max({1e-14 / L, 1e-13 * kappaMax, kappaNoise});
-    const double tolDkappa = std::max(
-        {1e-14 / (L * L), 1e-13 * kappaMax / L, 1e-12 * maxAbs(v[Q::kDkappa]), dkappaNoise});
+    const double tolDkappa =
+        std::max({1e-14 / (L * L), 1e-13 * kappaMax / L, 1e-12 * dkappaMax, dkappaNoise});
     // the time law's integrand for b of the path's size, |r'| sqrt(1 + (L kappa)^2), is
     // resolved as well (larger b may leave panels to exact evaluation, TimeLaw)
-    std::array<double, cheb::kPoints> rate, rateCoef;
-    std::array<double, cheb::kPoints + 1> rateIntegral;
-    for (int j = 0; j < cheb::kPoints; ++j)
-        rate[j] = out.dsdxi[j] * std::hypot(1.0, L * out.kappa[j]);
-    cheb::coefficients(rate.data(), rateCoef.data());
-    cheb::integrate(rateCoef.data(), cheb::kPoints, rateIntegral.data());
+    cheb::integrate(rateCoef.data(), n + 1, rateIntegral.data());
     double rateSum = 0; // the integral over the panel
-    for (double a : rateIntegral)
-        rateSum += a;
+    for (int k = 0; k <= n + 1; ++k)
+        rateSum += rateIntegral[k];
     const double tolS = std::max(2e-15 * L, 1e-14 * d.length);
-    const double score = std::max(
-        {ePos / tolPos, ePhi / tolPhi, eKappa / tolKappa, eDkappa / tolDkappa, eS / tolS,
-         4 * cheb::tailEstimate(rateCoef.data(), cheb::kPoints) / (kRateTolerance * rateSum)});
+    const double score =
+        std::max({ePos / tolPos, ePhi / tolPhi, eKappa / tolKappa, eDkappa / tolDkappa, eS / tolS,
+                  2 * tail(cRate) / (kRateTolerance * rateSum)});
+    stiffBound = 2 * tail(cStiff);
     out.certified = score <= 1;
     out.bound = score;
     bound.position = ePos;
@@ -144,18 +179,19 @@ void Certifier::keep(const PanelData& d, const PathTable::ChebPanel& panel,
 bool Certifier::acceptWhole(const PanelData& d, double stiffTolerance) {
     if (d.a == cuspStart || d.b == cuspEnd)
         return false;
-    PathTable::ChebPanel panel;
-    PathTable::Bounds b;
-    if (interpolate(curve, piecewise, d, lengthScale, panel, b) > 1)
-        return false;
-    std::array<double, cheb::kPoints> stiff, stiffCoef;
-    for (int j = 0; j < cheb::kPoints; ++j)
-        stiff[j] = panel.dsdxi[j] * std::hypot(1.0, kStiffScale * lengthScale * panel.kappa[j]);
-    cheb::coefficients(stiff.data(), stiffCoef.data());
-    if (4 * cheb::tailEstimate(stiffCoef.data(), cheb::kPoints) > stiffTolerance)
-        return false;
-    keep(d, panel, b);
-    return true;
+    Samples samples;
+    for (int degree : {cheb::kLowDegree, cheb::kDegree}) {
+        PathTable::ChebPanel panel;
+        PathTable::Bounds b;
+        double stiffBound = 0;
+        if (interpolate(curve, piecewise, d, lengthScale, degree, samples, panel, b, stiffBound) <=
+                1 &&
+            stiffBound <= stiffTolerance) {
+            keep(d, panel, b);
+            return true;
+        }
+    }
+    return false;
 }
 
 void Certifier::certify(const PanelData& d, int depth, double parentScore) {
@@ -166,7 +202,13 @@ void Certifier::certify(const PanelData& d, int depth, double parentScore) {
         return;
     }
     PathTable::Bounds b;
-    double score = interpolate(curve, piecewise, d, lengthScale, panel, b);
+    Samples samples;
+    double stiffBound = 0;
+    double score = interpolate(curve, piecewise, d, lengthScale, cheb::kLowDegree, samples, panel,
+                               b, stiffBound);
+    if (score > 1)
+        score = interpolate(curve, piecewise, d, lengthScale, cheb::kDegree, samples, panel, b,
+                            stiffBound);
     bool noise = score > 1 && depth > 0 && score > 0.25 * parentScore;
     if (score <= 1 || noise || depth >= kMaxCertifyDepth || halvingsLeft == 0) {
         panel.certified = score <= 1 || noise;

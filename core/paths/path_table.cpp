@@ -373,7 +373,7 @@ PathNode PathTable::interpolatedAt(int k, double xi) const {
     if (m_cheb.empty() || !m_cheb[k].certified)
         return at(u);
     double f[kQuantities];
-    cheb::evaluateMany(m_cheb[k].c, xi, f);
+    cheb::evaluateMany(m_cheb[k].c, xi, f, static_cast<std::size_t>(m_cheb[k].degree) + 2);
     PathNode n;
     n.u = u;
     n.s = start.s + f[kS];

@@ -68,11 +68,15 @@ class PathTable {
 
     /// The panel's interpolants: coefficients c[k][q] of sum c_k T_k(xi) for the quantities
     /// q = x, y, phi, kappa, dkappa/ds, s - s(panel start), ds/du, and the values of
-    /// ds/dxi = (half width) ds/du and kappa at the Chebyshev points (for the time law).
+    /// ds/dxi = (half width) ds/du and kappa at the Chebyshev points of the panel's degree,
+    /// x_j = cos(pi j/degree), j = 0..degree (for the time law). A panel is certified at
+    /// cheb::kLowDegree where that suffices, else at cheb::kDegree; coefficients past the degree
+    /// (past degree + 1 for s) are zero.
     enum Quantity { kX, kY, kPhi, kKappa, kDkappa, kS, kSpeed, kQuantities = 8 };
     struct ChebPanel {
         std::array<std::array<double, kQuantities>, cheb::kPoints + 1> c{};
         std::array<double, cheb::kPoints> dsdxi{}, kappa{};
+        int degree = cheb::kDegree;
         bool certified = false;
         bool noiseLimited = false; ///< bounds at the rounding noise of the exact evaluation
         double bound = 0;          ///< the largest ratio of a bound to its tolerance

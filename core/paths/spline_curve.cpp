@@ -2,9 +2,6 @@
 
 #include "common/input_error.h"
 
-#include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
-
 #include <algorithm>
 #include <cmath>
 
@@ -20,44 +17,88 @@ SplineCurve::SplineCurve(const std::vector<double>& x, const std::vector<double>
         m_knots[i] = m_knots[i - 1] + std::hypot(x[i] - x[i - 1], y[i] - y[i - 1]);
     double h = m_knots.back() / static_cast<double>(x.size() - 1);
     double alpha = bandwidth > 0 ? std::pow(bandwidth * h, 4) / h : 0.0;
-    m_x = smooth(x, alpha);
-    m_y = smooth(y, alpha);
+    const Factor f = factor(alpha);
+    m_x = smooth(x, alpha, f);
+    m_y = smooth(y, alpha, f);
 }
 
-// (R + alpha Q^T Q) gamma = Q^T y, g = y - alpha Q gamma (Green and Silverman, eq. 2.15)
-SplineCurve::Coordinate SplineCurve::smooth(const std::vector<double>& data, double alpha) const {
-    const int n = static_cast<int>(data.size());
-    const int m = n - 2;
-    std::vector<double> h(n - 1);
+SplineCurve::Factor SplineCurve::factor(double alpha) const {
+    // (R + alpha Q^T Q) gamma = Q^T y, g = y - alpha Q gamma (Green and Silverman, eq. 2.15):
+    // R and Q^T Q are banded (Q has three entries per column), so the matrix is pentadiagonal and
+    // LDL^T keeps the band (Green and Silverman §2.3.3: the Reinsch algorithm)
+    const int n = static_cast<int>(m_knots.size()), m = n - 2;
+    Factor f;
+    f.invH.resize(n - 1);
     for (int i = 0; i + 1 < n; ++i)
-        h[i] = m_knots[i + 1] - m_knots[i];
-    Eigen::SparseMatrix<double> q(n, m), r(m, m);
-    std::vector<Eigen::Triplet<double>> qt, rt;
+        f.invH[i] = 1 / (m_knots[i + 1] - m_knots[i]);
+    const std::vector<double>& r = f.invH;
+    // column j of Q (interior knot j + 1): r_j at row j, -(r_j + r_{j+1}) at j + 1, r_{j+1} at j +
+    // 2
+    auto diag = [&](int j) {
+        const double mid = r[j] + r[j + 1];
+        return (1 / r[j] + 1 / r[j + 1]) / 3 +
+               alpha * (r[j] * r[j] + mid * mid + r[j + 1] * r[j + 1]);
+    };
+    auto next = [&](int j) { // entry (j, j + 1)
+        return 1 / (6 * r[j + 1]) - alpha * r[j + 1] * (r[j] + 2 * r[j + 1] + r[j + 2]);
+    };
+    auto second = [&](int j) { return alpha * r[j + 1] * r[j + 2]; }; // entry (j, j + 2)
+    f.d.assign(m, 0.0);
+    f.l1.assign(m, 0.0);
+    f.l2.assign(m, 0.0);
     for (int j = 0; j < m; ++j) {
-        // column j belongs to interior knot j + 1
-        qt.emplace_back(j, j, 1.0 / h[j]);
-        qt.emplace_back(j + 1, j, -1.0 / h[j] - 1.0 / h[j + 1]);
-        qt.emplace_back(j + 2, j, 1.0 / h[j + 1]);
-        rt.emplace_back(j, j, (h[j] + h[j + 1]) / 3.0);
-        if (j + 1 < m) {
-            rt.emplace_back(j, j + 1, h[j + 1] / 6.0);
-            rt.emplace_back(j + 1, j, h[j + 1] / 6.0);
-        }
+        double d = diag(j);
+        if (j >= 1)
+            d -= f.l1[j - 1] * f.l1[j - 1] * f.d[j - 1];
+        if (j >= 2)
+            d -= f.l2[j - 2] * f.l2[j - 2] * f.d[j - 2];
+        if (!(d > 0) || !std::isfinite(d))
+            throw InputError("points",
+                             "the smoothing spline could not be fitted (repeated points?)");
+        f.d[j] = d;
+        if (j + 1 < m)
+            f.l1[j] = (next(j) - (j >= 1 ? f.l2[j - 1] * f.l1[j - 1] * f.d[j - 1] : 0.0)) / d;
+        if (j + 2 < m)
+            f.l2[j] = second(j) / d;
     }
-    q.setFromTriplets(qt.begin(), qt.end());
-    r.setFromTriplets(rt.begin(), rt.end());
-    Eigen::VectorXd yv = Eigen::Map<const Eigen::VectorXd>(data.data(), n);
-    Eigen::SparseMatrix<double> a = r + alpha * Eigen::SparseMatrix<double>(q.transpose() * q);
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(a);
-    if (solver.info() != Eigen::Success)
-        throw InputError("points", "the smoothing spline could not be fitted (repeated points?)");
-    Eigen::VectorXd gamma = solver.solve(q.transpose() * yv);
-    Eigen::VectorXd g = yv - alpha * (q * gamma);
+    return f;
+}
+
+SplineCurve::Coordinate SplineCurve::smooth(const std::vector<double>& data, double alpha,
+                                            const Factor& f) const {
+    const int n = static_cast<int>(data.size()), m = n - 2;
+    const std::vector<double>& r = f.invH;
+    std::vector<double> z(m);
+    for (int j = 0; j < m; ++j) { // L z = Q^T y
+        double v = r[j] * data[j] - (r[j] + r[j + 1]) * data[j + 1] + r[j + 1] * data[j + 2];
+        if (j >= 1)
+            v -= f.l1[j - 1] * z[j - 1];
+        if (j >= 2)
+            v -= f.l2[j - 2] * z[j - 2];
+        z[j] = v;
+    }
     Coordinate c;
-    c.g.assign(g.data(), g.data() + n);
-    c.gamma.assign(n, 0.0);
-    for (int j = 0; j < m; ++j)
-        c.gamma[j + 1] = gamma[j];
+    c.gamma.assign(n, 0.0);            // by knot; natural ends: g'' = 0 at the first and last
+    for (int j = m - 1; j >= 0; --j) { // D L^T gamma = z
+        double v = z[j] / f.d[j];
+        if (j + 1 < m)
+            v -= f.l1[j] * c.gamma[j + 2];
+        if (j + 2 < m)
+            v -= f.l2[j] * c.gamma[j + 3];
+        c.gamma[j + 1] = v;
+    }
+    // g = y - alpha Q gamma: row i of Q meets the second derivatives at knots i - 1, i, i + 1
+    c.g.resize(n);
+    for (int i = 0; i < n; ++i) {
+        double q = 0;
+        if (i + 1 < n)
+            q += r[i] * c.gamma[i + 1];
+        if (i >= 1)
+            q += r[i - 1] * c.gamma[i - 1];
+        if (i >= 1 && i + 1 < n)
+            q -= (r[i - 1] + r[i]) * c.gamma[i];
+        c.g[i] = data[i] - alpha * q;
+    }
     return c;
 }
 

@@ -24,7 +24,12 @@ class SplineCurve final : public Curve {
         std::vector<double> g;     // values at the knots
         std::vector<double> gamma; // second derivatives at the knots (natural: 0 at the ends)
     };
-    Coordinate smooth(const std::vector<double>& data, double alpha) const;
+    struct Factor {                    // R + alpha Q^T Q = L D L^T, pentadiagonal
+        std::vector<double> invH;      // 1 / (t_{i+1} - t_i)
+        std::vector<double> d, l1, l2; // D, and L's first and second subdiagonals
+    };
+    Factor factor(double alpha) const;
+    Coordinate smooth(const std::vector<double>& data, double alpha, const Factor& f) const;
     void evalCoordinate(const Coordinate& c, int i, double u, double* v, double* d1, double* d2,
                         double* d3) const;
 

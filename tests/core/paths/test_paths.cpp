@@ -2,9 +2,11 @@
 // drawn polylines (pivots and smoothing splines).
 #include "common/input_error.h"
 #include "paths/path.h"
+#include "paths/spline_curve.h"
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -153,6 +155,66 @@ TEST(Paths, PolylineWithPivotsHasSegmentsAndCorners) {
     EXPECT_NE(errorOf(p).find("at least 2 distinct points"), std::string::npos);
     p.points = {{0, 0}, {NAN, 1}};
     EXPECT_NE(errorOf(p).find("point 2"), std::string::npos);
+}
+
+// The smoothing spline is the minimiser of sum (p_i - g(t_i))^2 + alpha \int g''^2
+// (spline_curve.h): a natural cubic spline (g'' = 0 at the ends, C2 at the knots) whose residual at
+// each knot is alpha times the jump of g''' there (set the first variation to zero and integrate by
+// parts twice). Checked per coordinate for a jittery stroke with uneven spacing, and for
+// interpolation.
+TEST(Paths, SmoothingSplineMinimisesItsCriterion) {
+    std::vector<double> xs, ys;
+    for (int i = 0; i < 300; ++i) {
+        const double t = 0.02 * i + 0.007 * ((i * 37) % 11); // uneven spacing
+        xs.push_back(3 * std::cos(t) + 0.01 * ((i * 7919) % 13 - 6) / 6.0);
+        ys.push_back(2 * std::sin(1.3 * t) + 0.01 * ((i * 104729) % 7 - 3) / 3.0);
+    }
+    for (double bandwidth : {10.0, 2.0, 0.0}) {
+        SplineCurve spline(xs, ys, bandwidth);
+        const int n = static_cast<int>(xs.size());
+        std::vector<double> t(n, 0.0); // the knots: cumulative chord length
+        for (int i = 1; i < n; ++i)
+            t[i] = t[i - 1] + std::hypot(xs[i] - xs[i - 1], ys[i] - ys[i - 1]);
+        const double h = t.back() / (n - 1);
+        const double alpha = std::pow(bandwidth * h, 4) / h;
+        ASSERT_EQ(spline.u0(), 0);
+        ASSERT_NEAR(spline.u1(), t.back(), 1e-12 * t.back());
+        std::vector<CurvePoint> piece(n - 1); // each piece at its interval's midpoint
+        for (int i = 0; i + 1 < n; ++i)
+            piece[i] = spline.eval(0.5 * (t[i] + t[i + 1]));
+        // residuals against alpha times the jumps; g, g', g'' from both sides of each knot
+        // (relative to the largest of each over the knots)
+        double worst = 0;
+        std::array<double, 3> gap{}, size{};
+        for (int i = 0; i < n; ++i) {
+            const CurvePoint right = spline.eval(i + 1 < n ? t[i] : std::nextafter(t[i], 0.0));
+            const CurvePoint left = spline.eval(i > 0 ? std::nextafter(t[i], 0.0) : t[i]);
+            const double jumpX = (i + 1 < n ? piece[i].dddx : 0) - (i > 0 ? piece[i - 1].dddx : 0);
+            const double jumpY = (i + 1 < n ? piece[i].dddy : 0) - (i > 0 ? piece[i - 1].dddy : 0);
+            worst = std::max({worst, std::fabs(xs[i] - right.x - alpha * jumpX),
+                              std::fabs(ys[i] - right.y - alpha * jumpY)});
+            const std::array<std::array<double, 4>, 3> d = {{
+                {right.x, left.x, right.y, left.y},
+                {right.dx, left.dx, right.dy, left.dy},
+                {right.ddx, left.ddx, right.ddy, left.ddy},
+            }};
+            for (int k = 0; k < 3; ++k) {
+                gap[k] =
+                    std::max({gap[k], std::fabs(d[k][0] - d[k][1]), std::fabs(d[k][2] - d[k][3])});
+                size[k] = std::max({size[k], std::fabs(d[k][0]), std::fabs(d[k][2])});
+            }
+        }
+        EXPECT_LT(worst, 1e-12) << "bandwidth " << bandwidth;
+        // continuity holds as far as the linear solve does: rounding times the condition of
+        // R + alpha Q^T Q (a fourth difference, ~1e5 here)
+        for (int k = 0; k < 3; ++k)
+            EXPECT_LT(gap[k], 1e-10 * size[k]) << "derivative " << k << ", bandwidth " << bandwidth;
+        const CurvePoint first = spline.eval(t.front()), last = spline.eval(t.back());
+        EXPECT_LT(std::max({std::fabs(first.ddx), std::fabs(first.ddy), std::fabs(last.ddx),
+                            std::fabs(last.ddy)}),
+                  1e-13 * size[2])
+            << "natural ends, bandwidth " << bandwidth;
+    }
 }
 
 TEST(Paths, SmoothingSplineGivesSmoothCurvatureForAShakyCircle) {

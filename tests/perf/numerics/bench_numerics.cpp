@@ -182,16 +182,20 @@ PathSource strokeOf(int points, CornerMode corners) {
 }
 
 void BM_Tabulate(benchmark::State& state, PathSource source) {
-    std::size_t panels = 0;
+    std::size_t panels = 0, lowDegree = 0;
     for (auto _ : state) {
         auto path = buildPath(source);
-        panels = 0;
+        panels = lowDegree = 0;
         for (const PathPiece& p : path->pieces())
-            if (p.kind == PathPiece::Kind::Curve)
+            if (p.kind == PathPiece::Kind::Curve) {
                 panels += p.table->panels().size();
+                for (const PathTable::ChebPanel& c : p.table->chebPanels())
+                    lowDegree += c.degree == cheb::kLowDegree ? 1 : 0;
+            }
         benchmark::DoNotOptimize(path.get());
     }
     state.counters["panels"] = static_cast<double>(panels);
+    state.counters["low_degree"] = static_cast<double>(lowDegree);
 }
 BENCHMARK_CAPTURE(BM_Tabulate, catenary, presetScene("catenary").path)
     ->Unit(benchmark::kMicrosecond);
