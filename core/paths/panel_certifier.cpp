@@ -78,8 +78,8 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
                 g.kappa,
                 g.dkappa,
                 g.speed,
-                ds * std::sqrt(1 + lk * lk),
-                ds * std::sqrt(1 + kStiffScale * kStiffScale * lk * lk)};
+                ds * hypotOne(lk),
+                ds * hypotOne(kStiffScale * lk)};
         out.dsdxi[i] = ds;
         out.kappa[i] = g.kappa;
         maxX = std::max(maxX, std::fabs(p.x));
@@ -122,7 +122,8 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
         CurveGeometry g = geometryOf(p);
         double dphi = g.heading - f[Q::kPhi];
         dphi -= 2 * std::numbers::pi * std::round(dphi / (2 * std::numbers::pi));
-        ePos = std::max(ePos, std::hypot(f[Q::kX] - p.x, f[Q::kY] - p.y));
+        const double ex = f[Q::kX] - p.x, ey = f[Q::kY] - p.y;
+        ePos = std::max(ePos, std::sqrt(ex * ex + ey * ey));
         ePhi = std::max(ePhi, std::fabs(dphi));
         eKappa = std::max(eKappa, std::fabs(f[Q::kKappa] - g.kappa));
         eDkappa = std::max(eDkappa, std::fabs(f[Q::kDkappa] - g.dkappa));
@@ -172,7 +173,7 @@ void Certifier::keep(const PanelData& d, const PathTable::ChebPanel& panel,
     } else {
         bounds.exactPanels += 1;
     }
-    leaves.push_back(d);
+    leaves.push_back(static_cast<const PanelSums&>(d));
     cheb.push_back(panel);
 }
 

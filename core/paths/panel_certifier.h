@@ -14,7 +14,7 @@ struct Certifier {
     double lengthScale;
     double cuspStart, cuspEnd; // u of a cusp at either end, or NaN
     std::size_t halvingsLeft;  // of the table's budget; when none are left, panels stay exact
-    std::vector<PanelData> leaves;
+    std::vector<PanelSums> leaves;
     std::vector<PathTable::ChebPanel> cheb;
     PathTable::Bounds bounds;
 

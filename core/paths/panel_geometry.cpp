@@ -54,8 +54,8 @@ PanelData computePanel(const Curve& c, double a, double b, double lengthScale) {
         d.turn += ds * g.kappa;
         d.absTurn += ds * std::fabs(g.kappa);
         // proxy for the time-law integrand sqrt(1 + b^2 kappa^2) ds with b of the path's size
-        d.weighted += ds * std::hypot(1.0, lengthScale * g.kappa);
-        d.stiff += ds * std::hypot(1.0, kStiffScale * lengthScale * g.kappa);
+        d.weighted += ds * hypotOne(lengthScale * g.kappa);
+        d.stiff += ds * hypotOne(kStiffScale * lengthScale * g.kappa);
     }
     return d;
 }

@@ -2,6 +2,7 @@
 #include "paths/path_table.h"
 
 #include <array>
+#include <cmath>
 #include <string>
 
 namespace chaplygin {
@@ -21,13 +22,21 @@ CurveGeometry checkedGeometry(const Curve& c, double u, CurvePoint* out = nullpt
 constexpr double kStiffScale = 100.0;
 
 /// A panel [a, b] with its 8-point Gauss sums.
-struct PanelData {
+struct PanelSums {
     double a = 0, b = 0;
     double length = 0, turn = 0, absTurn = 0; // \int ds, \int kappa ds, \int |kappa| ds
     double weighted = 0, stiff = 0; // time-law proxies for b ~ the path's size and b >> it
     PathTable::GaussPanel gauss;
-    std::array<CurvePoint, gauss::kPoints> points; // exact, for certifying the interpolants
 };
+/// The same with the exact curve at the Gauss nodes, for certifying the interpolants.
+struct PanelData : PanelSums {
+    std::array<CurvePoint, gauss::kPoints> points;
+};
+
+/// sqrt(1 + x^2) without hypot's cost; |x| where x^2 would overflow.
+inline double hypotOne(double x) {
+    return std::fabs(x) < 1e150 ? std::sqrt(1 + x * x) : std::fabs(x);
+}
 
 PanelData computePanel(const Curve& c, double a, double b, double lengthScale);
 

@@ -230,11 +230,11 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     m_halvings = refiner.splits;
     m_cheb = std::move(certifier.cheb);
     m_bounds = certifier.bounds;
-    const auto& leaves = m_cheb.empty() ? refiner.leaves : certifier.leaves;
 
     // panel ends carry the exact geometry; phi is unwrapped by the quadrature of kappa ds
-    m_nodes.reserve(leaves.size() + 1);
-    m_panels.reserve(leaves.size());
+    const std::size_t leafCount = m_cheb.empty() ? refiner.leaves.size() : certifier.leaves.size();
+    m_nodes.reserve(leafCount + 1);
+    m_panels.reserve(leafCount);
     auto nodeAt = [&](double u) {
         const std::optional<Cusp>& cusp = u == u0 ? m_ends.start : m_ends.end;
         if ((u == u0 || u == u1) && cusp)
@@ -253,7 +253,7 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     };
     m_nodes.push_back(nodeAt(u0));
     std::vector<double> wraps{0.0}; // 2 pi n added to atan2 at each node
-    for (const PanelData& leaf : leaves) {
+    auto addNode = [&](const PanelSums& leaf) {
         PathNode n = nodeAt(leaf.b);
         const PathNode& prev = m_nodes.back();
         n.s = prev.s + leaf.length;
@@ -264,7 +264,13 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
         wraps.push_back(wrap);
         m_nodes.push_back(n);
         m_panels.push_back(leaf.gauss);
-    }
+    };
+    if (m_cheb.empty())
+        for (const PanelData& leaf : refiner.leaves)
+            addNode(leaf);
+    else
+        for (const PanelSums& leaf : certifier.leaves)
+            addNode(leaf);
     indexNodes();
     // the interpolated phi starts from atan2 at the panel's start; add the node's 2 pi n
     for (std::size_t k = 0; k < m_cheb.size(); ++k)

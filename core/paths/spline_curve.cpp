@@ -18,8 +18,22 @@ SplineCurve::SplineCurve(const std::vector<double>& x, const std::vector<double>
     double h = m_knots.back() / static_cast<double>(x.size() - 1);
     double alpha = bandwidth > 0 ? std::pow(bandwidth * h, 4) / h : 0.0;
     const Factor f = factor(alpha);
-    m_x = smooth(x, alpha, f);
-    m_y = smooth(y, alpha, f);
+    const Coordinate cx = smooth(x, alpha, f), cy = smooth(y, alpha, f);
+    // each interval's cubic from the values g and second derivatives gamma at its ends (Green
+    // and Silverman eq. 2.4), in powers of the distance from its first knot
+    m_pieces.resize(x.size() - 1);
+    auto powers = [](const Coordinate& c, std::size_t i, double h, double* out) {
+        const double gi = c.g[i], gj = c.g[i + 1], ci = c.gamma[i], cj = c.gamma[i + 1];
+        out[0] = gi;
+        out[1] = (gj - gi) / h - h / 6.0 * (2 * ci + cj);
+        out[2] = ci / 2;
+        out[3] = (cj - ci) / (6 * h);
+    };
+    for (std::size_t i = 0; i + 1 < x.size(); ++i) {
+        const double h = m_knots[i + 1] - m_knots[i];
+        powers(cx, i, h, m_pieces[i].cx);
+        powers(cy, i, h, m_pieces[i].cy);
+    }
 }
 
 SplineCurve::Factor SplineCurve::factor(double alpha) const {
@@ -102,25 +116,32 @@ SplineCurve::Coordinate SplineCurve::smooth(const std::vector<double>& data, dou
     return c;
 }
 
-void SplineCurve::evalCoordinate(const Coordinate& c, int i, double u, double* v, double* d1,
-                                 double* d2, double* d3) const {
-    // cubic on [t_i, t_{i+1}] from values g and second derivatives gamma (G&S eq. 2.4)
-    double h = m_knots[i + 1] - m_knots[i];
-    double a = u - m_knots[i], b = m_knots[i + 1] - u;
-    double gi = c.g[i], gj = c.g[i + 1], ci = c.gamma[i], cj = c.gamma[i + 1];
-    *v = (a * gj + b * gi) / h - a * b / 6.0 * ((1 + a / h) * cj + (1 + b / h) * ci);
-    *d1 = (gj - gi) / h - h / 6.0 * (2 * ci + cj) + ci * a + (cj - ci) * a * a / (2 * h);
-    *d2 = ci + (cj - ci) * a / h;
-    *d3 = (cj - ci) / h;
-}
-
 CurvePoint SplineCurve::eval(double u) const {
-    auto it = std::upper_bound(m_knots.begin(), m_knots.end(), u);
-    int i = std::clamp(static_cast<int>(it - m_knots.begin()) - 1, 0,
+    // a table asks for points of one knot interval in turn: try this thread's last one first
+    thread_local const SplineCurve* lastCurve = nullptr;
+    thread_local std::size_t last = 0;
+    int i;
+    if (lastCurve == this && last + 1 < m_knots.size() && u >= m_knots[last] &&
+        u < m_knots[last + 1]) {
+        i = static_cast<int>(last);
+    } else {
+        auto it = std::upper_bound(m_knots.begin(), m_knots.end(), u);
+        i = std::clamp(static_cast<int>(it - m_knots.begin()) - 1, 0,
                        static_cast<int>(m_knots.size()) - 2);
+        lastCurve = this;
+        last = static_cast<std::size_t>(i);
+    }
+    const Piece& c = m_pieces[static_cast<std::size_t>(i)];
+    const double a = u - m_knots[static_cast<std::size_t>(i)];
     CurvePoint p;
-    evalCoordinate(m_x, i, u, &p.x, &p.dx, &p.ddx, &p.dddx);
-    evalCoordinate(m_y, i, u, &p.y, &p.dy, &p.ddy, &p.dddy);
+    p.x = c.cx[0] + a * (c.cx[1] + a * (c.cx[2] + a * c.cx[3]));
+    p.y = c.cy[0] + a * (c.cy[1] + a * (c.cy[2] + a * c.cy[3]));
+    p.dx = c.cx[1] + a * (2 * c.cx[2] + 3 * a * c.cx[3]);
+    p.dy = c.cy[1] + a * (2 * c.cy[2] + 3 * a * c.cy[3]);
+    p.ddx = 2 * c.cx[2] + 6 * a * c.cx[3];
+    p.ddy = 2 * c.cy[2] + 6 * a * c.cy[3];
+    p.dddx = 6 * c.cx[3];
+    p.dddy = 6 * c.cy[3];
     return p;
 }
 

@@ -30,11 +30,13 @@ class SplineCurve final : public Curve {
     };
     Factor factor(double alpha) const;
     Coordinate smooth(const std::vector<double>& data, double alpha, const Factor& f) const;
-    void evalCoordinate(const Coordinate& c, int i, double u, double* v, double* d1, double* d2,
-                        double* d3) const;
 
     std::vector<double> m_knots;
-    Coordinate m_x, m_y;
+    // the cubic of each knot interval in a = u - t_i: x = sum cx_k a^k, y = sum cy_k a^k
+    struct Piece {
+        double cx[4], cy[4];
+    };
+    std::vector<Piece> m_pieces;
 };
 
 } // namespace chaplygin
