@@ -104,7 +104,8 @@ TimeLaw::TimeLaw(std::shared_ptr<const Path> path, const ControlParams& params)
 }
 
 void TimeLaw::buildPanel(int piece, int k, TimePanel& tp) const {
-    const PathTable::ChebPanel& cp = m_path->pieces()[piece].table->chebPanels()[k];
+    const PathTable& table = *m_path->pieces()[piece].table;
+    const PathTable::ChebPanel& cp = table.chebPanels()[k];
     if (!cp.certified)
         return;
     const bool energy = m_params.mode == SpeedMode::Energy;
@@ -114,8 +115,8 @@ void TimeLaw::buildPanel(int piece, int k, TimePanel& tp) const {
     const int n = cp.degree;
     std::array<std::array<double, 1>, cheb::kPoints> r, a;
     for (int j = 0; j <= n; ++j) {
-        const double kappa = cp.kappa[j];
-        r[j][0] = cp.dsdxi[j] * invSpeed * (energy ? std::sqrt(1 + b2 * kappa * kappa) : 1.0);
+        const PathTable::Sample& v = table.samples(k)[j];
+        r[j][0] = v.dsdxi * invSpeed * (energy ? std::sqrt(1 + b2 * v.kappa * v.kappa) : 1.0);
     }
     cheb::coefficientsMany(r.data(), n, a.data());
     std::array<double, cheb::kPoints> coef{};

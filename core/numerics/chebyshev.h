@@ -73,11 +73,10 @@ inline double evaluateOne(const std::array<std::array<double, Q>, N>& c, std::si
     return x * b1 - b2 + c[0][q];
 }
 
-/// Q series at once, coefficients interleaved c[k][q] (so the inner loop vectorises); only the
-/// first `rows` coefficients are summed (the rest are zero: a panel of lower degree).
-template <std::size_t Q, std::size_t N>
-inline void evaluateMany(const std::array<std::array<double, Q>, N>& c, double x, double* out,
-                         std::size_t rows = N) {
+/// Q series at once, coefficients interleaved c[k][q] (so the inner loop vectorises); `rows`
+/// coefficients from c.
+template <std::size_t Q>
+inline void evaluateMany(const std::array<double, Q>* c, std::size_t rows, double x, double* out) {
     std::array<double, Q> b1{}, b2{};
     const double x2 = 2 * x;
     for (std::size_t k = rows - 1; k >= 1; --k)
@@ -88,6 +87,14 @@ inline void evaluateMany(const std::array<std::array<double, Q>, N>& c, double x
         }
     for (std::size_t q = 0; q < Q; ++q)
         out[q] = x * b1[q] - b2[q] + c[0][q];
+}
+
+/// The same over an array, of which only the first `rows` coefficients are summed (the rest are
+/// zero: a panel of lower degree).
+template <std::size_t Q, std::size_t N>
+inline void evaluateMany(const std::array<std::array<double, Q>, N>& c, double x, double* out,
+                         std::size_t rows = N) {
+    evaluateMany(c.data(), rows, x, out);
 }
 
 } // namespace chaplygin::cheb

@@ -13,13 +13,13 @@ constexpr double kRateTolerance = 1e-13; // as TimeLaw's bound on t over a panel
 
 // The exact geometry at the degree-kDegree Chebyshev points of a panel, each evaluated on first
 // use: a panel tried at kLowDegree and then at kDegree evaluates the curve once per point.
-struct Samples {
+struct ExactAtPoints {
     std::array<CurvePoint, cheb::kPoints> point;
     std::array<CurveGeometry, cheb::kPoints> geometry;
     std::array<bool, cheb::kPoints> done{};
 };
 
-void sampleAt(const Curve& c, bool piecewise, const PanelData& d, int j, Samples& s) {
+void sampleAt(const Curve& c, bool piecewise, const PanelData& d, int j, ExactAtPoints& s) {
     if (s.done[j])
         return;
     // a curve evaluates a breakpoint with the piece that starts there; the panel's end takes
@@ -39,24 +39,25 @@ void sampleAt(const Curve& c, bool piecewise, const PanelData& d, int j, Samples
 // tolerance (certified when <= 1); `bound` receives this panel's bounds and `stiffBound` the
 // error bound of the stiff time-law integrand's interpolant (PanelData::stiff).
 double interpolate(const Curve& c, bool piecewise, const PanelData& d, double lengthScale,
-                   int degree, Samples& samples, PathTable::ChebPanel& out,
-                   PathTable::Bounds& bound, double& stiffBound) {
+                   int degree, ExactAtPoints& exact, Interpolant& out, PathTable::Bounds& bound,
+                   double& stiffBound) {
     using Q = PathTable::Quantity;
     // the series transformed together: the quantities, and the time-law integrands for b of the
     // path's size (rate) and kStiffScale times it (stiff)
     enum Column { cX, cY, cPhi, cKappa, cDkappa, cSpeed, cRate, cStiff, cColumns };
     const int n = degree, stride = cheb::kDegree / degree;
     const double half = 0.5 * (d.b - d.a), L = lengthScale;
-    out = {};
-    out.degree = degree;
+    out.c = {};
+    out.panel = {};
+    out.panel.degree = degree;
     std::array<std::array<double, cColumns>, cheb::kPoints> v; // [i][column] at cos(pi i/n)
     double prevPhi = 0, kappaNoise = 0, dkappaNoise = 0;
     double maxX = 0, maxY = 0, maxPhi = 0, kappaMax = 0, dkappaMax = 0;
     for (int i = n; i >= 0; --i) { // from the panel's start (xi = -1) so phi unwraps in order
         const int j = i * stride;
-        sampleAt(c, piecewise, d, j, samples);
-        const CurvePoint& p = samples.point[j];
-        const CurveGeometry& g = samples.geometry[j];
+        sampleAt(c, piecewise, d, j, exact);
+        const CurvePoint& p = exact.point[j];
+        const CurveGeometry& g = exact.geometry[j];
         double phi = g.heading;
         if (i != n)
             phi += 2 * std::numbers::pi * std::round((prevPhi - phi) / (2 * std::numbers::pi));
@@ -80,8 +81,7 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
                 g.speed,
                 ds * hypotOne(lk),
                 ds * hypotOne(kStiffScale * lk)};
-        out.dsdxi[i] = ds;
-        out.kappa[i] = g.kappa;
+        out.samples[i] = {ds, g.kappa};
         maxX = std::max(maxX, std::fabs(p.x));
         maxY = std::max(maxY, std::fabs(p.y));
         maxPhi = std::max(maxPhi, std::fabs(phi));
@@ -118,11 +118,10 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
     for (int i = 0; i < gauss::kPoints; ++i) {
         double f[PathTable::kQuantities];
         cheb::evaluateMany(out.c, gauss::kNodes[i], f, rows);
-        const CurvePoint& p = d.points[i];
-        CurveGeometry g = geometryOf(p);
+        const CurveGeometry& g = d.geometry[i];
         double dphi = g.heading - f[Q::kPhi];
         dphi -= 2 * std::numbers::pi * std::round(dphi / (2 * std::numbers::pi));
-        const double ex = f[Q::kX] - p.x, ey = f[Q::kY] - p.y;
+        const double ex = f[Q::kX] - d.x[i], ey = f[Q::kY] - d.y[i];
         ePos = std::max(ePos, std::sqrt(ex * ex + ey * ey));
         ePhi = std::max(ePhi, std::fabs(dphi));
         eKappa = std::max(eKappa, std::fabs(f[Q::kKappa] - g.kappa));
@@ -149,8 +148,8 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
         std::max({ePos / tolPos, ePhi / tolPhi, eKappa / tolKappa, eDkappa / tolDkappa, eS / tolS,
                   2 * tail(cRate) / (kRateTolerance * rateSum)});
     stiffBound = 2 * tail(cStiff);
-    out.certified = score <= 1;
-    out.bound = score;
+    out.panel.certified = score <= 1;
+    out.panel.bound = score;
     bound.position = ePos;
     bound.heading = ePhi;
     bound.kappa = eKappa;
@@ -161,8 +160,8 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
 
 } // namespace
 
-void Certifier::keep(const PanelData& d, const PathTable::ChebPanel& panel,
-                     const PathTable::Bounds& b) {
+void Certifier::keep(const PanelData& d, const Interpolant& in, const PathTable::Bounds& b) {
+    PathTable::ChebPanel panel = in.panel;
     if (panel.certified) {
         bounds.position = std::max(bounds.position, b.position);
         bounds.heading = std::max(bounds.heading, b.heading);
@@ -170,6 +169,10 @@ void Certifier::keep(const PanelData& d, const PathTable::ChebPanel& panel,
         bounds.dkappa = std::max(bounds.dkappa, b.dkappa);
         bounds.arcLength = std::max(bounds.arcLength, b.arcLength);
         bounds.noisePanels += panel.noiseLimited ? 1 : 0;
+        panel.row = static_cast<std::uint32_t>(rows.size());
+        panel.sample = static_cast<std::uint32_t>(samples.size());
+        rows.insert(rows.end(), in.c.begin(), in.c.begin() + panel.degree + 2);
+        samples.insert(samples.end(), in.samples.begin(), in.samples.begin() + panel.degree + 1);
     } else {
         bounds.exactPanels += 1;
     }
@@ -180,12 +183,12 @@ void Certifier::keep(const PanelData& d, const PathTable::ChebPanel& panel,
 bool Certifier::acceptWhole(const PanelData& d, double stiffTolerance) {
     if (d.a == cuspStart || d.b == cuspEnd)
         return false;
-    Samples samples;
+    ExactAtPoints exact;
     for (int degree : {cheb::kLowDegree, cheb::kDegree}) {
-        PathTable::ChebPanel panel;
+        Interpolant panel;
         PathTable::Bounds b;
         double stiffBound = 0;
-        if (interpolate(curve, piecewise, d, lengthScale, degree, samples, panel, b, stiffBound) <=
+        if (interpolate(curve, piecewise, d, lengthScale, degree, exact, panel, b, stiffBound) <=
                 1 &&
             stiffBound <= stiffTolerance) {
             keep(d, panel, b);
@@ -196,24 +199,24 @@ bool Certifier::acceptWhole(const PanelData& d, double stiffTolerance) {
 }
 
 void Certifier::certify(const PanelData& d, int depth, double parentScore) {
-    PathTable::ChebPanel panel;
+    Interpolant panel;
     if (d.a == cuspStart || d.b == cuspEnd) {
         // kappa and dkappa/ds grow without bound towards a cusp: no interpolant
         keep(d, panel, {});
         return;
     }
     PathTable::Bounds b;
-    Samples samples;
+    ExactAtPoints exact;
     double stiffBound = 0;
-    double score = interpolate(curve, piecewise, d, lengthScale, cheb::kLowDegree, samples, panel,
-                               b, stiffBound);
+    double score = interpolate(curve, piecewise, d, lengthScale, cheb::kLowDegree, exact, panel, b,
+                               stiffBound);
     if (score > 1)
-        score = interpolate(curve, piecewise, d, lengthScale, cheb::kDegree, samples, panel, b,
+        score = interpolate(curve, piecewise, d, lengthScale, cheb::kDegree, exact, panel, b,
                             stiffBound);
     bool noise = score > 1 && depth > 0 && score > 0.25 * parentScore;
     if (score <= 1 || noise || depth >= kMaxCertifyDepth || halvingsLeft == 0) {
-        panel.certified = score <= 1 || noise;
-        panel.noiseLimited = noise;
+        panel.panel.certified = score <= 1 || noise;
+        panel.panel.noiseLimited = noise;
         keep(d, panel, b);
         return;
     }

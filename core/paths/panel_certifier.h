@@ -1,10 +1,19 @@
 #pragma once
 #include "paths/panel_geometry.h"
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
 namespace chaplygin {
+
+/// A panel's interpolants while they are built and certified, before the table packs them
+/// (PathTable::ChebPanel: the same coefficients and samples, degree + 2 and degree + 1 of them).
+struct Interpolant {
+    std::array<PathTable::Row, cheb::kPoints + 1> c{};
+    std::array<PathTable::Sample, cheb::kPoints> samples{};
+    PathTable::ChebPanel panel;
+};
 
 /// The per-panel Chebyshev interpolants of a path table (PathTable::ChebPanel), certified
 /// against the exact curve; panels that miss their tolerance are halved (docs/numerics.md §7).
@@ -16,6 +25,8 @@ struct Certifier {
     std::size_t halvingsLeft;  // of the table's budget; when none are left, panels stay exact
     std::vector<PanelSums> leaves;
     std::vector<PathTable::ChebPanel> cheb;
+    std::vector<PathTable::Row> rows;
+    std::vector<PathTable::Sample> samples;
     PathTable::Bounds bounds;
 
     // Splits a panel whose interpolants miss their tolerance. A resolved function's error falls
@@ -32,7 +43,7 @@ struct Certifier {
     bool acceptWhole(const PanelData& d, double stiffTolerance);
 
   private:
-    void keep(const PanelData& d, const PathTable::ChebPanel& panel, const PathTable::Bounds& b);
+    void keep(const PanelData& d, const Interpolant& in, const PathTable::Bounds& b);
 };
 
 } // namespace chaplygin

@@ -46,7 +46,10 @@ PanelData computePanel(const Curve& c, double a, double b, double lengthScale) {
     d.b = b;
     gauss::Mapped m = gauss::mapTo(a, b);
     for (int i = 0; i < gauss::kPoints; ++i) {
-        CurveGeometry g = checkedGeometry(c, m.x[i], &d.points[i]);
+        CurvePoint p;
+        const CurveGeometry& g = d.geometry[i] = checkedGeometry(c, m.x[i], &p);
+        d.x[i] = p.x;
+        d.y[i] = p.y;
         double ds = m.w[i] * g.speed;
         d.gauss.weight[i] = ds;
         d.gauss.kappa[i] = g.kappa;

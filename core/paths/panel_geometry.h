@@ -30,7 +30,8 @@ struct PanelSums {
 };
 /// The same with the exact curve at the Gauss nodes, for certifying the interpolants.
 struct PanelData : PanelSums {
-    std::array<CurvePoint, gauss::kPoints> points;
+    std::array<double, gauss::kPoints> x, y;
+    std::array<CurveGeometry, gauss::kPoints> geometry;
 };
 
 /// sqrt(1 + x^2) without hypot's cost; |x| where x^2 would overflow.

@@ -102,7 +102,7 @@ struct Refiner {
 
 // the Gauss nodes alone already show constant ds/du and kappa (lines, circles)
 bool uniformAtGaussNodes(const std::vector<PanelData>& leaves) {
-    const double speed0 = geometryOf(leaves.front().points[0]).speed;
+    const double speed0 = leaves.front().geometry[0].speed;
     const double kappa0 = leaves.front().gauss.kappa[0];
     for (const PanelData& d : leaves) {
         gauss::Mapped m = gauss::mapTo(d.a, d.b);
@@ -194,7 +194,8 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     Refiner refiner{c,        lengthScale,   u1 - u0, lengthRef, weightedRef,
                     stiffRef, halvingBudget, {},      0};
     Certifier certifier{
-        c, piecewise, lengthScale, m_ends.start ? u0 : NAN, m_ends.end ? u1 : NAN, 0, {}, {}, {}};
+        c,  piecewise, lengthScale, m_ends.start ? u0 : NAN, m_ends.end ? u1 : NAN, 0, {}, {},
+        {}, {},        {}};
     // interpolants on the refined panels, split where they cannot be certified, within what the
     // refinement left of the budget; the halvings of both are counted in refiner.splits
     auto certifyRefined = [&] {
@@ -208,6 +209,8 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
         // that fails
         certifier.leaves.reserve(initial.size());
         certifier.cheb.reserve(initial.size());
+        certifier.rows.reserve(initial.size() * (cheb::kLowDegree + 2));
+        certifier.samples.reserve(initial.size() * (cheb::kLowDegree + 1));
         for (const PanelData& p : initial) {
             const double stiffTolerance = kPanelTolerance * stiffRef * ((p.b - p.a) / (u1 - u0));
             if (p.absTurn <= kMaxTurnPerPanel && certifier.acceptWhole(p, stiffTolerance))
@@ -229,6 +232,8 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     }
     m_halvings = refiner.splits;
     m_cheb = std::move(certifier.cheb);
+    m_chebRows = std::move(certifier.rows);
+    m_chebSamples = std::move(certifier.samples);
     m_bounds = certifier.bounds;
 
     // panel ends carry the exact geometry; phi is unwrapped by the quadrature of kappa ds
@@ -274,7 +279,8 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     indexNodes();
     // the interpolated phi starts from atan2 at the panel's start; add the node's 2 pi n
     for (std::size_t k = 0; k < m_cheb.size(); ++k)
-        m_cheb[k].c[0][kPhi] += wraps[k];
+        if (m_cheb[k].certified)
+            m_chebRows[m_cheb[k].row][kPhi] += wraps[k];
 
     // constant ds/du and curvature: lines and circles get closed forms
     const PathNode& first = m_nodes.front();
@@ -379,7 +385,7 @@ PathNode PathTable::interpolatedAt(int k, double xi) const {
     if (m_cheb.empty() || !m_cheb[k].certified)
         return at(u);
     double f[kQuantities];
-    cheb::evaluateMany(m_cheb[k].c, xi, f, static_cast<std::size_t>(m_cheb[k].degree) + 2);
+    cheb::evaluateMany(coefficients(k), static_cast<std::size_t>(m_cheb[k].degree) + 2, xi, f);
     PathNode n;
     n.u = u;
     n.s = start.s + f[kS];

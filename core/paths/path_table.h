@@ -5,6 +5,7 @@
 #include "paths/cusp_finder.h"
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -67,15 +68,19 @@ class PathTable {
     PathNode interpolatedAt(int panel, double xi) const;
 
     /// The panel's interpolants: coefficients c[k][q] of sum c_k T_k(xi) for the quantities
-    /// q = x, y, phi, kappa, dkappa/ds, s - s(panel start), ds/du, and the values of
-    /// ds/dxi = (half width) ds/du and kappa at the Chebyshev points of the panel's degree,
-    /// x_j = cos(pi j/degree), j = 0..degree (for the time law). A panel is certified at
-    /// cheb::kLowDegree where that suffices, else at cheb::kDegree; coefficients past the degree
-    /// (past degree + 1 for s) are zero.
+    /// q = x, y, phi, kappa, dkappa/ds, s - s(panel start), ds/du (degree + 2 rows: s has one
+    /// degree more), and the values of ds/dxi = (half width) ds/du and kappa at the Chebyshev
+    /// points of the panel's degree, x_j = cos(pi j/degree), j = 0..degree (for the time law).
+    /// A panel is certified at cheb::kLowDegree where that suffices, else at cheb::kDegree; the
+    /// table keeps them packed, so a short panel takes half the memory.
     enum Quantity { kX, kY, kPhi, kKappa, kDkappa, kS, kSpeed, kQuantities = 8 };
+    using Row = std::array<double, kQuantities>;
+    struct Sample {
+        double dsdxi = 0, kappa = 0;
+    };
     struct ChebPanel {
-        std::array<std::array<double, kQuantities>, cheb::kPoints + 1> c{};
-        std::array<double, cheb::kPoints> dsdxi{}, kappa{};
+        std::uint32_t row = 0;    ///< its first coefficient row (certified panels only)
+        std::uint32_t sample = 0; ///< its first sample (certified panels only)
         int degree = cheb::kDegree;
         bool certified = false;
         bool noiseLimited = false; ///< bounds at the rounding noise of the exact evaluation
@@ -83,6 +88,9 @@ class PathTable {
     };
     /// One per panel, or empty on uniform tables.
     const std::vector<ChebPanel>& chebPanels() const { return m_cheb; }
+    /// Panel k's coefficient rows (degree + 2) and samples (degree + 1), when it is certified.
+    const Row* coefficients(int k) const { return &m_chebRows[m_cheb[k].row]; }
+    const Sample* samples(int k) const { return &m_chebSamples[m_cheb[k].sample]; }
     /// The largest certified error bounds over all panels, and the panels left to exact
     /// evaluation.
     struct Bounds {
@@ -111,6 +119,8 @@ class PathTable {
     std::vector<GaussPanel> m_panels;
     bool m_uniform = false;
     std::vector<ChebPanel> m_cheb;
+    std::vector<Row> m_chebRows;
+    std::vector<Sample> m_chebSamples;
     Bounds m_bounds;
     std::size_t m_halvings = 0;
 };
