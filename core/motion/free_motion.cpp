@@ -68,50 +68,91 @@ FreeMotion::FreeMotion(const DerivedSystem& system, const FreeInitial& initial, 
     double span = std::min(m_tail, m_horizon);
     double width = std::min(0.5 / std::fabs(m_k), b / m_v);
     int panels = std::max(1, static_cast<int>(std::ceil(span / width)));
-    m_panelT.resize(panels + 1);
-    m_panelZ.resize(panels + 1);
-    m_panelZ[0] = {initial.x, initial.y};
-    for (int i = 0; i <= panels; ++i)
-        m_panelT[i] = span * i / panels;
+    m_panelT.assign(1, 0.0);
+    m_panelZ.assign(1, {initial.x, initial.y});
     for (int i = 0; i < panels; ++i)
-        m_panelZ[i + 1] = m_panelZ[i] + panelIntegral(m_panelT[i], m_panelT[i + 1]);
-    buildInterpolants();
+        addPanel(span * i / panels, i + 1 == panels ? span : span * (i + 1) / panels, 0);
 }
 
-void FreeMotion::buildInterpolants() {
-    const int panels = static_cast<int>(m_panelT.size()) - 1;
-    m_panelCheb.resize(panels);
-    m_chebCertified.assign(panels, 0);
+void FreeMotion::addPanel(double t0, double t1, int depth) {
+    constexpr double kEps = 2.220446049250313e-16;
+    constexpr int kMaxSplits = 3; // a panel whose position is not certified is halved, so often
     const auto& xs = cheb::points();
-    for (int i = 0; i < panels; ++i) {
-        const double half = 0.5 * (m_panelT[i + 1] - m_panelT[i]),
-                     mid = 0.5 * (m_panelT[i + 1] + m_panelT[i]);
-        std::array<double, cheb::kPoints> fx, fy, cx, cy;
-        for (int j = 0; j < cheb::kPoints; ++j) {
-            double sdot, phidot, phi;
-            velocities(mid + half * xs[j], &sdot, &phidot, &phi);
-            fx[j] = half * sdot * std::cos(phi);
-            fy[j] = half * sdot * std::sin(phi);
-        }
-        cheb::coefficients(fx.data(), cx.data());
-        cheb::coefficients(fy.data(), cy.data());
-        std::array<double, cheb::kPoints + 1> ix, iy;
-        cheb::integrate(cx.data(), cheb::kPoints, ix.data());
-        cheb::integrate(cy.data(), cheb::kPoints, iy.data());
-        double zx = 0, zy = 0;
-        for (int k = 0; k <= cheb::kPoints; ++k) {
-            m_panelCheb[i][k] = {ix[k], iy[k]};
-            zx += ix[k];
-            zy += iy[k];
-        }
-        // bound: twice the tail over the panel, and the whole panel against the Gauss rule
-        const std::complex<double> dz = m_panelZ[i + 1] - m_panelZ[i];
-        const double bound = std::max(4 * std::max(cheb::tailEstimate(cx.data(), cheb::kPoints),
-                                                   cheb::tailEstimate(cy.data(), cheb::kPoints)),
-                                      std::abs(std::complex<double>(zx, zy) - dz));
-        m_chebCertified[i] = bound <= 1e-15 * std::max(std::abs(dz), m_v * half) ||
-                             bound <= 4e-16 * std::abs(m_panelZ[i + 1]);
+    // a point between the interpolation points, near an end where the error of an interpolant
+    // is largest: the check against the closed forms there
+    const double check = std::cos(std::numbers::pi / (2 * cheb::kDegree));
+    // dz/dxi = half sdot e^{i phi}, sdot, phidot, phi at t
+    auto exact = [&](double t, double half) {
+        std::array<double, kSeries> v{};
+        velocities(t, &v[kSdot], &v[kPhidot], &v[kPhi]);
+        v[kZx] = half * v[kSdot] * std::cos(v[kPhi]);
+        v[kZy] = half * v[kSdot] * std::sin(v[kPhi]);
+        return v;
+    };
+    const double half = 0.5 * (t1 - t0), mid = 0.5 * (t1 + t0);
+    const std::complex<double> z0 = m_panelZ.back();
+    // phi is interpolated as its change from the panel's start, which keeps the rounding
+    // of the interpolant at that of the change (the sum rounds once)
+    std::array<std::array<double, kSeries>, cheb::kPoints> f, c;
+    double phiMax = 0;
+    for (int j = 0; j < cheb::kPoints; ++j) {
+        f[j] = exact(mid + half * xs[j], half);
+        phiMax = std::max(phiMax, std::fabs(f[j][kPhi]));
     }
+    const double phiStart = f[cheb::kDegree][kPhi];
+    for (int j = 0; j < cheb::kPoints; ++j)
+        f[j][kPhi] -= phiStart;
+    cheb::coefficientsMany(f.data(), cheb::kDegree, c.data());
+    // the position: the integral of the interpolant of dz/dxi
+    std::array<double, cheb::kPoints> cx, cy;
+    for (int k = 0; k < cheb::kPoints; ++k) {
+        cx[k] = c[k][kZx];
+        cy[k] = c[k][kZy];
+    }
+    std::array<double, cheb::kPoints + 1> ix, iy;
+    cheb::integrate(cx.data(), cheb::kPoints, ix.data());
+    cheb::integrate(cy.data(), cheb::kPoints, iy.data());
+    double zx = 0, zy = 0;
+    std::array<std::array<double, kSeries>, cheb::kPoints + 1> panel;
+    for (int k = 0; k <= cheb::kPoints; ++k) {
+        panel[k] = {};
+        if (k < cheb::kPoints)
+            for (int q : {kSdot, kPhidot, kPhi})
+                panel[k][q] = c[k][q];
+        panel[k][kZx] = ix[k];
+        panel[k][kZy] = iy[k];
+        zx += ix[k];
+        zy += iy[k];
+    }
+    // each interpolant's largest error, estimated from its tail and measured at the check
+    // point; the position's bound over the panel is twice that of dz/dxi
+    std::array<double, kSeries> e = exact(mid + half * check, half);
+    e[kPhi] -= phiStart;
+    double p[kSeries];
+    cheb::evaluateMany(c.data(), cheb::kPoints, check, p);
+    auto error = [&](int q) {
+        const double tail =
+            std::max({std::fabs(c[cheb::kDegree][q]), std::fabs(c[cheb::kDegree - 1][q]),
+                      std::fabs(c[cheb::kDegree - 2][q])});
+        return std::max(2 * tail, std::fabs(p[q] - e[q]));
+    };
+    const double bound = 2 * std::hypot(error(kZx), error(kZy));
+    const std::complex<double> dz(zx, zy);
+    const bool position =
+        bound <= 1e-15 * std::max(std::abs(dz), m_v * half) || bound <= 4e-16 * std::abs(z0 + dz);
+    if (!position && depth < kMaxSplits) {
+        addPanel(t0, mid, depth + 1);
+        addPanel(mid, t1, depth + 1);
+        return;
+    }
+    m_panelT.push_back(t1);
+    m_panelZ.push_back(z0 + (position ? dz : panelIntegral(t0, t1)));
+    m_panelCheb.push_back(panel);
+    m_panelPhi.push_back(phiStart);
+    m_positionCertified.push_back(position);
+    m_velocityCertified.push_back(error(kSdot) <= 1e-15 * m_v &&
+                                  error(kPhidot) <= 1e-15 * m_v / m_sys.b &&
+                                  error(kPhi) <= 2 * kEps * (1 + phiMax));
 }
 
 void FreeMotion::velocities(double t, double* sdot, double* phidot, double* phi) const {
@@ -161,8 +202,7 @@ std::complex<double> FreeMotion::panelIntegral(double t0, double t1) const {
 
 FreeState FreeMotion::at(double t) const {
     FreeState st;
-    velocities(t, &st.sdot, &st.phidot, &st.phi);
-    st.energy = 0.5 * m_sys.mass * (st.sdot * st.sdot + m_sys.b * m_sys.b * st.phidot * st.phidot);
+    bool interpolated = false; // the velocities from a panel's interpolants
     std::complex<double> z0(m_init.x, m_init.y), z;
     auto dir0 = [this] { return std::complex<double>(std::cos(m_init.phi), std::sin(m_init.phi)); };
     switch (m_case) {
@@ -186,14 +226,18 @@ FreeState FreeMotion::at(double t) const {
             auto it = std::upper_bound(m_panelT.begin(), m_panelT.end(), t);
             int k = std::clamp(static_cast<int>(it - m_panelT.begin()) - 1, 0,
                                static_cast<int>(m_panelT.size()) - 2);
-            if (m_chebCertified[k]) {
-                const double a = m_panelT[k], b = m_panelT[k + 1];
-                double f[2];
+            const double a = m_panelT[k], b = m_panelT[k + 1];
+            double f[kSeries];
+            if (m_positionCertified[k] || m_velocityCertified[k])
                 cheb::evaluateMany(m_panelCheb[k], (2 * t - (a + b)) / (b - a), f);
-                z = m_panelZ[k] + std::complex<double>(f[0], f[1]);
-            } else {
-                z = m_panelZ[k] + panelIntegral(m_panelT[k], t);
+            if (m_velocityCertified[k]) {
+                st.sdot = f[kSdot];
+                st.phidot = f[kPhidot];
+                st.phi = m_panelPhi[k] + f[kPhi];
+                interpolated = true;
             }
+            z = m_panelZ[k] + (m_positionCertified[k] ? std::complex<double>(f[kZx], f[kZy])
+                                                      : panelIntegral(a, t));
         } else if (span >= m_tail) {
             // beyond the tail the heading is constant and |sdot| = V (to 1e-17)
             double sdot, phidot, phi;
@@ -222,6 +266,9 @@ FreeState FreeMotion::at(double t) const {
     }
     st.x = z.real();
     st.y = z.imag();
+    if (!interpolated)
+        velocities(t, &st.sdot, &st.phidot, &st.phi);
+    st.energy = 0.5 * m_sys.mass * (st.sdot * st.sdot + m_sys.b * m_sys.b * st.phidot * st.phidot);
     return st;
 }
 

@@ -23,11 +23,14 @@ struct FreeState {
 /// (docs/physics.md §4): sdot = V tanh(kt + c), phidot = sigma (V/b) sech(kt + c),
 /// phi = phi0 + sigma (b/a)(gd(kt + c) - gd(c)), k = aV/b^2, c = asinh(sdot0/(b|phidot0|)),
 /// with gd(kt + c) - gd(c) = 2 atan(sinh(kt/2)/cosh(c + kt/2)) (no cancellation).
-/// Position: z = x + iy integrates sdot e^{i phi} by 8-point Gauss-Legendre panels narrower than
-/// both time scales (1/k and b/V), so it is exact to rounding; inside a panel z is the integral of
-/// the integrand's degree-16 Chebyshev interpolant (certified by its tail to 1e-15 of the panel's
-/// displacement, else Gauss-Legendre over the partial panel); past |kt + c| > 40 the heading is
-/// constant to 1e-17 and the body moves on a straight line, also in closed form.
+/// Position: z = x + iy integrates sdot e^{i phi} over panels narrower than both time scales
+/// (1/k and b/V) as the integral of the integrand's degree-16 Chebyshev interpolant, certified
+/// to 1e-15 of the panel's displacement by its tail and by the exact integrand at a point between
+/// the interpolation points (a panel that fails is integrated by 8-point Gauss-Legendre, whole and
+/// partial). Inside a panel sdot, phidot and phi come from their degree-16 interpolants,
+/// certified the same way to 1e-15 of V, V/b and of phi (else from the closed forms). Past
+/// |kt + c| > 40 the heading is constant to 1e-17 and the body moves on a straight line, also in
+/// closed form.
 class FreeMotion {
   public:
     FreeMotion(const DerivedSystem& system, const FreeInitial& initial, double horizon);
@@ -52,7 +55,9 @@ class FreeMotion {
     enum class Case { Rest, Line, Circle, General };
     void velocities(double t, double* sdot, double* phidot, double* phi) const;
     std::complex<double> panelIntegral(double t0, double t1) const;
-    void buildInterpolants();
+    // appends the panel [t0, t1] with its interpolants, halved while its position is not
+    // certified (up to three times)
+    void addPanel(double t0, double t1, int depth);
 
     DerivedSystem m_sys;
     FreeInitial m_init;
@@ -63,10 +68,14 @@ class FreeMotion {
     double m_tail = 0;                  // time after which the heading is constant
     std::vector<double> m_panelT;
     std::vector<std::complex<double>> m_panelZ;
-    // per panel: Chebyshev coefficients of z - z(panel start) in the panel's local variable
-    // (the integral of the degree-16 interpolant of sdot e^{i phi}), when certified
-    std::vector<std::array<std::array<double, 2>, 18>> m_panelCheb;
-    std::vector<char> m_chebCertified;
+    // per panel, Chebyshev coefficients in the panel's local variable of: x and y - z(panel
+    // start) (the integral of the degree-16 interpolant of sdot e^{i phi}), and sdot, phidot,
+    // phi - phi(panel start) (degree 16); each group used where certified, else the panel is
+    // integrated by the Gauss rule and the velocities are evaluated
+    enum Series { kZx, kZy, kSdot, kPhidot, kPhi, kSeries = 6 };
+    std::vector<std::array<std::array<double, kSeries>, 18>> m_panelCheb;
+    std::vector<char> m_positionCertified, m_velocityCertified;
+    std::vector<double> m_panelPhi; // phi at each panel's start: its series is of phi - that
 };
 
 } // namespace chaplygin
