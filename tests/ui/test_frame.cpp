@@ -56,7 +56,7 @@ class PaintRegions : public QObject {
 };
 
 // what the window shows of the canvas (the offscreen screen grabs the backing store) against
-// what a full repaint of the canvas draws now: the same pixels, but for the resampling of a
+// what a full repaint of the canvas draws now, its cached layers dropped: the same pixels, but for the resampling of a
 // turned body image, whose fixed-point steps start where a repainted span starts (a level or two
 // on a few pixels; a stale body or a missed trail end differs by far more)
 bool showsAFullRepaint(MainWindow& window) {
@@ -67,6 +67,7 @@ bool showsAFullRepaint(MainWindow& window) {
             ->grabWindow(window.winId(), at.x(), at.y(), canvas->width(), canvas->height())
             .toImage()
             .convertToFormat(QImage::Format_RGB32);
+    canvas->dropLayers(); // the reference draws the static layer and the whole trails anew
     QImage full = canvas->grab().toImage().convertToFormat(QImage::Format_RGB32);
     if (shown.isNull() || shown.size() != full.size())
         return false;
