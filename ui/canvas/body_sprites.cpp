@@ -12,6 +12,7 @@ namespace {
 constexpr std::size_t kSprites = 6;       // controlled, free and vakonomic, with room to spare
 constexpr double kLargestSpritePx = 1536; // larger bodies are drawn directly
 constexpr double kBandDevicePx = 64;      // rows of a turned image drawn at once
+constexpr int kMostBands = 64;
 
 // the radius [px] around P that holds the body and its pens (the widest is 4 px, scaled)
 double radiusPx(double pixelsPerMetre, const SystemSpec& spec, const DerivedSystem& derived,
@@ -86,8 +87,17 @@ void BodySprites::paint(QPainter& painter, const QTransform& world, double pixel
         return;
     }
     // the turned image's rows are cut at the body's box whatever the repainted region, so
-    // that a partial repaint resamples them as a full one does
-    const QRect box = pixelBounds(world, pixelsPerMetre, spec, derived, pose, look).toAlignedRect();
+    // that a partial repaint resamples them as a full one does; only what the painter may
+    // change (a body far off the view is not drawn: its box in int pixels could overflow)
+    const QRectF reach =
+        painter.hasClipping() ? painter.clipBoundingRect() : QRectF(painter.window());
+    const QRect box = pixelBounds(world, pixelsPerMetre, spec, derived, pose, look)
+                          .intersected(reach)
+                          .toAlignedRect();
+    if (box.isEmpty()) {
+        painter.restore();
+        return;
+    }
     const QTransform base = painter.transform();
     // image pixels -> the body's frame [m] -> the world -> the widget
     const double s = pixelsPerMetre, c = sprite->centre;
@@ -101,7 +111,9 @@ void BodySprites::paint(QPainter& painter, const QTransform& world, double pixel
     // in bands of whole rows: Qt resamples a row the same whichever band it is in, and a band's
     // rows stay fewer than the batch of spans that Qt would hand to its thread pool (waking
     // threads and waiting for them costs more than the band's resampling)
-    const int band = std::max(1, int(kBandDevicePx / painter.device()->devicePixelRatioF()));
+    int band = std::max(1, int(kBandDevicePx / painter.device()->devicePixelRatioF()));
+    if (box.height() > kMostBands * band) // zoomed far in: one call, whatever Qt then does
+        band = box.height();
     const bool clipped = painter.hasClipping();
     const QRegion clip = clipped ? painter.clipRegion() : QRegion();
     for (int top = box.top(); top <= box.bottom(); top += band) {
