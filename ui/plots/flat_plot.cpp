@@ -14,7 +14,7 @@ FlatPlot::FlatPlot(QWidget* parent) : QCustomPlot(parent) {
 void FlatPlot::paintEvent(QPaintEvent* event) {
     const bool opaque = mBackgroundBrush.style() == Qt::SolidPattern &&
                         mBackgroundBrush.color().alpha() == 255 && mBackgroundPixmap.isNull();
-    if (!opaque) {
+    if (!opaque || !m_flattened) {
         QCustomPlot::paintEvent(event);
         return;
     }

@@ -15,8 +15,11 @@ class FlatPlot : public QCustomPlot {
   public:
     explicit FlatPlot(QWidget* parent = nullptr);
 
-    /// Whether the next repaint composites the buffers anew (after a replot or a resize).
-    bool flatImageStale() const { return m_stale; }
+    /// Off: paints as QCustomPlot does (the reference of the tests).
+    void setFlattened(bool on) {
+        m_flattened = on;
+        update();
+    }
 
   protected:
     void paintEvent(QPaintEvent* event) override;
@@ -24,6 +27,7 @@ class FlatPlot : public QCustomPlot {
   private:
     QImage m_flat;
     bool m_stale = true;
+    bool m_flattened = true;
 };
 
 } // namespace chaplygin::ui
