@@ -4,6 +4,7 @@
 #include <QPainter>
 #include <QPixmap>
 
+#include <cmath>
 #include <type_traits>
 
 namespace chaplygin::ui {
@@ -15,6 +16,18 @@ void blit(QPainter& painter, const QRegion& region, const Layer& layer, QPoint o
     if (region.isEmpty() || layer.isNull())
         return;
     const qreal dpr = layer.devicePixelRatio();
+    if (dpr != std::round(dpr)) {
+        // a rectangle's edges would fall between device pixels: the whole layer, clipped
+        painter.save();
+        painter.setClipRegion(region, Qt::IntersectClip);
+        const QRectF target(QPointF(-origin), QSizeF(layer.size()) / dpr);
+        if constexpr (std::is_same_v<Layer, QPixmap>)
+            painter.drawPixmap(target, layer, QRectF(layer.rect()));
+        else
+            painter.drawImage(target, layer, QRectF(layer.rect()));
+        painter.restore();
+        return;
+    }
     const bool clipped = painter.hasClipping();
     const QRegion clip = painter.clipRegion();
     for (const QRect& r : region) {

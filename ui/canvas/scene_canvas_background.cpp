@@ -209,12 +209,21 @@ void SceneCanvas::paintStaticLayer(QPainter& p, const QRegion& region, const Mot
     const QRegion inside = region & drawingArea().toAlignedRect();
     if (!followsWithWorldLayer()) {
         paintBackground();
-        if (now) {
+        if (now && dpr == std::round(dpr)) {
             updateTrailLayer(*now, m_background, {});
             blitRegion(p, inside, m_trailLayer);
             blitRegion(p, region - inside, m_background);
-        } else {
-            blitRegion(p, region, m_background);
+            return;
+        }
+        // a fractional device pixel ratio: the trails drawn on the widget, as a layer at that
+        // ratio would not draw them
+        blitRegion(p, region, m_background);
+        if (now) {
+            p.save();
+            p.setRenderHint(QPainter::Antialiasing, true);
+            p.setClipRect(drawingArea());
+            paintTrails(p, *now, inside);
+            p.restore();
         }
         return;
     }
