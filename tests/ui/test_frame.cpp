@@ -6,6 +6,8 @@
 #include "canvas/vector_painter.h"
 #include "document/scene_document.h"
 #include "gui_test_support.h"
+#include "plots/flat_plot.h"
+#include "plots/plots_panel.h"
 #include "scene/presets.h"
 #include "scene/solution.h"
 #include "shell/main_window.h"
@@ -56,9 +58,9 @@ class PaintRegions : public QObject {
 };
 
 // what the window shows of the canvas (the offscreen screen grabs the backing store) against
-// what a full repaint of the canvas draws now: the same pixels, but for the resampling of a
-// turned body image, whose fixed-point steps start where a repainted span starts (a level or two
-// on a few pixels; a stale body or a missed trail end differs by far more)
+// what a full repaint of the canvas draws now, its cached layers dropped: the same pixels, but for
+// the resampling of a turned body image, whose fixed-point steps start where a repainted span
+// starts (a level or two on a few pixels; a stale body or a missed trail end differs by far more)
 bool showsAFullRepaint(MainWindow& window) {
     SceneCanvas* canvas = window.canvas();
     QPoint at = canvas->mapTo(&window, QPoint(0, 0));
@@ -67,6 +69,7 @@ bool showsAFullRepaint(MainWindow& window) {
             ->grabWindow(window.winId(), at.x(), at.y(), canvas->width(), canvas->height())
             .toImage()
             .convertToFormat(QImage::Format_RGB32);
+    canvas->dropLayers(); // the reference draws the static layer and the whole trails anew
     QImage full = canvas->grab().toImage().convertToFormat(QImage::Format_RGB32);
     if (shown.isNull() || shown.size() != full.size())
         return false;
@@ -180,6 +183,8 @@ class TestFrame : public QObject {
     void followingShiftsTheStaticLayerAsRedrawingWould();
     void trailStrokesWithinAnAreaDrawWhatDrawPolylineDraws();
     void fastFramesAfterZoomAndPanRepaintAsAFullRepaintWould();
+    void trailLayerKeepsStepAcrossLoopsJumpsAndFollowing();
+    void flatPlotsShowWhatQCustomPlotPaints();
 
   private:
     std::unique_ptr<MainWindow> m_window;
@@ -483,6 +488,109 @@ void TestFrame::fastFramesAfterZoomAndPanRepaintAsAFullRepaintWould() {
     QCoreApplication::processEvents();
     play(45);
     QVERIFY(painted.count > 0);
+}
+
+void TestFrame::trailLayerKeepsStepAcrossLoopsJumpsAndFollowing() {
+    // the trails live on a layer that a frame restrokes only where their ends moved; through
+    // the end of a loop (the trails start again), jumps, the third body switched off and on
+    // and following the body on and off, the window shows what drawing everything anew draws
+    Scene s = m_window->document()->scene();
+    for (int i = 0; i < kVectorKinds; ++i)
+        (s.vectors.*vectorToggle(VectorKind(i))).shown = true;
+    m_window->loadScene(s);
+    m_window->document()->flush();
+    SceneCanvas* canvas = m_window->canvas();
+    Playback* playback = m_window->playback();
+    playback->setLoop(true);
+    playback->setSpeedFactor(4);
+    PaintRegions painted;
+    canvas->installEventFilter(&painted);
+    const int whole = canvas->width() * canvas->height();
+    int partial = 0, frames = 0;
+    auto play = [&](int count) {
+        for (int frame = 0; frame < count; ++frame) {
+            painted.region = {};
+            playback->advance(1.0 / 60);
+            QCoreApplication::processEvents();
+            partial += area(painted.region) < whole / 2 ? 1 : 0;
+            ++frames;
+        }
+    };
+    playback->seek(playback->tEnd() - 0.5);
+    QCoreApplication::processEvents();
+    play(20); // past the end: the loop starts again, the trails are short
+    QVERIFY(playback->time() < 1.0);
+    QVERIFY(showsAFullRepaint(*m_window));
+    play(30);
+    QVERIFY(showsAFullRepaint(*m_window));
+    playback->seek(playback->time() + 1.3); // a jump: the new ends span many vertices
+    QCoreApplication::processEvents();
+    QVERIFY(showsAFullRepaint(*m_window));
+    canvas->setShowVakonomic(false);
+    QCoreApplication::processEvents();
+    play(10);
+    QVERIFY(showsAFullRepaint(*m_window));
+    canvas->setShowVakonomic(true);
+    QCoreApplication::processEvents();
+    play(10);
+    QVERIFY(showsAFullRepaint(*m_window));
+    canvas->setFollowBody(true);
+    QCoreApplication::processEvents();
+    play(60);
+    QVERIFY(showsAFullRepaint(*m_window));
+    canvas->setFollowBody(false);
+    QCoreApplication::processEvents();
+    play(10);
+    QVERIFY(showsAFullRepaint(*m_window));
+    // most frames repainted what moves, not the canvas
+    QVERIFY2(partial >= frames * 3 / 4,
+             qPrintable(QStringLiteral("%1 of %2").arg(partial).arg(frames)));
+}
+
+void TestFrame::flatPlotsShowWhatQCustomPlotPaints() {
+    // each plot repaints from one image of its buffers composited after a replot: the window
+    // shows what QCustomPlot's own paint draws, after the cursor moved over many frames and
+    // after a parameter change redrew the curves
+    Playback* playback = m_window->playback();
+    PlotsPanel* plots = m_window->plotsPanel();
+    auto showsQCustomPlotsPaint = [&](int i) {
+        auto* plot = dynamic_cast<FlatPlot*>(plots->plot(i));
+        if (!plot)
+            return false;
+        QPoint at = plot->mapTo(m_window.get(), QPoint(0, 0));
+        QImage shown =
+            m_window->screen()
+                ->grabWindow(m_window->winId(), at.x(), at.y(), plot->width(), plot->height())
+                .toImage()
+                .convertToFormat(QImage::Format_RGB32);
+        plot->setFlattened(false);
+        QImage own = plot->grab().toImage().convertToFormat(QImage::Format_RGB32);
+        plot->setFlattened(true);
+        QCoreApplication::processEvents();
+        return !own.isNull() && shown == own;
+    };
+    playback->seek(1.0);
+    plots->replotNow();
+    QCoreApplication::processEvents();
+    for (int i = 0; i < 4; ++i)
+        QVERIFY2(showsQCustomPlotsPaint(i), qPrintable(QString::number(i)));
+    playback->setSpeedFactor(4);
+    for (int frame = 0; frame < 45; ++frame) {
+        playback->advance(1.0 / 60);
+        QCoreApplication::processEvents();
+    }
+    for (int i = 0; i < 4; ++i)
+        QVERIFY2(showsQCustomPlotsPaint(i), qPrintable(QString::number(i)));
+    // new parameters: new curves, replotted on the next turn of the event loop
+    QImage before = plots->plot(0)->grab().toImage();
+    Scene s = m_window->document()->scene();
+    s.system.params["b"] = 1.7 * s.system.params["b"];
+    m_window->loadScene(s);
+    m_window->document()->flush();
+    QTest::qWait(50);
+    QVERIFY(plots->plot(0)->grab().toImage() != before);
+    for (int i = 0; i < 4; ++i)
+        QVERIFY2(showsQCustomPlotsPaint(i), qPrintable(QString::number(i)));
 }
 
 QTEST_MAIN(TestFrame)

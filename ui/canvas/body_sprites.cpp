@@ -11,6 +11,8 @@ namespace {
 
 constexpr std::size_t kSprites = 6;       // controlled, free and vakonomic, with room to spare
 constexpr double kLargestSpritePx = 1536; // larger bodies are drawn directly
+constexpr double kBandDevicePx = 64;      // rows of a turned image drawn at once
+constexpr int kMostBands = 64;
 
 // the radius [px] around P that holds the body and its pens (the widest is 4 px, scaled)
 double radiusPx(double pixelsPerMetre, const SystemSpec& spec, const DerivedSystem& derived,
@@ -85,21 +87,44 @@ void BodySprites::paint(QPainter& painter, const QTransform& world, double pixel
         return;
     }
     // the turned image's rows are cut at the body's box whatever the repainted region, so
-    // that a partial repaint resamples them as a full one does
-    painter.setClipRect(
-        pixelBounds(world, pixelsPerMetre, spec, derived, pose, look).toAlignedRect(),
-        Qt::IntersectClip);
+    // that a partial repaint resamples them as a full one does; only what the painter may
+    // change (a body far off the view is not drawn: its box in int pixels could overflow)
+    const QRectF reach =
+        painter.hasClipping() ? painter.clipBoundingRect() : QRectF(painter.window());
+    const QRect box = pixelBounds(world, pixelsPerMetre, spec, derived, pose, look)
+                          .intersected(reach)
+                          .toAlignedRect();
+    if (box.isEmpty()) {
+        painter.restore();
+        return;
+    }
+    const QTransform base = painter.transform();
     // image pixels -> the body's frame [m] -> the world -> the widget
     const double s = pixelsPerMetre, c = sprite->centre;
     QTransform toBody(1 / s, 0, 0, -1 / s, -c / s, c / s);
     QTransform pose2d;
     pose2d.translate(pose.x, pose.y);
     pose2d.rotate(pose.phi * 180.0 / M_PI);
-    painter.setTransform(toBody * pose2d * world);
     // the image's margin is transparent: its own edges need no antialiasing
     painter.setRenderHint(QPainter::Antialiasing, false);
     painter.setRenderHint(QPainter::SmoothPixmapTransform, true);
-    painter.drawImage(QPointF(0, 0), sprite->image);
+    // in bands of whole rows: Qt resamples a row the same whichever band it is in, and a band's
+    // rows stay fewer than the batch of spans that Qt would hand to its thread pool (waking
+    // threads and waiting for them costs more than the band's resampling)
+    int band = std::max(1, int(kBandDevicePx / painter.device()->devicePixelRatioF()));
+    if (box.height() > kMostBands * band) // zoomed far in: one call, whatever Qt then does
+        band = box.height();
+    const bool clipped = painter.hasClipping();
+    const QRegion clip = clipped ? painter.clipRegion() : QRegion();
+    for (int top = box.top(); top <= box.bottom(); top += band) {
+        painter.setTransform(base);
+        painter.setClipRect(
+            QRect(box.left(), top, box.width(), std::min(band, box.bottom() + 1 - top)));
+        if (clipped)
+            painter.setClipRegion(clip, Qt::IntersectClip);
+        painter.setTransform(toBody * pose2d * world);
+        painter.drawImage(QPointF(0, 0), sprite->image);
+    }
     painter.restore();
 }
 

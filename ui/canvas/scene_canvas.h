@@ -7,6 +7,7 @@
 
 #include <QPixmap>
 
+#include <QImage>
 #include <QPointF>
 #include <QWidget>
 
@@ -49,6 +50,8 @@ class SceneCanvas : public QWidget {
     QRectF drawingArea() const;
     /// The world rectangle Fit frames: the path and every body over the whole horizon.
     QRectF sceneBounds() const;
+    /// Forgets the cached layers (static layer, trails): the next paint draws everything anew.
+    void dropLayers();
 
   public slots:
     void setTime(double t);
@@ -89,9 +92,18 @@ class SceneCanvas : public QWidget {
     void paintLegend(QPainter& p) const;
     void paintTimeReadout(QPainter& p, double tEnd) const;
     void paintBackground();
-    /// The static layer onto the widget: the cached background, or while following the body the
-    /// world layer shifted by whole pixels under the legend and the scale bar.
-    void paintStaticLayer(QPainter& p);
+    /// The static layer onto the widget within region: the cached background, or while following
+    /// the body the world layer shifted by whole pixels under the legend and the scale bar; with
+    /// the trails up to now in the drawing area, copied from the trail layer.
+    void paintStaticLayer(QPainter& p, const QRegion& region, const MotionSample* now);
+    /// Brings the trail layer (the static layer `base` with the trails drawn on it; its pixel at
+    /// `origin` + p lies under the widget's p) to now: anew when the base or the trails' start
+    /// changed, else only where the trails' ends moved since the layer's time, restored from the
+    /// base and stroked again there.
+    void updateTrailLayer(const MotionSample& now, const QPixmap& base, QPoint origin);
+    /// The boxes [px] of the trails, each from its last vertex at or before time `from` to its
+    /// end now.
+    std::vector<QRectF> trailEndsBounds(const MotionSample& now, double from) const;
     /// Repaints what moved from time `from` (and the view centred on `centre`) to m_time: the
     /// bodies, their arrows and the new end of each trail where that suffices, else the whole
     /// canvas. Following the body, the drawing area's pixels are scrolled by the whole pixels
@@ -146,7 +158,10 @@ class SceneCanvas : public QWidget {
     int m_worldMargin = 0;
     BackgroundKey m_legendKey;
     QPixmap m_legendLayer;
-    QPixmap m_background; // grid, path and legend
+    QPixmap m_background;   // grid, path and legend
+    QImage m_trailLayer;    // the static layer with the trails up to m_trailsTime drawn on it
+    qint64 m_trailBase = 0; // the cache key of the static layer it was made from
+    double m_trailsTime = 0;
     VectorLayer m_vectors;
     BodySprites m_bodies;
     CanvasStyle m_style;

@@ -1,5 +1,6 @@
 #include "canvas/scene_canvas.h"
 
+#include "canvas/layer_blit.h"
 #include "document/scene_document.h"
 
 #include <QPainter>
@@ -195,11 +196,35 @@ bool SceneCanvas::followsWithWorldLayer() const {
     return m_follow && !m_drawMode && dpr == std::round(dpr) && m_document->solution();
 }
 
-void SceneCanvas::paintStaticLayer(QPainter& p) {
+void SceneCanvas::dropLayers() {
+    m_background = {};
+    m_worldLayer = {};
+    m_legendLayer = {};
+    m_trailLayer = {};
+}
+
+void SceneCanvas::paintStaticLayer(QPainter& p, const QRegion& region, const MotionSample* now) {
     const qreal dpr = devicePixelRatioF();
+    // the trails within the drawing area, the static layer around it
+    const QRegion inside = region & drawingArea().toAlignedRect();
     if (!followsWithWorldLayer()) {
         paintBackground();
-        p.drawPixmap(0, 0, m_background);
+        if (now && dpr == std::round(dpr)) {
+            updateTrailLayer(*now, m_background, {});
+            blitRegion(p, inside, m_trailLayer);
+            blitRegion(p, region - inside, m_background);
+            return;
+        }
+        // a fractional device pixel ratio: the trails drawn on the widget, as a layer at that
+        // ratio would not draw them
+        blitRegion(p, region, m_background);
+        if (now) {
+            p.save();
+            p.setRenderHint(QPainter::Antialiasing, true);
+            p.setClipRect(drawingArea());
+            paintTrails(p, *now, inside);
+            p.restore();
+        }
         return;
     }
     BackgroundKey key = backgroundKey();
@@ -223,8 +248,14 @@ void SceneCanvas::paintStaticLayer(QPainter& p) {
         paintPath(w, world);
     }
     // the world moves left and down as the centre goes right and up
-    const QPointF source(m_worldMargin + qRound(shift.x()), m_worldMargin - qRound(shift.y()));
-    p.drawPixmap(QPointF(0, 0), m_worldLayer, QRectF(source * dpr, QSizeF(size()) * dpr));
+    const QPoint source(m_worldMargin + qRound(shift.x()), m_worldMargin - qRound(shift.y()));
+    if (now) {
+        updateTrailLayer(*now, m_worldLayer, source);
+        blitRegion(p, inside, m_trailLayer, source);
+        blitRegion(p, region - inside, m_worldLayer, source);
+    } else {
+        blitRegion(p, region, m_worldLayer, source);
+    }
     p.setRenderHint(QPainter::Antialiasing, true);
     paintScaleBar(p);
     if (!m_legendVisible)

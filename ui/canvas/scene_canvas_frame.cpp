@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 // the canvas's moving layer, painted every frame over the static one: trails, bodies, arrows
 // and the time read-out
@@ -37,11 +38,40 @@ void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now, const QRegio
               m_style.pen(m_style.vakonomic(), std::max(0.75 * w, 1.5), Qt::DashDotLine));
 }
 
+std::vector<QRectF> SceneCanvas::trailEndsBounds(const MotionSample& now, double from) const {
+    const QTransform world = worldTransform();
+    std::vector<QRectF> boxes;
+    const double pad = 2 * std::max(m_style.trailWidth, 1.5) * m_style.lineScale + 3;
+    const PlotSeries& s = m_document->series();
+    auto trail = [&](const QVector<double>& t, const QVector<double>& x, const QVector<double>& y,
+                     double endX, double endY) {
+        QRectF box;
+        auto point = [&](double px, double py) {
+            QPointF c = world.map(QPointF(px, py));
+            QRectF r(c.x() - pad, c.y() - pad, 2 * pad, 2 * pad);
+            box = box.isNull() ? r : box.united(r);
+        };
+        auto after = std::upper_bound(t.begin(), t.end(), std::min(from, m_time));
+        for (auto i = std::max<qsizetype>(after - t.begin() - 1, 0);
+             i < std::min({t.size(), x.size(), y.size()}) && t[i] <= m_time; ++i)
+            point(x[i], y[i]);
+        point(endX, endY);
+        boxes.push_back(box);
+    };
+    trail(s.t, s.x, s.y, now.x, now.y);
+    trail(s.freeT, s.freeX, s.freeY, now.free.x, now.free.y);
+    if (m_showVakonomic)
+        trail(s.vakT, s.vakX, s.vakY, now.vak.x, now.vak.y);
+    return boxes;
+}
+
 QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& now,
                                 double from) const {
     const QTransform world = worldTransform();
     QRectF box;
     auto add = [&](const QRectF& r) { box = box.isNull() ? r : box.united(r); };
+    for (const QRectF& r : trailEndsBounds(now, from))
+        add(r);
     const SystemSpec& spec = solution.scene().system;
     BodyLook look{m_style.body, m_style.bodyOpacity, m_style.lineScale};
     auto body = [&](double x, double y, double phi) {
@@ -51,25 +81,6 @@ QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& no
     body(now.free.x, now.free.y, now.free.phi);
     if (m_showVakonomic)
         body(now.vak.x, now.vak.y, now.vak.phi);
-    // each trail from its last vertex at or before `from` to its end now
-    const double pad = 2 * std::max(m_style.trailWidth, 1.5) * m_style.lineScale + 3;
-    auto point = [&](double x, double y) {
-        QPointF c = world.map(QPointF(x, y));
-        add(QRectF(c.x() - pad, c.y() - pad, 2 * pad, 2 * pad));
-    };
-    const PlotSeries& s = m_document->series();
-    auto trail = [&](const QVector<double>& t, const QVector<double>& x, const QVector<double>& y,
-                     double endX, double endY) {
-        auto after = std::upper_bound(t.begin(), t.end(), std::min(from, m_time));
-        for (auto i = std::max<qsizetype>(after - t.begin() - 1, 0);
-             i < std::min({t.size(), x.size(), y.size()}) && t[i] <= m_time; ++i)
-            point(x[i], y[i]);
-        point(endX, endY);
-    };
-    trail(s.t, s.x, s.y, now.x, now.y);
-    trail(s.freeT, s.freeX, s.freeY, now.free.x, now.free.y);
-    if (m_showVakonomic)
-        trail(s.vakT, s.vakX, s.vakY, now.vak.x, now.vak.y);
     add(m_vectors.bounds(m_document->solution(), m_document->scene().vectors, now, world));
     // only the widget is painted: a body far outside the view (a wild zoom) must not overflow int
     if (!std::isfinite(box.x()) || !std::isfinite(box.y()) || !std::isfinite(box.width()) ||
@@ -78,6 +89,44 @@ QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& no
     return box.intersected(QRectF(rect()).adjusted(-4, -4, 4, 4))
         .toAlignedRect()
         .adjusted(-2, -2, 2, 2);
+}
+
+void SceneCanvas::updateTrailLayer(const MotionSample& now, const QPixmap& base, QPoint origin) {
+    const qreal dpr = base.devicePixelRatio();
+    // the layer's extent in the widget's pixels
+    const QRect extent(-origin, (QSizeF(base.size()) / dpr).toSize());
+    QRegion area;
+    if (m_trailLayer.isNull() || m_trailBase != base.cacheKey() || m_time < m_trailsTime) {
+        m_trailLayer = base.toImage().convertToFormat(QImage::Format_RGB32);
+        m_trailLayer.setDevicePixelRatio(dpr);
+        m_trailBase = base.cacheKey();
+        area = extent;
+    } else if (m_time > m_trailsTime) {
+        for (const QRectF& r : trailEndsBounds(now, m_trailsTime)) {
+            if (!std::isfinite(r.x()) || !std::isfinite(r.y()) || !std::isfinite(r.width()) ||
+                !std::isfinite(r.height())) {
+                area = extent;
+                break;
+            }
+            area += r.intersected(QRectF(extent)).toAlignedRect();
+        }
+    }
+    m_trailsTime = m_time;
+    if (area.isEmpty())
+        return;
+    QPainter p(&m_trailLayer);
+    p.translate(origin);
+    p.setClipRegion(area);
+    // where the ends moved, the base's pixels first
+    if (area != QRegion(extent)) {
+        p.setCompositionMode(QPainter::CompositionMode_Source);
+        for (const QRect& r : area)
+            p.drawPixmap(QRectF(r), base,
+                         QRectF(QPointF(r.topLeft() + origin) * dpr, QSizeF(r.size()) * dpr));
+        p.setCompositionMode(QPainter::CompositionMode_SourceOver);
+    }
+    p.setRenderHint(QPainter::Antialiasing, true);
+    paintTrails(p, now, area);
 }
 
 void SceneCanvas::updateMoving(double from, QPointF centre) {
@@ -123,14 +172,15 @@ void SceneCanvas::updateMoving(double from, QPointF centre) {
 
 void SceneCanvas::paintEvent(QPaintEvent* e) {
     QPainter p(this);
-    paintStaticLayer(p);
-    p.setRenderHint(QPainter::Antialiasing, true);
     const auto& solution = m_document->solution();
+    std::optional<MotionSample> now;
+    if (solution)
+        now = solution->at(m_time);
+    paintStaticLayer(p, e->region(), now ? &*now : nullptr);
+    p.setRenderHint(QPainter::Antialiasing, true);
     if (solution) {
-        MotionSample now = solution->at(m_time);
         p.save();
         p.setClipRect(drawingArea());
-        paintTrails(p, now, e->region() & drawingArea().toAlignedRect());
         paintPinnedRuns(p, *PinSet::of(m_document), worldTransform(), m_time, QPointF(10, 42));
         const SystemSpec& spec = solution->scene().system;
         const QTransform world = worldTransform();
@@ -139,15 +189,15 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         auto body = [&](const BodyPose& pose, const QColor& color, bool ghost) {
             m_bodies.paint(p, world, m_scale, spec, solution->system(), pose, color, ghost, look);
         };
-        body({now.x, now.y, now.phi}, m_style.controlled(), false);
-        body({now.free.x, now.free.y, now.free.phi}, m_style.free(), true);
+        body({now->x, now->y, now->phi}, m_style.controlled(), false);
+        body({now->free.x, now->free.y, now->free.phi}, m_style.free(), true);
         if (m_showVakonomic)
-            body({now.vak.x, now.vak.y, now.vak.phi}, m_style.vakonomic(), true);
+            body({now->vak.x, now->vak.y, now->vak.phi}, m_style.vakonomic(), true);
         p.restore();
-        m_vectors.paint(p, solution, m_document->scene().vectors, now, worldTransform(), m_scale,
+        m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform(), m_scale,
                         rect(), e->region());
         paintTimeReadout(p, solution->tEnd());
-        m_movingPainted = movingBounds(*solution, now, m_time);
+        m_movingPainted = movingBounds(*solution, *now, m_time);
     } else {
         m_movingPainted = {};
     }

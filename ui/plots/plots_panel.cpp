@@ -2,6 +2,7 @@
 
 #include "document/pin_set.h"
 #include "document/scene_document.h"
+#include "plots/flat_plot.h"
 #include "plots/pinned_plots.h"
 #include "plots/plot_context_menu.h"
 
@@ -19,7 +20,7 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
     m_grid->setContentsMargins(2, 2, 2, 2);
     m_grid->setSpacing(2);
     for (int i = 0; i < 4; ++i) {
-        auto* plot = new QCustomPlot;
+        auto* plot = new FlatPlot;
         plot->setObjectName(plotFileStem(kKinds[i]));
         plot->setMinimumSize(200, 110);
         plot->setToolTip(plotTitle(kKinds[i]) +
