@@ -12,14 +12,19 @@ namespace {
 
 constexpr double kTimeTolerance = 1e-13; // bound on t over a panel, relative to its duration
 
-// t(xi) = tau on a certified panel of duration D: Newton from the cubic Hermite inverse,
+// t(xi) = tau on a certified panel of duration D: Newton from the quintic Hermite interpolant of
+// the inverse xi(tau/D) (its value, slope D/r and curvature -D^2 r'/r^3 at both ends, r = dt/dxi),
 // safeguarded by bisection. Stops once the step is below 1e-9: the error after it is of the
 // order of the step squared (quadratic convergence), below rounding.
 double solveXi(const TimeLaw::TimePanel& p, double tau, double D) {
-    const double th = std::clamp(tau / D, 0.0, 1.0), th2 = th * th, th3 = th2 * th;
+    const double th = std::clamp(tau / D, 0.0, 1.0), th2 = th * th, th3 = th2 * th, th4 = th3 * th,
+                 th5 = th4 * th;
     const double m0 = D / p.rateStart, m1 = D / p.rateEnd;
-    double xi = -(2 * th3 - 3 * th2 + 1) + (-2 * th3 + 3 * th2) + (th3 - 2 * th2 + th) * m0 +
-                (th3 - th2) * m1;
+    const double q0 = -m0 * m0 * m0 * p.rateSlopeStart / D, q1 = -m1 * m1 * m1 * p.rateSlopeEnd / D;
+    const double end = 10 * th3 - 15 * th4 + 6 * th5; // the value basis at 1 (and 1 - it at 0)
+    double xi = -(1 - end) + end + (th - 6 * th3 + 8 * th4 - 3 * th5) * m0 +
+                (-4 * th3 + 7 * th4 - 3 * th5) * m1 + 0.5 * (th2 - 3 * th3 + 3 * th4 - th5) * q0 +
+                0.5 * (th3 - 2 * th4 + th5) * q1;
     double lo = -1, hi = 1;
     xi = std::clamp(xi, lo, hi);
     for (int iter = 0; iter < 60; ++iter) {
@@ -133,6 +138,12 @@ void TimeLaw::buildPanel(int piece, int k, TimePanel& tp) const {
     tp.rows = n + 2;
     tp.rateStart = r[n][0];
     tp.rateEnd = r[0][0];
+    // dr/dxi at the ends: T_k'(1) = k^2, T_k'(-1) = (-1)^(k+1) k^2
+    tp.rateSlopeStart = tp.rateSlopeEnd = 0;
+    for (int k = 1; k <= n; ++k) {
+        tp.rateSlopeEnd += coef[k] * k * k;
+        tp.rateSlopeStart += (k % 2 ? 1.0 : -1.0) * coef[k] * k * k;
+    }
     // \int |r - p| dxi <= 2 max |r - p|, estimated as twice the tail; and the integral over the
     // panel against the Gauss rule on the exact values (the node times)
     const double gaussDuration = m_nodeTimes[piece][k + 1] - m_nodeTimes[piece][k];

@@ -58,7 +58,8 @@ class TimeLaw {
         std::array<std::array<double, 2>, cheb::kPoints + 1> c{};
         std::size_t rows = cheb::kPoints + 1; ///< the coefficients in use (the rest are zero)
         double rateStart = 0, rateEnd = 0;    ///< dt/dxi at xi = -1 and 1
-        double bound = 0;                     ///< error bound of t over the panel [s]
+        double rateSlopeStart = 0, rateSlopeEnd = 0; ///< d^2t/dxi^2 there
+        double bound = 0;                            ///< error bound of t over the panel [s]
         bool certified = false;
     };
     /// Whether a Curve piece has interpolated panels (not closed form, not a pivot).

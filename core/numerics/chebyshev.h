@@ -19,7 +19,7 @@ const std::array<double, kPoints>& points();
 void coefficients(const double* values, double* coeffs);
 
 /// The transform of degree n (kLowDegree or kDegree) as a row-major (n + 1) x (n + 1) matrix:
-/// c_k = sum_j m[k (n + 1) + j] f_j for f_j at x_j = cos(pi j/n).
+/// c_k = sum_j m[k (n + 1) + j] f_j for f_j at x_j = cos(pi j/n). It is symmetric.
 const double* transform(int degree);
 
 /// Coefficients of Q interpolants of degree n (kLowDegree or kDegree) at once, values and
@@ -29,14 +29,28 @@ inline void coefficientsMany(const std::array<double, Q>* values, int degree,
                              std::array<double, Q>* coeffs) {
     const double* m = transform(degree);
     const int n = degree + 1;
-    for (int k = 0; k < n; ++k) {
-        std::array<double, Q> s{};
-        for (int j = 0; j < n; ++j) {
-            const double w = m[k * n + j];
-            for (std::size_t q = 0; q < Q; ++q)
-                s[q] += w * values[j][q];
+    if constexpr (Q >= 4) {
+        // enough series to fill the vector registers: one coefficient at a time
+        for (int k = 0; k < n; ++k) {
+            std::array<double, Q> s{};
+            for (int j = 0; j < n; ++j) {
+                const double w = m[k * n + j];
+                for (std::size_t q = 0; q < Q; ++q)
+                    s[q] += w * values[j][q];
+            }
+            coeffs[k] = s;
         }
-        coeffs[k] = s;
+    } else {
+        // few series: the n + 1 sums side by side (independent, so they vectorise and pipeline),
+        // each over j in the same order; the transform is symmetric
+        for (int k = 0; k < n; ++k)
+            coeffs[k] = {};
+        for (int j = 0; j < n; ++j)
+            for (int k = 0; k < n; ++k) {
+                const double w = m[j * n + k];
+                for (std::size_t q = 0; q < Q; ++q)
+                    coeffs[k][q] += w * values[j][q];
+            }
     }
 }
 
