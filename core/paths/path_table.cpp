@@ -114,6 +114,35 @@ bool uniformAtGaussNodes(const std::vector<PanelData>& leaves) {
     return true;
 }
 
+// The temporaries of a tabulation, kept per thread from one table to the next: a stroke's knot
+// intervals would otherwise be written to fresh pages every time (page faults were a third of
+// its tabulation). Memory beyond kScratchKeep panels is given back.
+struct Scratch {
+    std::vector<PanelData> initial;
+    std::vector<PanelSums> leaves;
+};
+constexpr std::size_t kScratchKeep = 4096;
+
+struct ScratchLease {
+    Scratch& scratch = instance();
+    ScratchLease() {
+        scratch.initial.clear();
+        scratch.leaves.clear();
+    }
+    ~ScratchLease() {
+        if (scratch.initial.capacity() > kScratchKeep)
+            scratch.initial = {};
+        if (scratch.leaves.capacity() > kScratchKeep)
+            scratch.leaves = {};
+    }
+    ScratchLease(const ScratchLease&) = delete;
+    ScratchLease& operator=(const ScratchLease&) = delete;
+    static Scratch& instance() {
+        thread_local Scratch s;
+        return s;
+    }
+};
+
 } // namespace
 
 PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::size_t halvingBudget)
@@ -165,7 +194,8 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     }
     double lengthScale = std::max({xmax - xmin, ymax - ymin, 1e-300});
 
-    std::vector<PanelData> initial;
+    ScratchLease lease;
+    std::vector<PanelData>& initial = lease.scratch.initial;
     double lengthRef = 0, weightedRef = 0, stiffRef = 0;
     std::vector<double> edges = c.breakpoints();
     const bool piecewise = edges.size() >= 2;
@@ -196,6 +226,8 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     Certifier certifier{
         c,  piecewise, lengthScale, m_ends.start ? u0 : NAN, m_ends.end ? u1 : NAN, 0, {}, {},
         {}, {},        {}};
+    std::swap(certifier.leaves, lease.scratch.leaves); // its capacity, cleared
+    certifier.leaves.clear();
     // interpolants on the refined panels, split where they cannot be certified, within what the
     // refinement left of the budget; the halvings of both are counted in refiner.splits
     auto certifyRefined = [&] {
@@ -276,6 +308,7 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     else
         for (const PanelSums& leaf : certifier.leaves)
             addNode(leaf);
+    std::swap(certifier.leaves, lease.scratch.leaves);
     indexNodes();
     // the interpolated phi starts from atan2 at the panel's start; add the node's 2 pi n
     for (std::size_t k = 0; k < m_cheb.size(); ++k)
