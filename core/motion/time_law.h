@@ -56,8 +56,8 @@ class TimeLaw {
     /// Per panel: coefficients c[k][0] of t - t(panel start) and c[k][1] of dt/dxi.
     struct TimePanel {
         std::array<std::array<double, 2>, cheb::kPoints + 1> c{};
-        std::size_t rows = cheb::kPoints + 1; ///< the coefficients in use (the rest are zero)
-        double rateStart = 0, rateEnd = 0;    ///< dt/dxi at xi = -1 and 1
+        std::size_t rows = 0; ///< the coefficients in use (the rest are zero), once built
+        double rateStart = 0, rateEnd = 0;           ///< dt/dxi at xi = -1 and 1
         double rateSlopeStart = 0, rateSlopeEnd = 0; ///< d^2t/dxi^2 there
         double bound = 0;                            ///< error bound of t over the panel [s]
         bool certified = false;
