@@ -1,11 +1,11 @@
 // The time law against independent GSL quadrature (QAGS at 1e-13), the inflection of
 // y = -sin x, corners, and constant-speed mode.
 #include "common/input_error.h"
+#include "gsl_quadrature.h"
 #include "scene/presets.h"
 #include "scene/solution.h"
 
 #include <gsl/gsl_errno.h>
-#include <gsl/gsl_integration.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,16 +17,7 @@ using namespace chaplygin;
 namespace {
 
 double integrate(const std::function<double(double)>& f, double a, double b) {
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(1000);
-    gsl_function F;
-    F.function = [](double x, void* p) {
-        return (*static_cast<const std::function<double(double)>*>(p))(x);
-    };
-    F.params = const_cast<std::function<double(double)>*>(&f);
-    double result = 0, err = 0;
-    gsl_integration_qags(&F, a, b, 1e-14, 1e-13, 1000, w, &result, &err);
-    gsl_integration_workspace_free(w);
-    return result;
+    return test::gslIntegral(f, a, b, 1e-14, 1e-13, test::GslRule::Extrapolating, 1000);
 }
 
 } // namespace

@@ -1,15 +1,16 @@
 // The path table's interpolants against the exact curve and closed forms, the time law's
 // interpolant against its exact quadrature, and panel counts that do not waste.
+#include "gsl_quadrature.h"
 #include "paths/expression_curve.h"
 #include "paths/path.h"
 #include "paths/spline_curve.h"
 #include "scene/presets.h"
 #include "scene/solution.h"
 
-#include <gsl/gsl_integration.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <numbers>
 #include <random>
@@ -51,15 +52,8 @@ Errors interpolationErrors(const PathTable& table, int samples = 4000) {
 }
 
 // GSL's adaptive Gauss-Kronrod (21 points) on [a, b]
-template <class F> double qag(F f, double a, double b) {
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(200);
-    gsl_function g;
-    g.function = [](double x, void* p) { return (*static_cast<F*>(p))(x); };
-    g.params = &f;
-    double result = 0, err = 0;
-    gsl_integration_qag(&g, a, b, 0, 2e-14, 200, GSL_INTEG_GAUSS21, w, &result, &err);
-    gsl_integration_workspace_free(w);
-    return result;
+double qag(const std::function<double(double)>& f, double a, double b) {
+    return test::gslIntegral(f, a, b, 0, 2e-14, test::GslRule::GaussKronrod21, 200);
 }
 
 } // namespace

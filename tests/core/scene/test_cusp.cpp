@@ -5,9 +5,9 @@
 // Psi leaves (0, pi) above pi; the astroid has two cusps and a duration by independent quadrature.
 #include "common/input_error.h"
 #include "control/piece_control.h"
+#include "gsl_quadrature.h"
 #include "scene/solution.h"
 
-#include <gsl/gsl_integration.h>
 #include <gtest/gtest.h>
 
 #include <array>
@@ -260,24 +260,12 @@ TEST(Cusp, TwoCuspsOnTheAstroid) {
     const double u0 = 0.3, u1 = 3.6, b = 1.0, vT = 1.0;
     Solution s = Solution::compute(sleighOn("cos(u)^3", "sin(u)^3", u0, u1, vT));
     ASSERT_EQ(s.path()->pieces().size(), 3u);
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(200);
-    gsl_function f;
-    f.function = [](double u, void*) {
-        return std::sqrt(2.25 * std::pow(std::sin(2 * u), 2) + 1.0);
-    };
-    f.params = nullptr;
-    double duration = 0, error = 0;
-    gsl_integration_qag(&f, u0, u1, 0, 1e-13, 200, GSL_INTEG_GAUSS61, w, &duration, &error);
-    gsl_integration_workspace_free(w);
-    EXPECT_NEAR(s.duration(), duration / vT, 1e-12);
-    // the time of each cusp, and the sign of sdot on each stretch
+    auto rate = [](double u) { return std::sqrt(2.25 * std::pow(std::sin(2 * u), 2) + 1.0); };
     auto timeTo = [&](double u) {
-        gsl_integration_workspace* ws = gsl_integration_workspace_alloc(200);
-        double t = 0, e = 0;
-        gsl_integration_qag(&f, u0, u, 0, 1e-13, 200, GSL_INTEG_GAUSS61, ws, &t, &e);
-        gsl_integration_workspace_free(ws);
-        return t / vT;
+        return test::gslIntegral(rate, u0, u, 0, 1e-13, test::GslRule::GaussKronrod61, 200) / vT;
     };
+    EXPECT_NEAR(s.duration(), timeTo(u1), 1e-12);
+    // the time of each cusp, and the sign of sdot on each stretch
     const double t1 = timeTo(std::numbers::pi / 2), t2 = timeTo(std::numbers::pi);
     for (double t : {0.5 * t1, 0.5 * (t1 + t2), 0.5 * (t2 + s.duration())}) {
         MotionSample m = s.at(t);
