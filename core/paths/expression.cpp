@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <mutex>
+#include <new>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -166,6 +167,12 @@ std::string toGinacSyntax(const std::string& text) {
         throw InputError(label, "chained powers a^b^c are ambiguous: write a^(b^c) or (a^b)^c");
     if (msg.find("division by zero") != std::string::npos)
         throw InputError(label, "division by zero in a constant part of the expression");
+    // CLN computes constants exactly; a huge one (a long float literal summed with large powers)
+    // asks for more memory than there is, and the allocation fails
+    if (dynamic_cast<const std::bad_alloc*>(&e) ||
+        msg.find("Out of virtual memory") != std::string::npos)
+        throw InputError(label, "a constant part is too large to compute exactly (it needs more "
+                                "memory than there is): shorten long numbers and huge powers");
     throw InputError(label, "cannot be differentiated: " + msg.substr(0, msg.find('\n')));
 }
 
