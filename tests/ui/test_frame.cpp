@@ -167,6 +167,16 @@ QPolygonF loopingLine() {
     return line;
 }
 
+// the current scene again with every on-canvas vector shown; its canvas
+SceneCanvas* showEveryVector(MainWindow& window) {
+    Scene s = window.document()->scene();
+    for (int i = 0; i < kVectorKinds; ++i)
+        (s.vectors.*vectorToggle(VectorKind(i))).shown = true;
+    window.loadScene(s);
+    window.document()->flush();
+    return window.canvas();
+}
+
 } // namespace
 
 class TestFrame : public QObject {
@@ -449,12 +459,7 @@ void TestFrame::fastFramesAfterZoomAndPanRepaintAsAFullRepaintWould() {
     // the third body and every arrow (their scale bars stay put in a corner), at four times the
     // speed: the trails' new ends are stroked where each frame repaints, and the window shows
     // what a full repaint draws, also after a zoom, a pan and a jump back
-    Scene s = m_window->document()->scene();
-    for (int i = 0; i < kVectorKinds; ++i)
-        (s.vectors.*vectorToggle(VectorKind(i))).shown = true;
-    m_window->loadScene(s);
-    m_window->document()->flush();
-    SceneCanvas* canvas = m_window->canvas();
+    SceneCanvas* canvas = showEveryVector(*m_window);
     canvas->setShowVakonomic(true);
     Playback* playback = m_window->playback();
     playback->setSpeedFactor(4);
@@ -494,12 +499,7 @@ void TestFrame::trailLayerKeepsStepAcrossLoopsJumpsAndFollowing() {
     // the trails live on a layer that a frame restrokes only where their ends moved; through
     // the end of a loop (the trails start again), jumps, the third body switched off and on
     // and following the body on and off, the window shows what drawing everything anew draws
-    Scene s = m_window->document()->scene();
-    for (int i = 0; i < kVectorKinds; ++i)
-        (s.vectors.*vectorToggle(VectorKind(i))).shown = true;
-    m_window->loadScene(s);
-    m_window->document()->flush();
-    SceneCanvas* canvas = m_window->canvas();
+    SceneCanvas* canvas = showEveryVector(*m_window);
     Playback* playback = m_window->playback();
     playback->setLoop(true);
     playback->setSpeedFactor(4);
