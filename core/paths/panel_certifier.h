@@ -21,9 +21,9 @@ struct Certifier {
     const Curve& curve;
     bool piecewise; // the curve has breakpoints
     double lengthScale;
-    double cuspStart, cuspEnd; // u of a cusp at either end, or NaN
-    std::size_t halvingsLeft;  // of the table's budget; when none are left, panels stay exact
-    std::vector<PanelSums> leaves;
+    double cuspStart, cuspEnd;      // u of a cusp at either end, or NaN
+    std::size_t halvingsLeft;       // of the table's budget; when none are left, panels stay exact
+    std::vector<PanelSums>& leaves; // the kept panels' sums (empty at the start)
     std::vector<PathTable::ChebPanel> cheb;
     std::vector<PathTable::Row> rows;
     std::vector<PathTable::Sample> samples;

@@ -223,11 +223,17 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     }
     Refiner refiner{c,        lengthScale,   u1 - u0, lengthRef, weightedRef,
                     stiffRef, halvingBudget, {},      0};
-    Certifier certifier{
-        c,  piecewise, lengthScale, m_ends.start ? u0 : NAN, m_ends.end ? u1 : NAN, 0, {}, {},
-        {}, {},        {}};
-    std::swap(certifier.leaves, lease.scratch.leaves); // its capacity, cleared
-    certifier.leaves.clear();
+    Certifier certifier{c,
+                        piecewise,
+                        lengthScale,
+                        m_ends.start ? u0 : NAN,
+                        m_ends.end ? u1 : NAN,
+                        0,
+                        lease.scratch.leaves,
+                        {},
+                        {},
+                        {},
+                        {}};
     // interpolants on the refined panels, split where they cannot be certified, within what the
     // refinement left of the budget; the halvings of both are counted in refiner.splits
     auto certifyRefined = [&] {
@@ -308,7 +314,6 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
     else
         for (const PanelSums& leaf : certifier.leaves)
             addNode(leaf);
-    std::swap(certifier.leaves, lease.scratch.leaves);
     indexNodes();
     // the interpolated phi starts from atan2 at the panel's start; add the node's 2 pi n
     for (std::size_t k = 0; k < m_cheb.size(); ++k)
