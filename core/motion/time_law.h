@@ -24,11 +24,12 @@ struct PathLocation {
 /// table's Gauss nodes; pivots take b |dphi|/v_T. Speed mode: t = s/v_s (App. C).
 /// Building it never re-tabulates the path: it costs one pass over the stored nodes.
 /// On a panel with certified interpolants (PathTable::ChebPanel) t(u) within the panel is the
-/// integral of the degree-16 Chebyshev interpolant of dt/du through its 17 points, built on the
+/// integral of the Chebyshev interpolant of dt/du through its points (degree 8 or 16), built on the
 /// panel's first use (thread-safe: an atomic flag per panel) and certified there: twice its
 /// coefficient tail, and its integral over the panel against the 8-point Gauss rule, within 1e-13
-/// of the panel's time. locate() inverts it by Newton on that polynomial. Panels that fail use the
-/// exact curve. Construction costs what it did before interpolation: 8 square roots per panel.
+/// of the panel's time. locate() inverts it by Newton on that polynomial, from the quintic Hermite
+/// interpolant of the inverse. Panels that fail use the exact curve. Construction costs what it
+/// did before interpolation: 8 square roots per panel.
 class TimeLaw {
   public:
     /// Throws InputError when the mode cannot follow the path (a corner in Speed mode) or the

@@ -115,6 +115,68 @@ void checkCharactersAndNames(const std::string& text, const std::string& variabl
         throw InputError(at(label, text.size()), "missing ')'");
 }
 
+// The end of the operand that starts at i: a number (with its exponent), a name with its
+// argument list, or a parenthesised group; i itself if none starts there.
+std::size_t operandEnd(const std::string& s, std::size_t i) {
+    auto skipGroup = [&](std::size_t k) { // s[k] == '(': past its matching ')'
+        for (int depth = 0; k < s.size(); ++k) {
+            depth += s[k] == '(' ? 1 : (s[k] == ')' ? -1 : 0);
+            if (depth == 0)
+                return k + 1;
+        }
+        return s.size();
+    };
+    std::size_t k = i;
+    if (k < s.size() && (std::isdigit(static_cast<unsigned char>(s[k])) || s[k] == '.')) {
+        while (k < s.size() && (std::isdigit(static_cast<unsigned char>(s[k])) || s[k] == '.'))
+            ++k;
+        std::size_t e = k;
+        if (e < s.size() && (s[e] == 'e' || s[e] == 'E')) {
+            ++e;
+            if (e < s.size() && (s[e] == '+' || s[e] == '-'))
+                ++e;
+            if (e < s.size() && std::isdigit(static_cast<unsigned char>(s[e]))) {
+                while (e < s.size() && std::isdigit(static_cast<unsigned char>(s[e])))
+                    ++e;
+                k = e;
+            }
+        }
+        return k;
+    }
+    if (k < s.size() && std::isalpha(static_cast<unsigned char>(s[k]))) {
+        while (k < s.size() && std::isalnum(static_cast<unsigned char>(s[k])))
+            ++k;
+        std::size_t j = k;
+        while (j < s.size() && s[j] == ' ')
+            ++j;
+        return j < s.size() && s[j] == '(' ? skipGroup(j) : k;
+    }
+    return k < s.size() && s[k] == '(' ? skipGroup(k) : k;
+}
+
+// A sign after '^' applies to the operand that follows it only, as in the value's parser
+// (muparser): x^-1+2 is x^(-1)+2. GiNaC's parser lets such a sign take the rest of the
+// expression (x^(-1+2)), so the sign and its operand are put in parentheses for it.
+std::string signedExponentsGrouped(const std::string& s) {
+    std::string out;
+    for (std::size_t i = 0; i < s.size();) {
+        out += s[i];
+        if (s[i++] != '^')
+            continue;
+        std::size_t j = i;
+        while (j < s.size() && (s[j] == ' ' || s[j] == '+' || s[j] == '-'))
+            ++j;
+        if (j == i || s.find_first_of("+-", i) >= j)
+            continue; // no sign
+        const std::size_t end = operandEnd(s, j);
+        if (end == j)
+            continue; // no operand: GiNaC reports the syntax error
+        out += '(' + s.substr(i, j - i) + signedExponentsGrouped(s.substr(j, end - j)) + ')';
+        i = end;
+    }
+    return out;
+}
+
 // `ln` is GiNaC's `log`; `pi` and `e` are constants. Numbers become floating point, so that
 // GiNaC never evaluates an exact power such as 2^(10^9) digit by digit.
 std::string toGinacSyntax(const std::string& text) {
@@ -267,7 +329,7 @@ Expression Expression::compile(const std::string& text, const std::string& varia
     reader.strict = true;
     GiNaC::ex f;
     try {
-        f = reader(toGinacSyntax(text));
+        f = reader(signedExponentsGrouped(toGinacSyntax(text)));
     } catch (const std::exception& e) {
         throwGinacError(e, label);
     }

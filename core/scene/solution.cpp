@@ -2,6 +2,7 @@
 
 #include "common/input_error.h"
 #include "control/piece_control.h"
+#include "numerics/chebyshev.h"
 
 #include <algorithm>
 #include <cmath>
@@ -54,11 +55,16 @@ double horizonOf(const Scene& scene, double duration) {
 std::string interpolationModel(const Path& path) {
     PathTable::Bounds b;
     bool interpolated = false, closed = false;
+    int lowDegree = 0, panels = 0;
     for (const PathPiece& p : path.pieces()) {
         if (p.kind != PathPiece::Kind::Curve)
             continue;
         const PathTable::Bounds& t = p.table->bounds();
         interpolated = interpolated || !p.table->chebPanels().empty();
+        for (const PathTable::ChebPanel& c : p.table->chebPanels()) {
+            lowDegree += c.certified && c.degree == cheb::kLowDegree ? 1 : 0;
+            ++panels;
+        }
         closed = closed || p.table->uniform();
         b.position = std::max(b.position, t.position);
         b.kappa = std::max(b.kappa, t.kappa);
@@ -69,10 +75,10 @@ std::string interpolationModel(const Path& path) {
     if (closed)
         out += "; lines and circles: closed-form geometry";
     if (interpolated) {
-        out += "; x, y, phi, kappa, dkappa/ds, s interpolated per panel (degree-16 Chebyshev; "
-               "bounds: position " +
-               formatNumber(b.position) + " m, kappa " + formatNumber(b.kappa) +
-               " 1/m, dkappa/ds " + formatNumber(b.dkappa) + " 1/m^2)";
+        out += "; x, y, phi, kappa, dkappa/ds, s interpolated per panel (Chebyshev, degree 8 on " +
+               std::to_string(lowDegree) + " of " + std::to_string(panels) +
+               " panels, else 16; bounds: position " + formatNumber(b.position) + " m, kappa " +
+               formatNumber(b.kappa) + " 1/m, dkappa/ds " + formatNumber(b.dkappa) + " 1/m^2)";
         if (b.exactPanels > 0)
             out += ", exact evaluation on " + std::to_string(b.exactPanels) + " panel(s)";
     }
@@ -125,10 +131,10 @@ Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,
     }
     if (!m_timeLaw.closedForm() && m_timeLaw.interpolated(0) && m_path->pieces().size() == 1) {
         m_models.timeLaw = "quadrature (Gauss-Legendre of sqrt(1 + b^2 kappa^2)/v_T ds) at the "
-                           "panel ends; inside a panel the integral of the degree-16 Chebyshev "
-                           "interpolant of dt/du, certified to 1e-13 of the panel's time on first "
-                           "use (exact Gauss-Legendre where it fails)";
-        m_models.inversion = "Newton on the interpolated t(u)";
+                           "panel ends; inside a panel the integral of the Chebyshev "
+                           "interpolant of dt/du at the panel's degree, certified to 1e-13 of the "
+                           "panel's time on first use (exact Gauss-Legendre where it fails)";
+        m_models.inversion = "Newton on the interpolated t(u) from a quintic Hermite start";
     }
     m_models.control = "closed form in kappa, dkappa/ds and phi (Psi = atan2(1, b kappa))";
     int cusps = 0;

@@ -151,3 +151,45 @@ TEST(Expression, HugeDerivativesAreRefusedBeforeTheyAreBuilt) {
     }
     EXPECT_NEAR(Expression::compile(seven, "x", "f").jet(0).d1 / (factorial * harmonic), 1, 1e-14);
 }
+
+// A signed exponent binds as in the value's parser (muparser) and the documented syntax:
+// x^-1+2 is 1/x + 2. GiNaC's own parser lets a sign take the rest of the expression
+// (x^(-1+2)), which made the derivatives those of another curve, and 2^+2^+2e0+221e8 a power
+// of 2^(2.2e10) that took 54 s and 11 GB to evaluate.
+TEST(Expression, SignedExponentsBindToTheirOperandOnly) {
+    struct Case {
+        const char* text;
+        double (*v)(double), (*d1)(double), (*d2)(double);
+    };
+    const Case cases[] = {
+        {"x^-1+2", [](double x) { return 1 / x + 2; }, [](double x) { return -1 / (x * x); },
+         [](double x) { return 2 / (x * x * x); }},
+        {"x^+2*3", [](double x) { return 3 * x * x; }, [](double x) { return 6 * x; },
+         [](double) { return 6.0; }},
+        {"2^-x-x", [](double x) { return std::pow(2, -x) - x; },
+         [](double x) { return -std::log(2.0) * std::pow(2, -x) - 1; },
+         [](double x) { return std::log(2.0) * std::log(2.0) * std::pow(2, -x); }},
+        {"x^-(x+1)*2", [](double x) { return 2 * std::pow(x, -(x + 1)); },
+         [](double x) { return 2 * std::pow(x, -(x + 1)) * (-std::log(x) - (x + 1) / x); },
+         nullptr},
+        {"x^- sin(x)+1", [](double x) { return std::pow(x, -std::sin(x)) + 1; },
+         [](double x) {
+             return std::pow(x, -std::sin(x)) * (-std::cos(x) * std::log(x) - std::sin(x) / x);
+         },
+         nullptr},
+    };
+    for (const Case& c : cases) {
+        Expression e = Expression::compile(c.text, "x", "y(x)");
+        for (double x : {0.7, 1.3, 2.0}) {
+            Jet3 j = e.jet(x);
+            EXPECT_NEAR(j.v, c.v(x), 1e-13) << c.text << " at " << x;
+            EXPECT_NEAR(j.d1, c.d1(x), 1e-12) << c.text << " at " << x;
+            if (c.d2)
+                EXPECT_NEAR(j.d2, c.d2(x), 1e-12) << c.text << " at " << x;
+        }
+    }
+    const std::clock_t start = std::clock();
+    EXPECT_NE(errorOf("2^+2^+2e0+221e8").find("chained powers"), std::string::npos)
+        << errorOf("2^+2^+2e0+221e8");
+    EXPECT_LT(double(std::clock() - start) / CLOCKS_PER_SEC, 0.1);
+}
