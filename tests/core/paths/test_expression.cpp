@@ -184,8 +184,9 @@ TEST(Expression, SignedExponentsBindToTheirOperandOnly) {
             Jet3 j = e.jet(x);
             EXPECT_NEAR(j.v, c.v(x), 1e-13) << c.text << " at " << x;
             EXPECT_NEAR(j.d1, c.d1(x), 1e-12) << c.text << " at " << x;
-            if (c.d2)
+            if (c.d2) {
                 EXPECT_NEAR(j.d2, c.d2(x), 1e-12) << c.text << " at " << x;
+            }
         }
     }
     const std::clock_t start = std::clock();
