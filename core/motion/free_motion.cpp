@@ -131,10 +131,9 @@ void FreeMotion::addPanel(double t0, double t1, int depth) {
     double p[kSeries];
     cheb::evaluateMany(c.data(), cheb::kPoints, check, p);
     auto error = [&](int q) {
-        const double tail =
-            std::max({std::fabs(c[cheb::kDegree][q]), std::fabs(c[cheb::kDegree - 1][q]),
-                      std::fabs(c[cheb::kDegree - 2][q])});
-        return std::max(2 * tail, std::fabs(p[q] - e[q]));
+        return std::max(
+            2 * cheb::tailEstimate(c.data(), cheb::kPoints, static_cast<std::size_t>(q)),
+            std::fabs(p[q] - e[q]));
     };
     const double bound = 2 * std::hypot(error(kZx), error(kZy));
     const std::complex<double> dz(zx, zy);

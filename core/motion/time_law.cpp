@@ -148,7 +148,7 @@ void TimeLaw::buildPanel(int piece, int k, TimePanel& tp) const {
     // panel against the Gauss rule on the exact values (the node times)
     const double gaussDuration = m_nodeTimes[piece][k + 1] - m_nodeTimes[piece][k];
     const double bound =
-        std::max(4 * cheb::tailEstimate(coef.data(), n + 1), std::fabs(duration - gaussDuration));
+        std::max(4 * cheb::tailEstimate(a.data(), n + 1, 0), std::fabs(duration - gaussDuration));
     tp.bound = bound;
     // the node times themselves are rounded to a few ulps of t
     const double floor = 8 * 2.220446049250313e-16 * std::fabs(m_nodeTimes[piece][k + 1]);
@@ -238,7 +238,7 @@ double TimeLaw::timeAt(int piece, double u) const {
 double TimeLaw::rateAt(int piece, double u) const {
     CertifiedPanel p = certifiedPanelOf(piece, u);
     if (p.panel)
-        return cheb::evaluateOne(p.panel->c, 1, p.xi) / p.halfWidth;
+        return cheb::evaluateOne(p.panel->c, 1, p.xi, p.panel->rows) / p.halfWidth;
     const PathTable& table = *m_path->pieces()[piece].table;
     const int k = p.index;
     if (table.uniform()) {

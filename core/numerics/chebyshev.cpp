@@ -1,6 +1,5 @@
 #include "numerics/chebyshev.h"
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -46,16 +45,6 @@ const double* transform(int degree) {
     return degree == kLowDegree ? tables().dctLow.data() : tables().dct.data();
 }
 
-void coefficients(const double* values, double* coeffs) {
-    const auto& m = tables().dct;
-    for (int k = 0; k < kPoints; ++k) {
-        double s = 0;
-        for (int j = 0; j < kPoints; ++j)
-            s += m[k * kPoints + j] * values[j];
-        coeffs[k] = s;
-    }
-}
-
 void integrate(const double* c, int n, double* out) {
     // T_k' relations: \int T_k = T_{k+1}/(2(k+1)) - T_{k-1}/(2(k-1)), \int T_0 = T_1, \int T_1 =
     // T_2/4
@@ -66,10 +55,6 @@ void integrate(const double* c, int n, double* out) {
     for (int k = 1; k <= n; ++k)
         atMinusOne += (k % 2 ? -1.0 : 1.0) * out[k];
     out[0] = -atMinusOne;
-}
-
-double tailEstimate(const double* c, int n) {
-    return std::max({std::fabs(c[n - 1]), std::fabs(c[n - 2]), std::fabs(c[n - 3])});
 }
 
 } // namespace chaplygin::cheb

@@ -1,5 +1,7 @@
 #pragma once
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 namespace chaplygin::cheb {
@@ -14,77 +16,88 @@ constexpr int kLowDegree = 8;
 /// Chebyshev points of the second kind on [-1, 1], x_j = cos(pi j/N), j = 0..N (from 1 to -1).
 const std::array<double, kPoints>& points();
 
-/// Coefficients c_0..c_N of the interpolant sum c_k T_k(x) through f_j at points()
-/// (discrete cosine transform; Trefethen, Approximation Theory and Approximation Practice, ch. 3).
-void coefficients(const double* values, double* coeffs);
-
 /// The transform of degree n (kLowDegree or kDegree) as a row-major (n + 1) x (n + 1) matrix:
-/// c_k = sum_j m[k (n + 1) + j] f_j for f_j at x_j = cos(pi j/n). It is symmetric.
+/// c_k = sum_j m[k (n + 1) + j] f_j for f_j at x_j = cos(pi j/n) (discrete cosine transform;
+/// Trefethen, Approximation Theory and Approximation Practice, ch. 3). It is symmetric.
 const double* transform(int degree);
 
 /// Coefficients of Q interpolants of degree n (kLowDegree or kDegree) at once, values and
 /// coefficients interleaved ([j][q] and [k][q]) so the work vectorises across the Q series.
+/// The transform's columns j and n - j differ by (-1)^k, so the values are folded first,
+/// f_j + f_{n-j} for even k and f_j - f_{n-j} for odd k: half the products of the full matrix.
 template <std::size_t Q>
 inline void coefficientsMany(const std::array<double, Q>* values, int degree,
                              std::array<double, Q>* coeffs) {
     const double* m = transform(degree);
-    const int n = degree + 1;
-    if constexpr (Q >= 4) {
-        // enough series to fill the vector registers: one coefficient at a time
-        for (int k = 0; k < n; ++k) {
-            std::array<double, Q> s{};
-            for (int j = 0; j < n; ++j) {
-                const double w = m[k * n + j];
-                for (std::size_t q = 0; q < Q; ++q)
-                    s[q] += w * values[j][q];
-            }
-            coeffs[k] = s;
+    const int n = degree, half = degree / 2, stride = degree + 1;
+    std::array<std::array<double, Q>, kDegree / 2 + 1> even, odd;
+    for (int j = 0; j < half; ++j)
+        for (std::size_t q = 0; q < Q; ++q) {
+            even[j][q] = values[j][q] + values[n - j][q];
+            odd[j][q] = values[j][q] - values[n - j][q];
         }
-    } else {
-        // few series: the n + 1 sums side by side (independent, so they vectorise and pipeline),
-        // each over j in the same order; the transform is symmetric
-        for (int k = 0; k < n; ++k)
-            coeffs[k] = {};
-        for (int j = 0; j < n; ++j)
-            for (int k = 0; k < n; ++k) {
-                const double w = m[j * n + k];
-                for (std::size_t q = 0; q < Q; ++q)
-                    coeffs[k][q] += w * values[j][q];
-            }
+    even[half] = values[half]; // the middle column, once (its odd-k entries are cos(k pi/2) = 0)
+    for (int k = 0; k <= n; ++k) {
+        const std::array<double, Q>* folded = k % 2 ? odd.data() : even.data();
+        const int count = k % 2 ? half : half + 1;
+        std::array<double, Q> s{};
+        for (int j = 0; j < count; ++j) {
+            const double w = m[k * stride + j];
+            for (std::size_t q = 0; q < Q; ++q)
+                s[q] += w * folded[j][q];
+        }
+        coeffs[k] = s;
     }
 }
 
 /// The coefficients (n + 1 of them) of \int_{-1}^x of the series with n coefficients.
 void integrate(const double* c, int n, double* out);
 
-/// A posteriori error estimate of an interpolant from its last three coefficients: for a
-/// function resolved by the panel the coefficients decay geometrically and the error of the
-/// interpolant is at most a few times the last ones (ATAP ch. 8).
-double tailEstimate(const double* c, int n);
+/// A posteriori error estimate of series q of an interpolant with n coefficients (interleaved,
+/// c[k][q]) from its last three coefficients: for a function resolved by the panel the
+/// coefficients decay geometrically and the error of the interpolant is at most a few times the
+/// last ones (ATAP ch. 8).
+template <std::size_t Q>
+inline double tailEstimate(const std::array<double, Q>* c, int n, std::size_t q) {
+    return std::max({std::fabs(c[n - 1][q]), std::fabs(c[n - 2][q]), std::fabs(c[n - 3][q])});
+}
 
-/// sum c_k T_k(x) by Clenshaw's recurrence.
+/// \int_{-1}^{1} of series q of n interleaved coefficients: sum over even k of 2 c_k/(1 - k^2).
+template <std::size_t Q>
+inline double integral(const std::array<double, Q>* c, int n, std::size_t q) {
+    double sum = 0;
+    for (int k = 0; k < n; k += 2)
+        sum += 2 * c[k][q] / (1.0 - k * k);
+    return sum;
+}
+
+/// sum c_k T_k(x) by Clenshaw's recurrence, b_k = (c_k - b_{k+2}) + 2x b_{k+1}: b_{k+2} is known
+/// a step early, so each step puts one multiply and one add on the dependency chain (here and in
+/// the interleaved forms below).
 inline double evaluate(const double* c, int n, double x) {
     double b1 = 0, b2 = 0;
     const double x2 = 2 * x;
     for (int k = n - 1; k >= 1; --k) {
-        double b = x2 * b1 - b2 + c[k];
+        double b = (c[k] - b2) + x2 * b1;
         b2 = b1;
         b1 = b;
     }
-    return x * b1 - b2 + c[0];
+    return (c[0] - b2) + x * b1;
 }
 
-/// Series q of Q interleaved series (coefficients c[k][q]).
+/// Series q of Q interleaved series (coefficients c[k][q]); the first `rows` coefficients (the
+/// rest are zero: a panel of lower degree).
 template <std::size_t Q, std::size_t N>
-inline double evaluateOne(const std::array<std::array<double, Q>, N>& c, std::size_t q, double x) {
+inline double evaluateOne(const std::array<std::array<double, Q>, N>& c, std::size_t q, double x,
+                          std::size_t rows = N) {
     double b1 = 0, b2 = 0;
     const double x2 = 2 * x;
-    for (std::size_t k = N - 1; k >= 1; --k) {
-        double b = x2 * b1 - b2 + c[k][q];
+    for (std::size_t k = rows - 1; k >= 1; --k) {
+        double b = (c[k][q] - b2) + x2 * b1;
         b2 = b1;
         b1 = b;
     }
-    return x * b1 - b2 + c[0][q];
+    return (c[0][q] - b2) + x * b1;
 }
 
 /// Q series at once, coefficients interleaved c[k][q] (so the inner loop vectorises); `rows`
@@ -95,12 +108,12 @@ inline void evaluateMany(const std::array<double, Q>* c, std::size_t rows, doubl
     const double x2 = 2 * x;
     for (std::size_t k = rows - 1; k >= 1; --k)
         for (std::size_t q = 0; q < Q; ++q) {
-            double b = x2 * b1[q] - b2[q] + c[k][q];
+            double b = (c[k][q] - b2[q]) + x2 * b1[q];
             b2[q] = b1[q];
             b1[q] = b;
         }
     for (std::size_t q = 0; q < Q; ++q)
-        out[q] = x * b1[q] - b2[q] + c[0][q];
+        out[q] = (c[0][q] - b2[q]) + x * b1[q];
 }
 
 /// The same over an array, of which only the first `rows` coefficients are summed (the rest are

@@ -24,13 +24,41 @@ void sampleAt(const Curve& c, bool piecewise, const PanelData& d, int j, ExactAt
         return;
     // a curve evaluates a breakpoint with the piece that starts there; the panel's end takes
     // the piece it ends (one ulp inside), so a jump in a derivative stays outside the panel
-    const double end = piecewise ? std::nextafter(d.b, d.a) : d.b;
-    const double u =
-        j == cheb::kDegree
-            ? d.a
-            : (j == 0 ? end : 0.5 * (d.a + d.b) + 0.5 * (d.b - d.a) * cheb::points()[j]);
+    double u = 0.5 * (d.a + d.b) + 0.5 * (d.b - d.a) * cheb::points()[j];
+    if (j == cheb::kDegree)
+        u = d.a;
+    else if (j == 0)
+        u = piecewise ? std::nextafter(d.b, d.a) : d.b;
     s.geometry[j] = checkedGeometry(c, u, &s.point[j]);
     s.done[j] = true;
+}
+
+// a - b + 2 pi n in (-pi, pi]; round() only when the difference leaves that range
+double angleDifference(double a, double b) {
+    const double d = a - b;
+    return std::fabs(d) < std::numbers::pi
+               ? d
+               : d - 2 * std::numbers::pi * std::round(d / (2 * std::numbers::pi));
+}
+
+// T_k at the positive Gauss nodes x_i = gauss::kNodes[kHalf + i], k = 0..kDegree. The nodes come
+// in pairs +-x_i and T_k(-x) = (-1)^k T_k(x): a series is its even part plus or minus its odd part.
+constexpr int kHalf = gauss::kPoints / 2;
+struct GaussChebyshev {
+    std::array<std::array<double, cheb::kPoints>, kHalf> t;
+    GaussChebyshev() {
+        for (int i = 0; i < kHalf; ++i) {
+            const double x = gauss::kNodes[kHalf + i];
+            t[i][0] = 1;
+            t[i][1] = x;
+            for (int k = 2; k < cheb::kPoints; ++k)
+                t[i][k] = 2 * x * t[i][k - 1] - t[i][k - 2];
+        }
+    }
+};
+const GaussChebyshev& gaussChebyshev() {
+    static const GaussChebyshev g;
+    return g;
 }
 
 // The interpolants of one panel at `degree` and their error bounds: the larger of twice the
@@ -47,7 +75,6 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
     enum Column { cX, cY, cPhi, cKappa, cDkappa, cSpeed, cRate, cStiff, cColumns };
     const int n = degree, stride = cheb::kDegree / degree;
     const double half = 0.5 * (d.b - d.a), L = lengthScale;
-    out.c = {};
     out.panel = {};
     out.panel.degree = degree;
     std::array<std::array<double, cColumns>, cheb::kPoints> v; // [i][column] at cos(pi i/n)
@@ -58,9 +85,7 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
         sampleAt(c, piecewise, d, j, exact);
         const CurvePoint& p = exact.point[j];
         const CurveGeometry& g = exact.geometry[j];
-        double phi = g.heading;
-        if (i != n)
-            phi += 2 * std::numbers::pi * std::round((prevPhi - phi) / (2 * std::numbers::pi));
+        const double phi = i == n ? g.heading : prevPhi - angleDifference(prevPhi, g.heading);
         prevPhi = phi;
         // rounding in kappa and dkappa/ds: the size of the terms that cancel in them
         const double dd = p.dx * p.dx + p.dy * p.dy, d15 = dd * std::sqrt(dd);
@@ -90,7 +115,7 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
     }
     std::array<std::array<double, cColumns>, cheb::kPoints> coef;
     cheb::coefficientsMany(v.data(), n, coef.data());
-    std::array<double, cheb::kPoints> dsdxiCoef{}, rateCoef{};
+    std::array<double, cheb::kPoints> dsdxiCoef;
     for (int k = 0; k <= n; ++k) {
         out.c[k][Q::kX] = coef[k][cX];
         out.c[k][Q::kY] = coef[k][cY];
@@ -98,34 +123,46 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
         out.c[k][Q::kKappa] = coef[k][cKappa];
         out.c[k][Q::kDkappa] = coef[k][cDkappa];
         out.c[k][Q::kSpeed] = coef[k][cSpeed];
+        out.c[k][Q::kPadding] = 0;
         dsdxiCoef[k] = half * coef[k][cSpeed];
-        rateCoef[k] = coef[k][cRate];
     }
-    std::array<double, cheb::kPoints + 1> sCoef{}, rateIntegral{};
+    std::array<double, cheb::kPoints + 1> sCoef;
     cheb::integrate(dsdxiCoef.data(), n + 1, sCoef.data());
+    out.c[n + 1] = {}; // s has one coefficient more than the others
     for (int k = 0; k <= n + 1; ++k)
         out.c[k][Q::kS] = sCoef[k];
 
     auto tail = [&](int column) {
-        return 2 * std::max({std::fabs(coef[n][column]), std::fabs(coef[n - 1][column]),
-                             std::fabs(coef[n - 2][column])});
+        return 2 * cheb::tailEstimate(coef.data(), n + 1, static_cast<std::size_t>(column));
     };
     double ePos = std::max(tail(cX), tail(cY)), ePhi = tail(cPhi), eKappa = tail(cKappa),
            eDkappa = tail(cDkappa);
     // s integrates ds/dxi = half ds/du over at most 2 in xi
     double eS = 2 * half * tail(cSpeed);
-    const std::size_t rows = static_cast<std::size_t>(n) + 2;
-    for (int i = 0; i < gauss::kPoints; ++i) {
-        double f[PathTable::kQuantities];
-        cheb::evaluateMany(out.c, gauss::kNodes[i], f, rows);
-        const CurveGeometry& g = d.geometry[i];
-        double dphi = g.heading - f[Q::kPhi];
-        dphi -= 2 * std::numbers::pi * std::round(dphi / (2 * std::numbers::pi));
-        const double ex = f[Q::kX] - d.x[i], ey = f[Q::kY] - d.y[i];
-        ePos = std::max(ePos, std::sqrt(ex * ex + ey * ey));
-        ePhi = std::max(ePhi, std::fabs(dphi));
-        eKappa = std::max(eKappa, std::fabs(f[Q::kKappa] - g.kappa));
-        eDkappa = std::max(eDkappa, std::fabs(f[Q::kDkappa] - g.dkappa));
+    // the interpolants of x, y, phi, kappa and dkappa/ds at the Gauss nodes against the exact
+    // values there: even and odd parts at +x_i give the pair of nodes +-x_i
+    constexpr int kChecked = cDkappa + 1;
+    const GaussChebyshev& gt = gaussChebyshev();
+    for (int i = 0; i < kHalf; ++i) {
+        std::array<double, kChecked> even{}, odd{};
+        for (int k = 0; k <= n; k += 2)
+            for (int q = 0; q < kChecked; ++q)
+                even[q] += coef[k][q] * gt.t[i][k];
+        for (int k = 1; k <= n; k += 2)
+            for (int q = 0; q < kChecked; ++q)
+                odd[q] += coef[k][q] * gt.t[i][k];
+        for (int sign : {1, -1}) {
+            const int node = sign > 0 ? kHalf + i : kHalf - 1 - i;
+            double f[kChecked];
+            for (int q = 0; q < kChecked; ++q)
+                f[q] = even[q] + sign * odd[q];
+            const CurveGeometry& g = d.geometry[node];
+            const double ex = f[cX] - d.x[node], ey = f[cY] - d.y[node];
+            ePos = std::max(ePos, std::sqrt(ex * ex + ey * ey));
+            ePhi = std::max(ePhi, std::fabs(angleDifference(g.heading, f[cPhi])));
+            eKappa = std::max(eKappa, std::fabs(f[cKappa] - g.kappa));
+            eDkappa = std::max(eDkappa, std::fabs(f[cDkappa] - g.dkappa));
+        }
     }
     double sEnd = 0; // s - s(panel start) at xi = 1: the sum of its coefficients
     for (int k = 0; k <= n + 1; ++k)
@@ -139,10 +176,7 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
         std::max({1e-14 / (L * L), 1e-13 * kappaMax / L, 1e-12 * dkappaMax, dkappaNoise});
     // the time law's integrand for b of the path's size, |r'| sqrt(1 + (L kappa)^2), is
     // resolved as well (larger b may leave panels to exact evaluation, TimeLaw)
-    cheb::integrate(rateCoef.data(), n + 1, rateIntegral.data());
-    double rateSum = 0; // the integral over the panel
-    for (int k = 0; k <= n + 1; ++k)
-        rateSum += rateIntegral[k];
+    const double rateSum = cheb::integral(coef.data(), n + 1, cRate); // over the panel
     const double tolS = std::max(2e-15 * L, 1e-14 * d.length);
     const double score =
         std::max({ePos / tolPos, ePhi / tolPhi, eKappa / tolKappa, eDkappa / tolDkappa, eS / tolS,

@@ -9,9 +9,10 @@ namespace chaplygin {
 
 /// A panel's interpolants while they are built and certified, before the table packs them
 /// (PathTable::ChebPanel: the same coefficients and samples, degree + 2 and degree + 1 of them).
+/// Only the first degree + 2 rows and degree + 1 samples are written.
 struct Interpolant {
-    std::array<PathTable::Row, cheb::kPoints + 1> c{};
-    std::array<PathTable::Sample, cheb::kPoints> samples{};
+    std::array<PathTable::Row, cheb::kPoints + 1> c;
+    std::array<PathTable::Sample, cheb::kPoints> samples;
     PathTable::ChebPanel panel;
 };
 

@@ -73,7 +73,7 @@ class PathTable {
     /// points of the panel's degree, x_j = cos(pi j/degree), j = 0..degree (for the time law).
     /// A panel is certified at cheb::kLowDegree where that suffices, else at cheb::kDegree; the
     /// table keeps them packed, so a short panel takes half the memory.
-    enum Quantity { kX, kY, kPhi, kKappa, kDkappa, kS, kSpeed, kQuantities = 8 };
+    enum Quantity { kX, kY, kPhi, kKappa, kDkappa, kS, kSpeed, kPadding, kQuantities };
     using Row = std::array<double, kQuantities>;
     struct Sample {
         double dsdxi = 0, kappa = 0;
