@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstring>
 
 namespace chaplygin::cheb {
 
@@ -21,6 +22,12 @@ const std::array<double, kPoints>& points();
 /// Trefethen, Approximation Theory and Approximation Practice, ch. 3). It is symmetric.
 const double* transform(int degree);
 
+namespace detail {
+/// Two doubles in one vector register (a GCC and Clang extension): the transform below sums
+/// across the interleaved series two at a time, which the compilers do not find on their own.
+using Pair = double __attribute__((vector_size(16)));
+} // namespace detail
+
 /// Coefficients of Q interpolants of degree n (kLowDegree or kDegree) at once, values and
 /// coefficients interleaved ([j][q] and [k][q]) so the work vectorises across the Q series.
 /// The transform's columns j and n - j differ by (-1)^k, so the values are folded first,
@@ -37,16 +44,26 @@ inline void coefficientsMany(const std::array<double, Q>* values, int degree,
             odd[j][q] = values[j][q] - values[n - j][q];
         }
     even[half] = values[half]; // the middle column, once (its odd-k entries are cos(k pi/2) = 0)
+    constexpr std::size_t kPairs = Q / 2;
     for (int k = 0; k <= n; ++k) {
         const std::array<double, Q>* folded = k % 2 ? odd.data() : even.data();
         const int count = k % 2 ? half : half + 1;
-        std::array<double, Q> s{};
+        detail::Pair s[kPairs + 1] = {};
+        double last = 0; // the odd series out, when Q is odd
         for (int j = 0; j < count; ++j) {
             const double w = m[k * stride + j];
-            for (std::size_t q = 0; q < Q; ++q)
-                s[q] += w * folded[j][q];
+            const detail::Pair ww = {w, w};
+            for (std::size_t p = 0; p < kPairs; ++p) {
+                detail::Pair f;
+                std::memcpy(&f, &folded[j][2 * p], sizeof f);
+                s[p] += ww * f;
+            }
+            if constexpr (Q % 2 == 1)
+                last += w * folded[j][Q - 1];
         }
-        coeffs[k] = s;
+        std::memcpy(coeffs[k].data(), s, kPairs * sizeof(detail::Pair));
+        if constexpr (Q % 2 == 1)
+            coeffs[k][Q - 1] = last;
     }
 }
 

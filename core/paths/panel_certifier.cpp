@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 
 namespace chaplygin {
@@ -141,21 +142,31 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
     double eS = 2 * half * tail(cSpeed);
     // the interpolants of x, y, phi, kappa and dkappa/ds at the Gauss nodes against the exact
     // values there: even and odd parts at +x_i give the pair of nodes +-x_i
-    constexpr int kChecked = cDkappa + 1;
+    // (the columns up to dkappa/ds, with ds/du to make three pairs for the vector registers)
+    using cheb::detail::Pair;
+    constexpr int kPairs = (cSpeed + 1) / 2;
     const GaussChebyshev& gt = gaussChebyshev();
+    auto accumulate = [&](Pair* sum, int k, int i) {
+        const Pair t = {gt.t[i][k], gt.t[i][k]};
+        for (int p = 0; p < kPairs; ++p) {
+            Pair c;
+            std::memcpy(&c, &coef[k][2 * p], sizeof c);
+            sum[p] += t * c;
+        }
+    };
     for (int i = 0; i < kHalf; ++i) {
-        std::array<double, kChecked> even{}, odd{};
+        Pair even[kPairs] = {}, odd[kPairs] = {};
         for (int k = 0; k <= n; k += 2)
-            for (int q = 0; q < kChecked; ++q)
-                even[q] += coef[k][q] * gt.t[i][k];
+            accumulate(even, k, i);
         for (int k = 1; k <= n; k += 2)
-            for (int q = 0; q < kChecked; ++q)
-                odd[q] += coef[k][q] * gt.t[i][k];
+            accumulate(odd, k, i);
         for (int sign : {1, -1}) {
             const int node = sign > 0 ? kHalf + i : kHalf - 1 - i;
-            double f[kChecked];
-            for (int q = 0; q < kChecked; ++q)
-                f[q] = even[q] + sign * odd[q];
+            double f[2 * kPairs];
+            for (int p = 0; p < kPairs; ++p) {
+                const Pair value = sign > 0 ? even[p] + odd[p] : even[p] - odd[p];
+                std::memcpy(&f[2 * p], &value, sizeof value);
+            }
             const CurveGeometry& g = d.geometry[node];
             const double ex = f[cX] - d.x[node], ey = f[cY] - d.y[node];
             ePos = std::max(ePos, std::sqrt(ex * ex + ey * ey));

@@ -2,6 +2,7 @@
 // under the offscreen platform.
 #include "canvas/scene_canvas.h"
 #include "canvas/vector_painter.h"
+#include "common/memory_reuse.h"
 #include "document/scene_document.h"
 #include "plots/plot_series.h"
 #include "plots/plots_panel.h"
@@ -223,6 +224,7 @@ BENCHMARK(BM_StageFramePlots)
 } // namespace
 
 int main(int argc, char** argv) {
+    chaplygin::keepFreedMemoryForReuse(); // as the program does (app/main.cpp)
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
     QApplication app(argc, argv);

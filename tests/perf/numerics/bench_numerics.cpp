@@ -1,6 +1,7 @@
 // chaplygin-bench-numerics: cost per right-hand-side call and per solve of every method in the
 // registry (docs/numerics.md §3, §5). Compare counters ns_per_rhs against BM_Rk4ClassicalFloor, the
 // hand-written classical RK4 on the same problem: the floor.
+#include "common/memory_reuse.h"
 #include "lab/method_registry.h"
 #include "lab/sleigh_problems.h"
 #include "lab/work_precision.h"
@@ -323,6 +324,7 @@ void registerSolves() {
 } // namespace chaplygin
 
 int main(int argc, char** argv) {
+    chaplygin::keepFreedMemoryForReuse(); // as the program does (app/main.cpp)
     chaplygin::registerSolves();
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))
