@@ -1,5 +1,6 @@
 #include "common/memory_reuse.h"
 
+#include <cstdlib> // any C library header defines __GLIBC__ under glibc
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
