@@ -48,8 +48,8 @@ inline void coefficientsMany(const std::array<double, Q>* values, int degree,
     for (int k = 0; k <= n; ++k) {
         const std::array<double, Q>* folded = k % 2 ? odd.data() : even.data();
         const int count = k % 2 ? half : half + 1;
-        detail::Pair s[kPairs + 1] = {};
-        double last = 0; // the odd series out, when Q is odd
+        detail::Pair s[kPairs + 1] = {}; // one more than needed: Q = 1 has no pair
+        double last = 0;                 // the odd series out, when Q is odd
         for (int j = 0; j < count; ++j) {
             const double w = m[k * stride + j];
             const detail::Pair ww = {w, w};

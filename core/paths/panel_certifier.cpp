@@ -34,12 +34,12 @@ void sampleAt(const Curve& c, bool piecewise, const PanelData& d, int j, ExactAt
     s.done[j] = true;
 }
 
-// a - b + 2 pi n in (-pi, pi]; round() only when the difference leaves that range
-double angleDifference(double a, double b) {
+// The multiple of 2 pi nearest to a - b: 0 without calling round() while |a - b| < pi
+double turnsBetween(double a, double b) {
     const double d = a - b;
     return std::fabs(d) < std::numbers::pi
-               ? d
-               : d - 2 * std::numbers::pi * std::round(d / (2 * std::numbers::pi));
+               ? 0.0
+               : 2 * std::numbers::pi * std::round(d / (2 * std::numbers::pi));
 }
 
 // T_k at the positive Gauss nodes x_i = gauss::kNodes[kHalf + i], k = 0..kDegree. The nodes come
@@ -86,7 +86,7 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
         sampleAt(c, piecewise, d, j, exact);
         const CurvePoint& p = exact.point[j];
         const CurveGeometry& g = exact.geometry[j];
-        const double phi = i == n ? g.heading : prevPhi - angleDifference(prevPhi, g.heading);
+        const double phi = i == n ? g.heading : g.heading + turnsBetween(prevPhi, g.heading);
         prevPhi = phi;
         // rounding in kappa and dkappa/ds: the size of the terms that cancel in them
         const double dd = p.dx * p.dx + p.dy * p.dy, d15 = dd * std::sqrt(dd);
@@ -145,6 +145,7 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
     // (the columns up to dkappa/ds, with ds/du to make three pairs for the vector registers)
     using cheb::detail::Pair;
     constexpr int kPairs = (cSpeed + 1) / 2;
+    static_assert(cX == 0 && cSpeed == 2 * kPairs - 1, "the checked columns come first");
     const GaussChebyshev& gt = gaussChebyshev();
     auto accumulate = [&](Pair* sum, int k, int i) {
         const Pair t = {gt.t[i][k], gt.t[i][k]};
@@ -170,7 +171,8 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
             const CurveGeometry& g = d.geometry[node];
             const double ex = f[cX] - d.x[node], ey = f[cY] - d.y[node];
             ePos = std::max(ePos, std::sqrt(ex * ex + ey * ey));
-            ePhi = std::max(ePhi, std::fabs(angleDifference(g.heading, f[cPhi])));
+            const double dphi = g.heading - f[cPhi] - turnsBetween(g.heading, f[cPhi]);
+            ePhi = std::max(ePhi, std::fabs(dphi));
             eKappa = std::max(eKappa, std::fabs(f[cKappa] - g.kappa));
             eDkappa = std::max(eDkappa, std::fabs(f[cDkappa] - g.dkappa));
         }
