@@ -25,15 +25,20 @@
 #include <QIcon>
 #include <QImage>
 #include <QLocale>
+#include <QMessageBox>
 #include <QPixmap>
 #include <QSpinBox>
+#include <QTimer>
 
 #include <cstdio>
 #include <exception>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 namespace chaplygin::ui {
 
@@ -185,9 +190,65 @@ int renderScreenshot(const ScreenshotOptions& o) {
     return 0;
 }
 
+// Qt's own options (QGuiApplication and QApplication take them out of the arguments), with "-" or
+// "--" in front: those that take a value, and those that do not
+bool isQtOption(const std::string& arg, bool& takesValue) {
+    static const std::set<std::string> withValue = {
+        "platform",     "platformpluginpath", "platformtheme", "plugin",     "qwindowgeometry",
+        "qwindowicon",  "qwindowtitle",       "style",         "stylesheet", "session",
+        "display",      "geometry",           "title",         "name",       "visual",
+        "qmljsdebugger"};
+    static const std::set<std::string> flags = {"reverse", "widgetcount", "sync", "nograb",
+                                                "dograb"};
+    std::string name = arg.substr(arg.rfind("--", 0) == 0 ? 2 : 1);
+    const auto equals = name.find('=');
+    if (equals != std::string::npos)
+        name.resize(equals);
+    takesValue = equals == std::string::npos && withValue.count(name) > 0;
+    return withValue.count(name) > 0 || flags.count(name) > 0;
+}
+
+struct DesktopOptions {
+    std::optional<std::string> file; ///< a scene file to open
+    std::optional<Scene> scene;      ///< or a scene given by options
+    bool presentation = false;
+};
+
+DesktopOptions parseDesktopOptions(int argc, char** argv) {
+    DesktopOptions o;
+    std::vector<std::string> rest;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        bool takesValue = false;
+        if (arg == "--presentation")
+            o.presentation = true;
+        else if (arg.size() > 1 && arg[0] == '-' && isQtOption(arg, takesValue))
+            i += takesValue ? 1 : 0;
+        else
+            rest.push_back(arg);
+    }
+    if (rest.size() == 1 && rest[0].rfind('-', 0) != 0)
+        o.file = rest[0];
+    else if (!rest.empty())
+        o.scene = parseHeadlessOptions(rest).scene;
+    return o;
+}
+
 } // namespace
 
 int runDesktop(int argc, char** argv) {
+    // the arguments are checked before any window system is touched: a wrong option is reported
+    // on a machine without a display too
+    DesktopOptions options;
+    try {
+        options = parseDesktopOptions(argc, argv);
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        const bool pointsToHelp = message.find("--help") != std::string::npos;
+        std::fprintf(stderr, "chaplygin-lab: %s%s\n", message.c_str(),
+                     pointsToHelp ? "" : " (see chaplygin-lab --help)");
+        return 2;
+    }
     app::ensureRuntimeDirectory();
     QGuiApplication::setHighDpiScaleFactorRoundingPolicy(
         Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
@@ -195,26 +256,30 @@ int runDesktop(int argc, char** argv) {
     describeApplication();
     // View > Language, saved by the last session; the system locale unless one was chosen
     app::installTranslations(app, languageLocale(savedLanguage()));
-    // QApplication has taken its own options out; what is left is a scene file or scene options
-    QStringList args = QCoreApplication::arguments().mid(1);
-    const bool presentation = args.removeAll(QStringLiteral("--presentation")) > 0;
     MainWindow window;
-    try {
-        if (args.size() == 1 && !args[0].startsWith(QLatin1String("--"))) {
-            if (!window.openFile(args[0]))
-                throw InputError("", window.lastFileError().toStdString());
-        } else if (!args.isEmpty()) {
-            std::vector<std::string> options;
-            for (const QString& a : args)
-                options.push_back(a.toStdString());
-            window.loadScene(parseHeadlessOptions(options).scene);
-        }
-    } catch (const InputError& e) {
-        std::fprintf(stderr, "chaplygin-lab: %s\n", e.what());
-        return 2;
+    if (options.scene)
+        window.loadScene(*options.scene);
+    QString fileError;
+    if (options.file && !window.openFile(QString::fromStdString(*options.file))) {
+        const QString name = QString::fromStdString(*options.file);
+        fileError = window.lastFileError();
+        if (!fileError.contains(name))
+            fileError = QStringLiteral("%1: %2").arg(name, fileError);
+    }
+    if (!fileError.isEmpty()) {
+        std::fprintf(stderr, "chaplygin-lab: %s\n", qPrintable(fileError));
+        // from a terminal the message has been read; from a file manager or a menu there is no
+        // one to read stderr, so the window starts with its default scene and says why
+        if (isatty(STDERR_FILENO))
+            return 2;
+        QTimer::singleShot(0, &window, [&window, fileError] {
+            QMessageBox::warning(
+                &window, QCoreApplication::translate("DesktopEntry", "Cannot open the scene"),
+                fileError);
+        });
     }
     window.show();
-    if (presentation)
+    if (options.presentation)
         window.presentation()->setActive(true);
     return app.exec();
 }
@@ -238,10 +303,17 @@ int runScreenshot(int argc, char** argv) {
     }
     // the system's locale (LANG) unless --language names one; a test's own application keeps its
     // translators
-    if (!options->language.empty())
-        app::installTranslations(*QCoreApplication::instance(),
-                                 QLocale(QString::fromStdString(options->language)));
-    else if (app)
+    if (!options->language.empty()) {
+        const QString catalogue = app::installTranslations(
+            *QCoreApplication::instance(), QLocale(QString::fromStdString(options->language)));
+        if (catalogue.isEmpty() && options->language != "en") {
+            std::fprintf(stderr,
+                         "chaplygin-lab: --language: the %s catalogue (chaplygin-lab_%s.qm) is "
+                         "not installed, so the window cannot be shown in that language\n",
+                         options->language.c_str(), options->language.c_str());
+            return 2;
+        }
+    } else if (app)
         app::installTranslations(*app, QLocale::system());
     try {
         return renderScreenshot(*options);

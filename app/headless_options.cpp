@@ -378,7 +378,7 @@ InputError withOptionNames(const InputError& error, SpeedMode mode) {
 }
 
 std::string headlessUsage() {
-    return R"(Usage: chaplygin-lab --headless [options]
+    return R"(Headless (no window; --headless may stand anywhere):
 Scene (one of):
   --preset line|circle|catenary|sinusoid      the paper's examples with the paper's parameters
   --path "y=EXPR" --x-range X0,X1             graph path, traversed from X0 to X1 (X1 < X0:

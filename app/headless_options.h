@@ -39,7 +39,7 @@ SweepSpec parseSweepSpec(const std::string& text);
 /// scene_file); other errors are returned unchanged.
 InputError withOptionNames(const InputError& error, SpeedMode mode);
 
-/// The usage text printed by --help.
+/// The headless and scene options' part of the usage (app/program_usage.h prints it all).
 std::string headlessUsage();
 
 } // namespace chaplygin

@@ -9,6 +9,7 @@
 #include "plots/plot_export.h"
 #include "plots/sweep_plot.h"
 #include "plots/work_precision_plot.h"
+#include "program_usage.h"
 #include "runtime_directory.h"
 #include "scene/csv_writer.h"
 #include "scene/solution.h"
@@ -134,7 +135,7 @@ int runHeadless(int argc, char** argv) {
     try {
         HeadlessOptions o = parseHeadlessOptions(args);
         if (o.help) {
-            std::fputs(headlessUsage().c_str(), stdout);
+            std::fputs(programUsage().c_str(), stdout);
             return 0;
         }
         try {

@@ -2,16 +2,26 @@
 #include "common/memory_reuse.h"
 #include "desktop_entry.h"
 #include "headless_run.h"
+#include "program_usage.h"
 
-#include <cstring>
+#include <cstdio>
 
 int main(int argc, char** argv) {
     chaplygin::keepFreedMemoryForReuse();
-    for (int i = 1; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--headless") == 0)
-            return chaplygin::app::runHeadless(argc, argv);
-        if (std::strcmp(argv[i], "--screenshot") == 0)
-            return chaplygin::ui::runScreenshot(argc, argv);
+    using chaplygin::app::ProgramMode;
+    switch (chaplygin::app::programMode(argc, argv)) {
+    case ProgramMode::Help:
+        std::fputs(chaplygin::app::programUsage().c_str(), stdout);
+        return 0;
+    case ProgramMode::Version:
+        std::fputs(chaplygin::app::versionText().c_str(), stdout);
+        return 0;
+    case ProgramMode::Headless:
+        return chaplygin::app::runHeadless(argc, argv);
+    case ProgramMode::Screenshot:
+        return chaplygin::ui::runScreenshot(argc, argv);
+    case ProgramMode::Desktop:
+        break;
     }
     return chaplygin::ui::runDesktop(argc, argv);
 }

@@ -275,6 +275,35 @@ help)
   run 0 --help
   grep -q -- "--preset line|circle|catenary|sinusoid" "$work/out" || fail "usage"
   ;;
+help_without_display)
+  # the program's own --help: no display, no window, the desktop, screenshot and headless options
+  for flag in --help -h; do
+    env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$exe" "$flag" >"$work/out" 2>"$work/err" \
+      || fail "$flag exited $?: $(cat "$work/err")"
+    [ ! -s "$work/err" ] || fail "$flag wrote to stderr: $(cat "$work/err")"
+    for option in --presentation --screenshot --size --at --panel --language --headless --preset \
+                  --csv --animation --version; do
+      grep -q -- "$option" "$work/out" || fail "$flag: the usage lacks $option"
+    done
+  done
+  ;;
+version)
+  env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$exe" --version >"$work/out" 2>"$work/err" \
+    || fail "--version exited $?: $(cat "$work/err")"
+  grep -qx "chaplygin-lab $CHAPLYGIN_VERSION" "$work/out" || fail "--version printed: $(cat "$work/out")"
+  ;;
+desktop_unknown_option)
+  # checked before a window system is needed: one line naming the option, exit 2
+  env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$exe" --bogus-option >"$work/out" 2>"$work/err"
+  status=$?
+  [ "$status" -eq 2 ] || fail "exit $status, expected 2; stderr: $(cat "$work/err")"
+  [ "$(wc -l <"$work/err")" -eq 1 ] || fail "not one line: $(cat "$work/err")"
+  expect_err "--bogus-option"
+  expect_err "see .*--help"
+  env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$exe" --preset nowhere >"$work/out" 2>"$work/err"
+  [ $? -eq 2 ] || fail "a bad preset in desktop mode: exit $?"
+  expect_err "--preset"
+  ;;
 *)
   fail "unknown case"
   ;;
