@@ -8,12 +8,6 @@
 
 namespace chaplygin::app {
 
-QStringList catalogueDirectories() {
-    const QDir bin(QCoreApplication::applicationDirPath());
-    return {QDir::cleanPath(bin.filePath(QStringLiteral("../share/chaplygin-lab/translations"))),
-            QStringLiteral(":/i18n")};
-}
-
 QString installTranslations(QCoreApplication& app, const QLocale& locale,
                             const QStringList& directories) {
     auto* qt = new QTranslator(&app);

@@ -4,6 +4,7 @@
 # qtest: the QtTest checks that need a real X server (TESTS, with QT_QPA_PLATFORM=xcb);
 # session: APP started as a new user would (no settings) and driven with xdotool: the Animation
 # menu, Space, a step, F11 and Esc, F1, a resize; checked on screenshots of the screen.
+# bad_file_dialog: APP FILE with a bad scene and no terminal shows the message in a dialog.
 # Exit 77 (skipped, with the reason) where Xvfb, xdotool, xwininfo or ImageMagick are missing.
 set -u
 app=$1
@@ -119,6 +120,25 @@ session)
   if grep -E "QWidget|QLayout|QPainter|Segmentation|terminate" "$work/app.log"; then
     fail "warnings on stderr"
   fi
+  ;;
+bad_file_dialog)
+  # a bad scene opened as from a file manager (no terminal on stderr): a dialog says what is
+  # wrong, and the window is there behind it with the default scene
+  printf '{"format": "chaplygin-lab-scene", "version": 1, "path": 3}' >"$work/bad.json"
+  "$app" "$work/bad.json" </dev/null >"$work/app.log" 2>&1 &
+  pids+=($!)
+  dialog=$(timeout 30 xdotool search --sync --onlyvisible --name '^Cannot open the scene$' | head -1)
+  [ -n "$dialog" ] || fail "no dialog: $(head -c 500 "$work/app.log")"
+  timeout 10 xdotool search --sync --onlyvisible --name '— Chaplygin Lab$' >/dev/null \
+    || fail "no main window behind the dialog"
+  grep -q "bad.json" "$work/app.log" || fail "stderr does not name the file: $(cat "$work/app.log")"
+  xdotool windowactivate --sync "$dialog" key Return 2>/dev/null || xdotool key Return
+  for _ in $(seq 20); do
+    xdotool search --onlyvisible --name '^Cannot open the scene$' >/dev/null || break
+    sleep 0.5
+  done
+  xdotool search --onlyvisible --name '^Cannot open the scene$' >/dev/null && fail "Return did not close the dialog"
+  kill -0 "${pids[1]}" || fail "the program ended: $(head -c 500 "$work/app.log")"
   ;;
 *)
   fail "unknown case"

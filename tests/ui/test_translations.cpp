@@ -58,6 +58,7 @@ class TestTranslations : public QObject {
     void installedCatalogueComesFirst();
     void languageChoiceSavedInSettings();
     void screenshotRefusesUnknownLanguage();
+    void languageWithoutCatalogueNotOffered();
 };
 
 void TestTranslations::initTestCase() {
@@ -124,7 +125,7 @@ void TestTranslations::installedCatalogueComesFirst() {
         QStringLiteral(":/i18n/chaplygin-lab_pt_BR.qm"));
     removeTranslators();
     // the program looks beside its own prefix first
-    const QStringList dirs = app::catalogueDirectories();
+    const QStringList dirs = catalogueDirectories();
     QCOMPARE(dirs.size(), 2);
     QVERIFY2(dirs[0].endsWith(QLatin1String("/share/chaplygin-lab/translations")),
              qPrintable(dirs[0]));
@@ -163,6 +164,28 @@ void TestTranslations::screenshotRefusesUnknownLanguage() {
     char* argv[] = {a0, a1, file.data(), a3, a4, nullptr};
     QCOMPARE(runScreenshot(5, argv), 2);
     QVERIFY(!QFileInfo::exists(QString::fromUtf8(file)));
+}
+
+void TestTranslations::languageWithoutCatalogueNotOffered() {
+    QTemporaryDir empty;
+    QVERIFY(!catalogueAvailable(QStringLiteral("pt_BR"), {empty.path()}));
+    QVERIFY(catalogueAvailable(QStringLiteral("en"), {empty.path()})); // the sources' language
+    QVERIFY(catalogueAvailable(QStringLiteral("pt_BR")));              // compiled in under :/i18n
+    auto portugueseIn = [](const LanguageMenu& menu) -> QAction* {
+        for (QAction* a : menu.actions())
+            if (a->data().toString() == QLatin1String("pt_BR"))
+                return a;
+        return nullptr;
+    };
+    LanguageMenu without(nullptr, {empty.path()});
+    QAction* missing = portugueseIn(without);
+    QVERIFY(missing);
+    QVERIFY(!missing->isEnabled());
+    QVERIFY2(missing->text().contains(QLatin1String("not installed")), qPrintable(missing->text()));
+    LanguageMenu with;
+    QAction* offered = portugueseIn(with);
+    QVERIFY(offered && offered->isEnabled());
+    QCOMPARE(offered->text(), QStringLiteral("Portugu\u00eas (Brasil)"));
 }
 
 QTEST_MAIN(TestTranslations)
