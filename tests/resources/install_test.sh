@@ -16,7 +16,9 @@ fail() { echo "FAIL: $*"; exit 1; }
 for f in share/applications/io.github.chaplyginlab.ChaplyginLab.desktop \
          share/metainfo/io.github.chaplyginlab.ChaplyginLab.metainfo.xml \
          share/icons/hicolor/scalable/apps/chaplygin-lab.svg \
-         share/man/man1/chaplygin-lab.1 \
+         share/man/man1/chaplygin-lab.1.gz \
+         share/doc/chaplygin-lab/copyright share/doc/chaplygin-lab/changelog.gz \
+         share/mime/packages/io.github.chaplyginlab.ChaplyginLab.xml \
          share/doc/chaplygin-lab/README.md share/doc/chaplygin-lab/user-guide.md \
          share/chaplygin-lab/scenes/presets/circle.json share/chaplygin-lab/scenes/gallery/cusp.json; do
   [ -s "$usr/$f" ] || fail "no $f"
@@ -33,7 +35,18 @@ for size in 16 22 24 32 48 64 128 256 512; do
   [ $(((w0 << 24) + (w1 << 16) + (w2 << 8) + w3)) -eq "$size" ] &&
     [ $(((h0 << 24) + (h1 << 16) + (h2 << 8) + h3)) -eq "$size" ] || fail "$png is not ${size}x${size}"
 done
-grep -q -- '\\-\\-preset' "$usr/share/man/man1/chaplygin-lab.1" || fail "the man page lacks --preset"
+# the man page: every option of --help, and the installed (absolute) paths
+man=$(gzip -dc "$usr/share/man/man1/chaplygin-lab.1.gz")
+for option in preset screenshot presentation panel language at size headless version animation; do
+  grep -q -- "\\\\-\\\\-$option" <<<"$man" || fail "the man page lacks --$option"
+done
+grep -q '^\.I /usr/share/chaplygin\\-lab/scenes' <<<"$man" || fail "the man page's FILES are not /usr/share/..."
+grep -q '/usr/share/doc/chaplygin\\-lab' <<<"$man" || fail "the man page does not point to /usr/share/doc"
+# the desktop entry opens the scene type that the MIME package defines
+mime=$(sed -n 's/^MimeType=\([^;]*\);.*/\1/p' "$usr/share/applications/io.github.chaplyginlab.ChaplyginLab.desktop")
+[ -n "$mime" ] || fail "the desktop entry declares no MimeType"
+grep -q "<mime-type type=\"$mime\">" "$usr/share/mime/packages/io.github.chaplyginlab.ChaplyginLab.xml" \
+  || fail "the MIME package does not define $mime"
 # the desktop entry names the installed program and icon; the metainfo launches that entry
 desktop=$usr/share/applications/io.github.chaplyginlab.ChaplyginLab.desktop
 exe=$(sed -n 's/^Exec=\([^ ]*\).*/\1/p' "$desktop")
@@ -59,4 +72,15 @@ set -e
 [ "$rc" -eq 2 ] || fail "the constant-speed corner scene exited $rc, expected 2"
 grep -q "corner at (" err.txt || fail "the corner refusal does not name the place: $(cat err.txt)"
 [ ! -e corner.csv ] || fail "a refused scene wrote corner.csv"
+# --help and --version with no display at all
+for flag in --help --version; do
+  env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$usr/bin/chaplygin-lab" $flag >flag.txt 2>&1 \
+    || fail "the installed program's $flag exited $?: $(cat flag.txt)"
+done
+grep -qx "chaplygin-lab [0-9.]*" flag.txt || fail "--version printed: $(cat flag.txt)"
+# the window in Portuguese differs from the English one (the installed catalogue is found)
+"$usr/bin/chaplygin-lab" --screenshot en.png --preset circle --size 800x600 --language en
+"$usr/bin/chaplygin-lab" --screenshot pt.png --preset circle --size 800x600 --language pt_BR
+[ -s en.png ] && [ -s pt.png ] || fail "no screenshots"
+! cmp -s en.png pt.png || fail "the pt_BR screenshot is the English one"
 echo "installed layout and headless run OK"
