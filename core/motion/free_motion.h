@@ -43,7 +43,7 @@ class FreeMotion {
     /// The model used for the velocities and for the position, for the Solution's report.
     std::string velocityModel() const;
     std::string positionModel() const;
-    /// The closed form's constants (physics.md sec. 1): V, k = aV/b^2, c = atanh(sdot0/V) and
+    /// The closed form's constants (docs/physics.md §4): V, k = aV/b^2, c = atanh(sdot0/V) and
     /// sigma = sign(phidot0); general is false for rest, a line or a circle (then k = c = 0).
     struct Constants {
         double v = 0, k = 0, c = 0, sigma = 1;

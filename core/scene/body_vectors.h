@@ -20,7 +20,7 @@ struct AttachedVector {
     double vx = 0, vy = 0; ///< its components [m/s] or [N]
 };
 
-/// The body's vectors in world coordinates (physics.md sec. 0 and 2.7).
+/// The body's vectors in world coordinates (docs/physics.md §1 and §2).
 struct BodyVectors {
     AttachedVector knifeVelocity;   ///< sdot s-hat at P
     AttachedVector cmVelocity;      ///< sdot s-hat + a phidot n-hat at C = P + a s-hat

@@ -51,8 +51,8 @@
         <translation>na cúspide ou depois dela o trenó anda de ré: Ψ sai de (0, π) continuamente (docs/physics.md §3)</translation>
     </message>
     <message>
-        <source>pivot about P, docs/physics.md §2.8</source>
-        <translation>pivô em torno de P, docs/physics.md §2.8</translation>
+        <source>pivot about P, docs/physics.md §3</source>
+        <translation>pivô em torno de P, docs/physics.md §3</translation>
     </message>
     <message>
         <source>(45) tan Ψ = ρ/b on the branch Ψ ∈ (0, π) (erratum to (47))</source>
@@ -91,20 +91,16 @@
         <translation>Ângulo de condução e multiplicador de controle</translation>
     </message>
     <message>
-        <source>docs/physics.md §2.5</source>
-        <translation>docs/physics.md §2.5</translation>
+        <source>docs/physics.md §2</source>
+        <translation>docs/physics.md §2</translation>
     </message>
     <message>
         <source>Forces on the body</source>
         <translation>Forças sobre o corpo</translation>
     </message>
     <message>
-        <source>= λφ̇ (docs/physics.md §2.7)</source>
-        <translation>= λφ̇ (docs/physics.md §2.7)</translation>
-    </message>
-    <message>
-        <source>docs/physics.md §2.7</source>
-        <translation>docs/physics.md §2.7</translation>
+        <source>= λφ̇ (docs/physics.md §2)</source>
+        <translation>= λφ̇ (docs/physics.md §2)</translation>
     </message>
     <message>
         <source>(69)–(70), at P</source>

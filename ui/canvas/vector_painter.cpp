@@ -184,7 +184,7 @@ void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels) {
         if (std::fabs(c.spanDeg) * std::numbers::pi / 180 * c.radius < kMinArrowPx) {
             if (c.pivot && labels) {
                 // tau = 0 while the body turns in place; the control acts in impulses at the
-                // start and the end of the turn (physics.md sec. 2.8)
+                // start and the end of the turn (docs/physics.md §3)
                 p.setPen(pen(ink, 1, true));
                 p.setBrush(Qt::NoBrush);
                 p.drawEllipse(box);

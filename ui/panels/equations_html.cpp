@@ -102,7 +102,7 @@ QString equationsHtml(const Solution& s, double t) {
                  c.psi, QStringLiteral("rad"),
                  QCoreApplication::translate("EquationsPanel",
                                              "pivot about P, docs/physics.md \u00a7"
-                                             "2.8"));
+                                             "3"));
     } else if (!(c.sdot > 0)) {
         h +=
             row(QStringLiteral("\u03a8 = atan2(\u1e61, b\u03c6\u0307)"),
@@ -111,7 +111,8 @@ QString equationsHtml(const Solution& s, double t) {
                 QCoreApplication::translate("EquationsPanel",
                                             "at or after a cusp the sleigh backs up: \u03a8 "
                                             "leaves (0, \u03c0) continuously (docs/physics.md "
-                                            "\u00a73)"));
+                                            "\u00a7"
+                                            "3)"));
     } else {
         h += row(QStringLiteral("\u03a8 = atan2(1, b\u03ba)"),
                  QStringLiteral("atan2(1, %1 \u00b7 %2)").arg(num(d.b), num(m.kappa)), c.psi,
@@ -173,7 +174,7 @@ QString equationsHtml(const Solution& s, double t) {
             QStringLiteral("\u03a8\u0307 = \u2212b\u03ba\u209b\u1e61/(1 + b\u00b2\u03ba\u00b2)"),
             {}, c.psidot, QStringLiteral("rad/s"),
             QCoreApplication::translate("EquationsPanel", "docs/physics.md \u00a7"
-                                                          "2.5"));
+                                                          "2"));
     h += row(QStringLiteral("\u03bb = m b\u03c7\u0307 = m(b\u03a8\u0307 \u2212 a\u03c6\u0307)"),
              QStringLiteral("%1 (%2 \u00b7 %3 \u2212 %4 \u00b7 %5)")
                  .arg(num(d.mass), num(d.b), num(c.psidot), num(d.a), num(c.phidot)),
@@ -186,9 +187,9 @@ QString equationsHtml(const Solution& s, double t) {
              c.forceAxial, QStringLiteral("N"),
              energy ? QCoreApplication::translate("EquationsPanel",
                                                   "= \u03bb\u03c6\u0307 (docs/physics.md \u00a7"
-                                                  "2.7)")
+                                                  "2)")
                     : QCoreApplication::translate("EquationsPanel", "docs/physics.md \u00a7"
-                                                                    "2.7"));
+                                                                    "2"));
     h += row(QStringLiteral("N = F_c\u03c6 = m(\u1e61\u03c6\u0307 + a\u03c6\u0308)"),
              QStringLiteral("%1 (%2 \u00b7 %3 + %4 \u00b7 %5)")
                  .arg(num(d.mass), num(c.sdot), num(c.phidot), num(d.a), num(c.phiddot)),

@@ -35,7 +35,7 @@ Docks placeDocks(QMainWindow* window, const DockPanels& panels);
 /// Gives the canvas most of the window: the plots a third of the height (a quarter, at least
 /// 200 px, below 900 px), the left docks a quarter of the width (at least 360 px). Below 1200 px
 /// the right-hand docks (accuracy, notes, equations) join the left tabs after the parameters, so
-/// the canvas keeps its width (docs/user-guide.md, small screens).
+/// the canvas keeps its width (docs/user-guide.md, The window).
 void balanceDocks(QMainWindow* window, const Docks& docks);
 
 /// Keeps a window's docks balanced (balanceDocks): once when the window is first shown, when

@@ -42,7 +42,7 @@ TEST(BodyVectors, ControlledArrowsMatchTheMotionOnTheSinusoid) {
         EXPECT_NEAR(v.cx, c1.x, 1e-12);
         EXPECT_NEAR(v.cmVelocity.vx, (c2.x - c0.x) / (2 * h), 1e-5) << t;
         EXPECT_NEAR(v.cmVelocity.vy, (c2.y - c0.y) / (2 * h), 1e-5) << t;
-        // the total force on C is f_s s-hat + N n-hat = m d^2C/dt^2 (physics.md sec. 2.7)
+        // the total force on C is f_s s-hat + N n-hat = m d^2C/dt^2 (docs/physics.md §2)
         double ax = (c2.x - 2 * c1.x + c0.x) / (h * h), ay = (c2.y - 2 * c1.y + c0.y) / (h * h);
         double scale = sys.mass * std::hypot(ax, ay) + 1e-3;
         EXPECT_NEAR(v.axialForce.vx + v.lateralReaction.vx, sys.mass * ax, 2e-5 * scale) << t;
