@@ -13,6 +13,13 @@
     </message>
 </context>
 <context>
+    <name>DesktopEntry</name>
+    <message>
+        <source>Cannot open the scene</source>
+        <translation>Não foi possível abrir a cena</translation>
+    </message>
+</context>
+<context>
     <name>EquationsPanel</name>
     <message>
         <source>&lt;b&gt;Chaplygin sleigh&lt;/b&gt;: m = %1 kg, a = %2 m, b = %3 m (b² = a² + I/m, b is the radius of gyration about P)</source>
@@ -682,6 +689,14 @@ corpo vakonômico: %1</translation>
     <message>
         <source>Takes effect at the next start</source>
         <translation>Vale a partir do próximo início</translation>
+    </message>
+    <message>
+        <source>%1 (not installed)</source>
+        <translation>%1 (não instalado)</translation>
+    </message>
+    <message>
+        <source>The catalogue of this language is not installed</source>
+        <translation>O catálogo deste idioma não está instalado</translation>
     </message>
 </context>
 <context>
