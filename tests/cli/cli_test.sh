@@ -303,6 +303,12 @@ desktop_unknown_option)
   env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$exe" --preset nowhere >"$work/out" 2>"$work/err"
   [ $? -eq 2 ] || fail "a bad preset in desktop mode: exit $?"
   expect_err "--preset"
+  # the option table says where an option applies
+  env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$exe" --preset circle --csv x.csv >"$work/out" 2>"$work/err"
+  [ $? -eq 2 ] || fail "--csv in the window: not refused"
+  expect_err "--csv: applies only to --headless"
+  run 2 --preset circle --presentation
+  expect_err "--presentation: applies only to the window and --screenshot"
   ;;
 *)
   fail "unknown case"
