@@ -295,6 +295,8 @@ int runDesktop(int argc, char** argv) {
     window.show();
     if (options.presentation)
         window.presentation()->setActive(true);
+    // an earlier run that ended abnormally left an unsaved scene: offer it back
+    QTimer::singleShot(0, &window, [&window] { window.offerRestore(); });
     return app.exec();
 }
 

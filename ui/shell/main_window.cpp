@@ -38,6 +38,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
@@ -83,6 +84,20 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     connect(m_document, &SceneDocument::errorChanged, this, &MainWindow::onDocumentError);
     connect(m_document, &SceneDocument::fileNameChanged, this, &MainWindow::updateTitle);
     connect(m_undo, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    if (m_useSettings) {
+        // every change is kept on disk until it is saved (or undone back to the saved state)
+        m_autosave = new Autosave(this);
+        connect(m_undo, &QUndoStack::indexChanged, this, [this] {
+            if (m_undo->isClean())
+                m_autosave->discard();
+            else
+                m_autosave->sceneChanged(m_current, m_document->fileName());
+        });
+        connect(m_undo, &QUndoStack::cleanChanged, this, [this](bool clean) {
+            if (clean)
+                m_autosave->discard();
+        });
+    }
     connect(m_playback, &Playback::timeChanged, this, &MainWindow::onTime);
     connect(m_plots, &PlotsPanel::seekRequested, m_playback, &Playback::seek);
     connect(m_path, &PathPanel::presetChosen, this, &MainWindow::choosePreset);
@@ -592,7 +607,40 @@ void MainWindow::closeEvent(QCloseEvent* e) {
     }
     if (m_useSettings)
         saveWindowLayout(this);
+    if (m_autosave)
+        m_autosave->discard(); // a clean exit leaves nothing to restore
     e->accept();
+}
+
+bool MainWindow::offerRestore(const RestoreQuestion& restore) {
+    if (!m_autosave)
+        return false;
+    const std::vector<Autosave::Orphan> orphans = m_autosave->orphans();
+    if (orphans.empty())
+        return false;
+    const Autosave::Orphan& newest = orphans.front();
+    const bool wanted =
+        restore ? restore(newest)
+                : QMessageBox::question(
+                      this, tr("Restore the unsaved scene?"),
+                      tr("Chaplygin Lab ended without saving the scene you were working on. A "
+                         "copy was kept at %1. Restore it?")
+                          .arg(QLocale().toString(newest.written, QLocale::LongFormat)),
+                      QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes) == QMessageBox::Yes;
+    bool restored = false;
+    if (wanted) {
+        try {
+            loadScene(Autosave::readOrphan(newest));
+            m_document->setFileName(newest.fileName);
+            m_undo->resetClean();
+            m_autosave->sceneChanged(m_current, newest.fileName);
+            restored = true;
+        } catch (const std::exception& e) {
+            showFileError(QString::fromStdString(e.what()));
+        }
+    }
+    Autosave::removeOrphan(newest);
+    return restored;
 }
 
 } // namespace chaplygin::ui

@@ -1,9 +1,11 @@
 #pragma once
+#include "document/autosave.h"
 #include "scene/scene.h"
 #include "shell/dock_layout.h"
 
 #include <QMainWindow>
 
+#include <functional>
 #include <optional>
 
 class QAction;
@@ -107,6 +109,15 @@ class MainWindow : public QMainWindow {
     /// The About text (version from the build, licence, credits, the paper).
     static QString aboutText();
 
+    /// After an abnormal end of an earlier run: offers the newest unsaved scene it left
+    /// (Autosave), asking `restore` (by default a dialog saying from when). A restored scene
+    /// is the document, modified, with its own file name; either way the copy is removed.
+    /// Returns whether a scene was restored.
+    using RestoreQuestion = std::function<bool(const Autosave::Orphan&)>;
+    bool offerRestore(const RestoreQuestion& restore = {});
+    /// The copy of the unsaved scene (null for tests and screenshots).
+    Autosave* autosave() const { return m_autosave; }
+
   protected:
     void closeEvent(QCloseEvent* e) override;
 
@@ -161,6 +172,7 @@ class MainWindow : public QMainWindow {
     Scene m_current;
     bool m_applied = false; // whether m_current has been shown yet
     QString m_lastFileError;
+    Autosave* m_autosave = nullptr;
 };
 
 } // namespace chaplygin::ui
