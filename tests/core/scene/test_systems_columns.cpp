@@ -331,9 +331,9 @@ TEST_P(SystemsColumnsReference, EverySummaryFieldAndColumn) {
         for (int c = 0; c < kColumns; ++c) {
             char* end = nullptr;
             double v = std::strtod(p, &end);
-            ASSERT_NE(end, p) << names[c];
+            ASSERT_NE(end, p) << names[c].name;
             p = *end == ',' ? end + 1 : end;
-            EXPECT_NEAR(v, r[c], 1e-12 * (1 + std::fabs(r[c]))) << names[c] << " at t = " << r[0];
+            EXPECT_NEAR(v, r[c], 1e-12 * (1 + std::fabs(r[c]))) << names[c].name << " at t = " << r[0];
         }
     }
 }
