@@ -862,10 +862,6 @@ corpo vakonômico: %1</translation>
         <translation>A cena tem alterações não salvas. Salvá-las?</translation>
     </message>
     <message>
-        <source>cannot save &apos;%1&apos;: the scene does not solve (%2); fix it or undo first</source>
-        <translation>não é possível salvar &apos;%1&apos;: a cena não tem solução (%2); corrija-a ou desfaça antes</translation>
-    </message>
-    <message>
         <source>Saved %1</source>
         <translation>%1 salvo</translation>
     </message>
@@ -1467,6 +1463,14 @@ O que os estudantes devem observar…</translation>
     <message>
         <source>internal error: %1</source>
         <translation>erro interno: %1</translation>
+    </message>
+    <message>
+        <source>cannot save &apos;%1&apos;</source>
+        <translation>não é possível salvar &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>the scene does not solve (%1); fix it or undo first</source>
+        <translation>a cena não tem solução (%1); corrija-a ou desfaça antes</translation>
     </message>
 </context>
 <context>
