@@ -26,12 +26,12 @@
         <translation>&lt;b&gt;Trenó de Chaplygin&lt;/b&gt;: m = %1 kg, a = %2 m, b = %3 m (b² = a² + I/m, b é o raio de giração em relação a P)</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Rolling disk&lt;/b&gt; (App. A) as a sleigh: M_eff = m + I1/R² = %1 kg, b = R√(I2/(I1 + mR²)) = %2 √(%3/(%4 + %5·%2²)) = %6 m (A14); the contact point is under the centre, so a = 0</source>
-        <translation>&lt;b&gt;Disco rolante&lt;/b&gt; (Apêndice A) como trenó: M_eff = m + I1/R² = %1 kg, b = R√(I2/(I1 + mR²)) = %2 √(%3/(%4 + %5·%2²)) = %6 m (A14); o ponto de contato fica sob o centro, logo a = 0</translation>
+        <source>&lt;b&gt;Rolling disk&lt;/b&gt; (App. A) as a sleigh: m_eff = m + I1/R² = %1 kg, b = R√(I2/(I1 + mR²)) = %2 √(%3/(%4 + %5·%2²)) = %6 m (A14); the contact point is under the centre, so a = 0</source>
+        <translation>&lt;b&gt;Disco rolante&lt;/b&gt; (Apêndice A) como trenó: m_eff = m + I1/R² = %1 kg, b = R√(I2/(I1 + mR²)) = %2 √(%3/(%4 + %5·%2²)) = %6 m (A14); o ponto de contato fica sob o centro, logo a = 0</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Two-wheeled carriage&lt;/b&gt; (App. B) as a sleigh: M_eff = M + 2(m + I1/R²) = %1 kg, b = √(J/M_eff) = %2 m with J = I + 2I2 + 2a²(m + I1/R²) (B18); a = %3 m</source>
-        <translation>&lt;b&gt;Carrinho de duas rodas&lt;/b&gt; (Apêndice B) como trenó: M_eff = M + 2(m + I1/R²) = %1 kg, b = √(J/M_eff) = %2 m com J = I + 2I2 + 2a²(m + I1/R²) (B18); a = %3 m</translation>
+        <source>&lt;b&gt;Two-wheeled carriage&lt;/b&gt; (App. B) as a sleigh: m_eff = M + 2(m + I1/R²) = %1 kg, b = √(J/m_eff) = %2 m with J = I + 2I2 + 2a²(m + I1/R²) (B18); a = %3 m</source>
+        <translation>&lt;b&gt;Carrinho de duas rodas&lt;/b&gt; (Apêndice B) como trenó: m_eff = M + 2(m + I1/R²) = %1 kg, b = √(J/m_eff) = %2 m com J = I + 2I2 + 2a²(m + I1/R²) (B18); a = %3 m</translation>
     </message>
     <message>
         <source>&lt;p&gt;t = &lt;b&gt;%1 s&lt;/b&gt;: s = %2 m, φ = %3 rad, κ = %4 1/m; %5&lt;/p&gt;</source>
