@@ -82,7 +82,7 @@ def main():
             missed, checked = [], 0
             for k in range(400):
                 x, y = to_pixel(exact(lo + (hi - lo) * k / 399))
-                if min(math.hypot(x - ex, y - ey) for ex, ey in ends) < 14:
+                if min(math.hypot(x - ex, y - ey) for ex, ey in ends) < 24:
                     continue
                 inside = (canvas["x"] <= x < canvas["x"] + canvas["width"] and
                           canvas["y"] <= y < canvas["y"] + canvas["height"])

@@ -93,7 +93,7 @@ void TestPicture::zoomedCircleOnItsExactPath() {
         const double u = 2 * std::numbers::pi * k / 400;
         const QPointF q = map.map(QPointF(2 * std::cos(u), 2 * std::sin(u)));
         // the start marker and the bodies at the start cover the band
-        if (!area.contains(q) || QLineF(q, start).length() < 14)
+        if (!area.contains(q) || QLineF(q, start).length() < 24)
             continue;
         ++checked;
         bool near = false;
