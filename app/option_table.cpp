@@ -32,6 +32,14 @@ constexpr std::array kOptions = {
                .help = "the dock raised (methods computes the work-precision diagram;\n"
                        "sweep runs --sweep)",
                .modes = Screenshot, .section = S::Screenshot},
+    OptionSpec{.name = "--view-report", .argument = "FILE.json",
+               .help = "also write the canvas's rectangle in the screenshot's pixels and\n"
+                       "its map: pixel = origin + scale (x, -y), scale in px/m",
+               .modes = Screenshot, .section = S::Screenshot},
+    OptionSpec{.name = "--body", .argument = "scale|outline|marker",
+               .help = "the bodies to scale, as outlines or as markers (default: the\n"
+                       "saved choice)",
+               .modes = Screenshot, .section = S::Screenshot},
     OptionSpec{.name = "--language", .argument = "en|pt_BR",
                .help = "that catalogue instead of the system's (exit 2 when it is not\n"
                        "installed)",
