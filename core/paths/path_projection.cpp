@@ -57,11 +57,20 @@ PathProjection PathFrame::project(double x, double y, double uGuess) const {
         const double dx = x - p.x, dy = y - p.y, c = std::cos(p.phi), s = std::sin(p.phi);
         const double along = dx * c + dy * s, e = dy * c - dx * s;
         const double slope = p.speed * std::max(1 - p.kappa * e, 0.05);
-        const double du = along / slope;
+        const double du = along / slope, ds = du * p.speed;
+        if (std::fabs(ds) <= 1e-8) {
+            // the last step to first order in ds: what it leaves is kappa ds^2 ~ 1e-16 m
+            p.u += du;
+            p.s += ds;
+            p.x += c * ds;
+            p.y += s * ds;
+            p.phi += p.kappa * ds;
+            p.kappa += p.dkappa * ds;
+            p.dkappa += p.ddkappa * ds;
+            return {p, e - p.kappa * ds * (along - ds)};
+        }
         u += du;
         p = at(u);
-        if (std::fabs(du) * p.speed <= 1e-14 * (1 + std::fabs(p.s)))
-            return {p, (y - p.y) * std::cos(p.phi) - (x - p.x) * std::sin(p.phi)};
     }
     throw std::runtime_error("internal error: the projection onto the path does not converge "
                              "near u = " +
