@@ -98,7 +98,9 @@ perturbed_columns)
   below "$(csv_awk "$work/p.csv" 'NR == 2 { d = $pert_x - ($x - 0.3/sqrt(5)); print (d < 0 ? -d : d) }')" 1e-15 "pert_x(0)"
   below "$(csv_awk "$work/p.csv" 'NR == 2 { d = $fb_y - ($y + 0.6/sqrt(5)); print (d < 0 ? -d : d) }')" 1e-15 "fb_y(0)"
   below "$(csv_awk "$work/p.csv" 'NR == 2 { d = $fb_phi - $phi - 0.1; print (d < 0 ? -d : d) }')" 1e-15 "fb_phi(0)"
-  grep -q '"feedback"' <("$exe" --headless --preset line --perturb dy=0.1 --summary -) || fail "summary lacks models.feedback"
+  "$exe" --headless --preset line --perturb dy=0.1 --summary - > "$work/summary.json"
+  grep -q '"feedback": "GSL rk8pd at tolerance 1e-12' "$work/summary.json" || fail "summary lacks models.feedback"
+  grep -q '"perturbed": "GSL rk8pd at tolerance 1e-12' "$work/summary.json" || fail "summary lacks models.perturbed"
   grep -q '"feedback"' <("$exe" --headless --preset line --summary -) && fail "models.feedback without a perturbation"
   # a scene file's perturbation is the command line's; --perturb and --feedback-rate add to it
   cat > "$work/scene.json" <<'JSON'
