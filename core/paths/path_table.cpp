@@ -1,6 +1,7 @@
 #include "paths/path_table.h"
 
 #include "common/input_error.h"
+#include "numerics/safeguarded_newton.h"
 #include "paths/panel_certifier.h"
 #include "paths/panel_geometry.h"
 
@@ -448,22 +449,21 @@ double PathTable::uAtArcLength(double s) const {
     const PathNode &lo = m_nodes[k], &hi = m_nodes[k + 1];
     if (m_uniform)
         return lo.u + (s - lo.s) / lo.speed;
-    double a = lo.u, b = hi.u;
-    double u = a + (b - a) * (s - lo.s) / (hi.s - lo.s);
-    for (int iter = 0; iter < 30; ++iter) {
+    // Newton on s(u) = s with ds/du exact, safeguarded by bisection on the panel: converged at a
+    // step below 1e-15 of |u| plus the panel's width (the rounding of the Gauss sum); on the smooth
+    // s(u) Newton takes a few steps, and 30 only bound a bisection
+    const NewtonCaps caps{
+        .maxIterations = 30,
+        .newtonStep = {.value = 1e-15, .relativeToX = true, .scale = hi.u - lo.u}};
+    auto arcLength = [&](double u) {
         Partial part = partial(k, u);
         double f = lo.s - s;
         for (int i = 0; i < gauss::kPoints; ++i)
             f += part.weight[i] * part.geometry[i].speed;
-        (f > 0 ? b : a) = u;
-        double step = f / geometryOf(m_curve->eval(u)).speed;
-        if (std::fabs(step) <= 1e-15 * (std::fabs(u) + (hi.u - lo.u))) {
-            u -= step;
-            break;
-        }
-        u = (u - step > a && u - step < b) ? u - step : 0.5 * (a + b);
-    }
-    return u;
+        return NewtonValue{f, geometryOf(m_curve->eval(u)).speed};
+    };
+    const double u0 = lo.u + (hi.u - lo.u) * (s - lo.s) / (hi.s - lo.s);
+    return safeguardedNewton(arcLength, u0, {lo.u, hi.u}, caps).x;
 }
 
 } // namespace chaplygin
