@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 
 namespace chaplygin {
 namespace {
@@ -149,7 +150,8 @@ void TimeLaw::buildPanel(int piece, int k, TimePanel& tp) const {
         std::max(4 * cheb::tailEstimate(a.data(), n + 1, 0), std::fabs(duration - gaussDuration));
     tp.bound = bound;
     // the node times themselves are rounded to a few ulps of t
-    const double floor = 8 * 2.220446049250313e-16 * std::fabs(m_nodeTimes[piece][k + 1]);
+    const double floor =
+        8 * std::numeric_limits<double>::epsilon() * std::fabs(m_nodeTimes[piece][k + 1]);
     tp.certified = bound <= std::max(kTimeTolerance * duration, floor) || cp.noiseLimited;
 }
 

@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <numbers>
 
 namespace chaplygin {
 namespace {
 
 constexpr int kMaxCertifyDepth = 6; // further halvings of a panel whose interpolants fail
-constexpr double kEps = 2.220446049250313e-16;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
 constexpr double kRateTolerance = 1e-13; // as TimeLaw's bound on t over a panel
 
 // The exact geometry at the degree-kDegree Chebyshev points of a panel, each evaluated on first
