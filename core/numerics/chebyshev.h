@@ -23,8 +23,9 @@ const std::array<double, kPoints>& points();
 const double* transform(int degree);
 
 namespace detail {
-/// Two doubles in one vector register (a GCC and Clang extension): the transform below sums
-/// across the interleaved series two at a time, which the compilers do not find on their own.
+/// Two doubles in one vector register (a GCC and Clang extension): the transform and
+/// evaluateAtPlusMinus below sum across the interleaved series two at a time, which the compilers
+/// do not find on their own. Internal to chebyshev.h.
 using Pair = double __attribute__((vector_size(16)));
 } // namespace detail
 
@@ -115,6 +116,34 @@ inline double evaluateOne(const std::array<std::array<double, Q>, N>& c, std::si
         b1 = b;
     }
     return (c[0][q] - b2) + x * b1;
+}
+
+/// The first P (an even number) of Q interleaved series with n coefficients at x and at -x, from
+/// t[k] = T_k(x), k < n (a table: the same points for many series). Each series is its even part
+/// plus or minus its odd part, T_k(-x) = (-1)^k T_k(x), summed two series per vector register.
+template <std::size_t P, std::size_t Q>
+inline void evaluateAtPlusMinus(const std::array<double, Q>* c, int n, const double* t,
+                                double* atPlus, double* atMinus) {
+    static_assert(P % 2 == 0 && P <= Q, "whole pairs of the series");
+    constexpr std::size_t kPairs = P / 2;
+    detail::Pair even[kPairs] = {}, odd[kPairs] = {};
+    auto accumulate = [&](detail::Pair* sum, int k) {
+        const detail::Pair tk = {t[k], t[k]};
+        for (std::size_t p = 0; p < kPairs; ++p) {
+            detail::Pair ck;
+            std::memcpy(&ck, &c[k][2 * p], sizeof ck);
+            sum[p] += tk * ck;
+        }
+    };
+    for (int k = 0; k < n; k += 2)
+        accumulate(even, k);
+    for (int k = 1; k < n; k += 2)
+        accumulate(odd, k);
+    for (std::size_t p = 0; p < kPairs; ++p) {
+        const detail::Pair plus = even[p] + odd[p], minus = even[p] - odd[p];
+        std::memcpy(&atPlus[2 * p], &plus, sizeof plus);
+        std::memcpy(&atMinus[2 * p], &minus, sizeof minus);
+    }
 }
 
 /// Q series at once, coefficients interleaved c[k][q] (so the inner loop vectorises); `rows`

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <limits>
 #include <numbers>
 
@@ -142,33 +141,17 @@ double interpolate(const Curve& c, bool piecewise, const PanelData& d, double le
     // s integrates ds/dxi = half ds/du over at most 2 in xi
     double eS = 2 * half * tail(cSpeed);
     // the interpolants of x, y, phi, kappa and dkappa/ds at the Gauss nodes against the exact
-    // values there: even and odd parts at +x_i give the pair of nodes +-x_i
-    // (the columns up to dkappa/ds, with ds/du to make three pairs for the vector registers)
-    using cheb::detail::Pair;
-    constexpr int kPairs = (cSpeed + 1) / 2;
-    static_assert(cX == 0 && cSpeed == 2 * kPairs - 1, "the checked columns come first");
+    // values there, both nodes +-x_i at once (the columns up to dkappa/ds, with ds/du to make
+    // whole pairs)
+    constexpr std::size_t kChecked = cSpeed + 1;
+    static_assert(cX == 0 && kChecked % 2 == 0, "the checked columns come first");
     const GaussChebyshev& gt = gaussChebyshev();
-    auto accumulate = [&](Pair* sum, int k, int i) {
-        const Pair t = {gt.t[i][k], gt.t[i][k]};
-        for (int p = 0; p < kPairs; ++p) {
-            Pair c;
-            std::memcpy(&c, &coef[k][2 * p], sizeof c);
-            sum[p] += t * c;
-        }
-    };
     for (int i = 0; i < kHalf; ++i) {
-        Pair even[kPairs] = {}, odd[kPairs] = {};
-        for (int k = 0; k <= n; k += 2)
-            accumulate(even, k, i);
-        for (int k = 1; k <= n; k += 2)
-            accumulate(odd, k, i);
+        double atPlus[kChecked], atMinus[kChecked];
+        cheb::evaluateAtPlusMinus<kChecked>(coef.data(), n + 1, gt.t[i].data(), atPlus, atMinus);
         for (int sign : {1, -1}) {
             const int node = sign > 0 ? kHalf + i : kHalf - 1 - i;
-            double f[2 * kPairs];
-            for (int p = 0; p < kPairs; ++p) {
-                const Pair value = sign > 0 ? even[p] + odd[p] : even[p] - odd[p];
-                std::memcpy(&f[2 * p], &value, sizeof value);
-            }
+            const double* f = sign > 0 ? atPlus : atMinus;
             const CurveGeometry& g = d.geometry[node];
             const double ex = f[cX] - d.x[node], ey = f[cY] - d.y[node];
             ePos = std::max(ePos, std::sqrt(ex * ex + ey * ey));
