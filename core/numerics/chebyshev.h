@@ -1,4 +1,6 @@
 #pragma once
+// Chebyshev interpolants of the path table's panels: the points, the transform, series sums and
+// integrals (docs/numerics.md §7).
 #include <algorithm>
 #include <array>
 #include <cmath>

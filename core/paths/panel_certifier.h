@@ -1,4 +1,6 @@
 #pragma once
+// Internal to paths/ (path_table.cpp): the certification of a path table's per-panel Chebyshev
+// interpolants (docs/numerics.md §7).
 #include "paths/panel_geometry.h"
 
 #include <array>

@@ -1,4 +1,6 @@
 #pragma once
+// The adaptive path table: Gauss panels carrying every integral along a smooth curve, and
+// certified per-panel Chebyshev interpolants of its geometry (docs/numerics.md §7).
 #include "numerics/chebyshev.h"
 #include "numerics/gauss_legendre.h"
 #include "paths/curve.h"

@@ -1,4 +1,5 @@
 #pragma once
+// The command line's CSV: its columns and the rows of a Solution.
 #include "scene/solution.h"
 
 #include <string>
