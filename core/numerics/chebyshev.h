@@ -121,11 +121,12 @@ inline double evaluateOne(const std::array<std::array<double, Q>, N>& c, std::si
 }
 
 /// The first P (an even number) of Q interleaved series with n coefficients at x and at -x, from
-/// t[k] = T_k(x), k < n (a table: the same points for many series). Each series is its even part
-/// plus or minus its odd part, T_k(-x) = (-1)^k T_k(x), summed two series per vector register.
-template <std::size_t P, std::size_t Q>
+/// t[k] = T_k(x), k < n (a table: the same points for many series): visit(+1, values at x), then
+/// visit(-1, values at -x). Each series is its even part plus or minus its odd part,
+/// T_k(-x) = (-1)^k T_k(x), summed two series per vector register.
+template <std::size_t P, std::size_t Q, class Visit>
 inline void evaluateAtPlusMinus(const std::array<double, Q>* c, int n, const double* t,
-                                double* atPlus, double* atMinus) {
+                                Visit&& visit) {
     static_assert(P % 2 == 0 && P <= Q, "whole pairs of the series");
     constexpr std::size_t kPairs = P / 2;
     detail::Pair even[kPairs] = {}, odd[kPairs] = {};
@@ -141,10 +142,13 @@ inline void evaluateAtPlusMinus(const std::array<double, Q>* c, int n, const dou
         accumulate(even, k);
     for (int k = 1; k < n; k += 2)
         accumulate(odd, k);
-    for (std::size_t p = 0; p < kPairs; ++p) {
-        const detail::Pair plus = even[p] + odd[p], minus = even[p] - odd[p];
-        std::memcpy(&atPlus[2 * p], &plus, sizeof plus);
-        std::memcpy(&atMinus[2 * p], &minus, sizeof minus);
+    for (int sign : {1, -1}) {
+        double f[P];
+        for (std::size_t p = 0; p < kPairs; ++p) {
+            const detail::Pair value = sign > 0 ? even[p] + odd[p] : even[p] - odd[p];
+            std::memcpy(&f[2 * p], &value, sizeof value);
+        }
+        visit(sign, static_cast<const double*>(f));
     }
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -90,7 +91,12 @@ TEST(Chebyshev, SeriesAtPlusAndMinusXAreTheirEvenPartPlusOrMinusTheOddPart) {
         for (int k = 2; k < n; ++k)
             t[k] = 2 * x * t[k - 1] - t[k - 2];
         double atPlus[4], atMinus[4];
-        cheb::evaluateAtPlusMinus<4>(c.data(), n, t.data(), atPlus, atMinus);
+        int visits = 0;
+        cheb::evaluateAtPlusMinus<4>(c.data(), n, t.data(), [&](int sign, const double* f) {
+            std::copy(f, f + 4, sign > 0 ? atPlus : atMinus);
+            visits += sign > 0 ? 1 : 10;
+        });
+        EXPECT_EQ(visits, 11);
         for (std::size_t q = 0; q < 4; ++q) {
             double even = 0, odd = 0;
             for (int k = 0; k < n; k += 2)
