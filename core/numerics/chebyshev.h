@@ -1,6 +1,7 @@
 #pragma once
-// Chebyshev interpolants of the path table's panels: the points, the transform, series sums and
-// integrals (docs/numerics.md §7).
+// Chebyshev interpolation on [-1, 1]: the points of the second kind, the transform, series sums
+// and integrals; the per-panel interpolants of the path table, the time law and the free motion
+// (docs/numerics.md §7).
 #include <algorithm>
 #include <array>
 #include <cmath>
