@@ -1,4 +1,5 @@
 #pragma once
+// Output files written whole or not at all (writeFileAtomically) and the IoError it throws.
 #include <stdexcept>
 #include <string>
 

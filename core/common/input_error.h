@@ -1,4 +1,6 @@
 #pragma once
+// InputError, the one kind of user-facing failure, which names its place, and formatNumber for
+// messages.
 #include <stdexcept>
 #include <string>
 

@@ -1,4 +1,5 @@
 #pragma once
+// The allocator settings the program and the benchmarks start with (keepFreedMemoryForReuse).
 
 namespace chaplygin {
 

@@ -1,4 +1,6 @@
 #pragma once
+// The tracking control law: Psi, chi, lambda, the accelerations, forces and energy from kappa,
+// dkappa/ds and phi on a smooth stretch, at a cusp and while pivoting (docs/physics.md §2, §3).
 #include "systems/system.h"
 
 #include <string>

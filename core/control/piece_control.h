@@ -1,4 +1,6 @@
 #pragma once
+// The control law on one piece of a path: its heading offset, direction of travel and the limits
+// at a cusp end.
 #include "control/control_law.h"
 #include "paths/path.h"
 

@@ -1,4 +1,6 @@
 #pragma once
+// The gallery: the scenes where a method or a model fails, read from resources/scenes/gallery
+// (docs/numerics.md §4).
 #include "scene/scene.h"
 
 #include <string>

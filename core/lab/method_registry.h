@@ -1,4 +1,6 @@
 #pragma once
+// The method registry: every method that solves a scene's controlled or free motion, prepared
+// once per scene (docs/numerics.md §1).
 #include "control/control_law.h"
 #include "lab/planned_motion.h"
 #include "motion/free_motion.h"

@@ -1,4 +1,6 @@
 #pragma once
+// Parameter sweeps: one parameter over a range on one tabulated path, with the duration and the
+// maxima of the control quantities per value (docs/numerics.md §6).
 #include "scene/scene.h"
 
 #include <atomic>

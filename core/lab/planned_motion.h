@@ -1,4 +1,5 @@
 #pragma once
+// The app's controlled motion at any time, as the method registry and the open loop read it.
 #include "control/control_law.h"
 #include "motion/time_law.h"
 #include "paths/path.h"

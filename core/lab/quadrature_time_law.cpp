@@ -1,6 +1,7 @@
 #include "lab/quadrature_time_law.h"
 
 #include "numerics/gsl_callback.h"
+#include "numerics/safeguarded_newton.h"
 
 #include <gsl/gsl_integration.h>
 
@@ -13,6 +14,14 @@ namespace chaplygin {
 namespace {
 
 constexpr std::size_t kLimit = 1000;
+
+// Converged at a step below 1e-15 of 1 + |u| (u is the path's own parameter) or when the bracket
+// has closed; Newton steps onto the bracket's ends are taken, since the root may be u1 itself. 100
+// iterations are a bound: Newton from the previous output's rate takes a few.
+constexpr NewtonCaps kInversionCaps{.maxIterations = 100,
+                                    .takenStep = {.value = 1e-15, .relativeToX = true, .scale = 1},
+                                    .bracket = {.value = 0},
+                                    .closedBracket = true};
 
 struct WorkspaceDeleter {
     void operator()(gsl_integration_workspace* w) const { gsl_integration_workspace_free(w); }
@@ -85,27 +94,21 @@ std::vector<double> QuadratureTimeLaw::invert(const std::vector<double>& times,
     out.reserve(times.size());
     double uPrev = m_curve.u0(), tPrev = 0;
     for (double target : times) {
-        // Newton on t(u) = target with dt/du exact, safeguarded by bisection on [a, b]
-        double a = uPrev, b = m_curve.u1();
+        // Newton on t(u) = target with dt/du exact, safeguarded by bisection on [uPrev, u1]; t is
+        // carried from point to point by the integral over each step
         double rPrev = rate(uPrev);
         ++work.rhsEvals;
-        double u = std::min(uPrev + (target - tPrev) / rPrev, b);
-        double tAt = tPrev + integral(uPrev, u);
-        for (int iter = 0; iter < 100; ++iter) {
-            double f = tAt - target;
-            (f > 0 ? b : a) = u;
-            double r = rate(u);
-            ++work.rhsEvals;
-            double next = u - f / r;
-            if (!(next >= a && next <= b))
-                next = 0.5 * (a + b);
-            tAt += integral(u, next);
-            const double step = next - u;
-            u = next;
+        const double u0 = std::min(uPrev + (target - tPrev) / rPrev, m_curve.u1());
+        double tAt = tPrev, from = uPrev;
+        auto timeAt = [&](double u) {
+            tAt += integral(from, u);
+            from = u;
             ++work.steps;
-            if (std::fabs(step) <= 1e-15 * (1 + std::fabs(u)) || a == b)
-                break;
-        }
+            ++work.rhsEvals;
+            return NewtonValue{tAt - target, rate(u)};
+        };
+        const double u = safeguardedNewton(timeAt, u0, {uPrev, m_curve.u1()}, kInversionCaps).x;
+        tAt += integral(from, u);
         out.push_back(u);
         uPrev = u;
         tPrev = tAt;

@@ -1,4 +1,6 @@
 #pragma once
+// The time law by GSL's adaptive quadrature and its inversion by Newton: the method lab's
+// gsl_qag_newton and its reference (docs/numerics.md §1).
 #include "control/control_law.h"
 #include "numerics/ode_problem.h"
 #include "paths/curve.h"

@@ -1,4 +1,6 @@
 #pragma once
+// The sleigh's ODE problems for the method lab: the controlled time law in u, the free sleigh and
+// the paper's open loop.
 #include "control/control_law.h"
 #include "lab/planned_motion.h"
 #include "numerics/ode_problem.h"

@@ -1,4 +1,6 @@
 #pragma once
+// The work-precision sweep: every method of the registry over its tolerances or steps, timed and
+// compared with a reference (docs/numerics.md §2).
 #include "lab/method_registry.h"
 #include "scene/scene.h"
 

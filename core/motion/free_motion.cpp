@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace chaplygin {
@@ -75,7 +76,7 @@ FreeMotion::FreeMotion(const DerivedSystem& system, const FreeInitial& initial, 
 }
 
 void FreeMotion::addPanel(double t0, double t1, int depth) {
-    constexpr double kEps = 2.220446049250313e-16;
+    constexpr double kEps = std::numeric_limits<double>::epsilon();
     constexpr int kMaxSplits = 3; // a panel whose position is not certified is halved, so often
     const auto& xs = cheb::points();
     // a point between the interpolation points, near an end where the error of an interpolant

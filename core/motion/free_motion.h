@@ -1,4 +1,6 @@
 #pragma once
+// The free (Lagrange-d'Alembert) sleigh in closed form, its position from certified per-panel
+// interpolants (docs/physics.md §4).
 #include "systems/system.h"
 
 #include <array>

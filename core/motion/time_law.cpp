@@ -1,21 +1,28 @@
 #include "motion/time_law.h"
 
 #include "common/input_error.h"
+#include "numerics/safeguarded_newton.h"
 #include "paths/panel_geometry.h"
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 
 namespace chaplygin {
 namespace {
 
 constexpr double kTimeTolerance = 1e-13; // bound on t over a panel, relative to its duration
 
+// Newton on a certified panel's t(xi), polynomial and smooth: a step below 1e-9 leaves an error of
+// its square (quadratic convergence), below rounding; a bracket of 1e-15 in xi is at rounding; 60
+// iterations would bisect [-1, 1] far below that
+constexpr NewtonCaps kPanelTimeCaps{
+    .maxIterations = 60, .newtonStep = {.value = 1e-9}, .bracket = {.value = 1e-15}};
+
 // t(xi) = tau on a certified panel of duration D: Newton from the quintic Hermite interpolant of
 // the inverse xi(tau/D) (its value, slope D/r and curvature -D^2 r'/r^3 at both ends, r = dt/dxi),
-// safeguarded by bisection. Stops once the step is below 1e-9: the error after it is of the
-// order of the step squared (quadratic convergence), below rounding.
+// safeguarded by bisection on [-1, 1].
 double solveXi(const TimeLaw::TimePanel& p, double tau, double D) {
     const double th = std::clamp(tau / D, 0.0, 1.0), th2 = th * th, th3 = th2 * th, th4 = th3 * th,
                  th5 = th4 * th;
@@ -25,22 +32,14 @@ double solveXi(const TimeLaw::TimePanel& p, double tau, double D) {
     double xi = -(1 - end) + end + (th - 6 * th3 + 8 * th4 - 3 * th5) * m0 +
                 (-4 * th3 + 7 * th4 - 3 * th5) * m1 + 0.5 * (th2 - 3 * th3 + 3 * th4 - th5) * q0 +
                 0.5 * (th3 - 2 * th4 + th5) * q1;
-    double lo = -1, hi = 1;
-    xi = std::clamp(xi, lo, hi);
-    for (int iter = 0; iter < 60; ++iter) {
+    auto timeAt = [&](double x) {
         double fr[2];
-        cheb::evaluateMany(p.c, xi, fr, p.rows);
-        const double f = fr[0] - tau;
-        (f > 0 ? hi : lo) = xi;
-        const double step = f / fr[1];
-        if (std::fabs(step) <= 1e-9)
-            return std::clamp(xi - step, -1.0, 1.0);
-        const double next = xi - step;
-        xi = (next > lo && next < hi) ? next : 0.5 * (lo + hi);
-        if (hi - lo <= 1e-15)
-            break;
-    }
-    return xi;
+        cheb::evaluateMany(p.c, x, fr, p.rows);
+        return NewtonValue{fr[0] - tau, fr[1]};
+    };
+    // a converged Newton step may end a little outside [-1, 1]
+    return std::clamp(
+        safeguardedNewton(timeAt, std::clamp(xi, -1.0, 1.0), {-1, 1}, kPanelTimeCaps).x, -1.0, 1.0);
 }
 
 } // namespace
@@ -151,7 +150,8 @@ void TimeLaw::buildPanel(int piece, int k, TimePanel& tp) const {
         std::max(4 * cheb::tailEstimate(a.data(), n + 1, 0), std::fabs(duration - gaussDuration));
     tp.bound = bound;
     // the node times themselves are rounded to a few ulps of t
-    const double floor = 8 * 2.220446049250313e-16 * std::fabs(m_nodeTimes[piece][k + 1]);
+    const double floor =
+        8 * std::numeric_limits<double>::epsilon() * std::fabs(m_nodeTimes[piece][k + 1]);
     tp.certified = bound <= std::max(kTimeTolerance * duration, floor) || cp.noiseLimited;
 }
 
@@ -322,20 +322,17 @@ PathLocation TimeLaw::locateExact(double t) const {
         double u = table.uAtArcLength((t - m_pieceStart[piece]) * m_params.speed);
         return curveLocation(piece, table.panelOf(u), u);
     }
-    // Newton on t(u) = t with dt/du = |r'| sqrt(1 + b^2 kappa^2)/v_T, safeguarded by bisection
-    double a = lo.u, b = hi.u;
-    double u = a + (b - a) * (t - times[k]) / (times[k + 1] - times[k]);
-    for (int iter = 0; iter < 40; ++iter) {
-        double f = timeAtExact(piece, u) - t;
-        (f > 0 ? b : a) = u;
-        double step = f / exactRate(table, u);
-        if (std::fabs(step) <= 1e-15 * (std::fabs(u) + (hi.u - lo.u))) {
-            u -= step;
-            break;
-        }
-        u = (u - step > a && u - step < b) ? u - step : 0.5 * (a + b);
-    }
-    return curveLocation(piece, k, u);
+    // Newton on t(u) = t with dt/du = |r'| sqrt(1 + b^2 kappa^2)/v_T, safeguarded by bisection on
+    // the panel: converged at a step below 1e-15 of |u| plus the panel's width (the rounding of t's
+    // Gauss sum); on the smooth t(u) Newton takes a few steps, and 40 only bound a bisection
+    const NewtonCaps caps{
+        .maxIterations = 40,
+        .newtonStep = {.value = 1e-15, .relativeToX = true, .scale = hi.u - lo.u}};
+    auto timeAt = [&](double u) {
+        return NewtonValue{timeAtExact(piece, u) - t, exactRate(table, u)};
+    };
+    const double u0 = lo.u + (hi.u - lo.u) * (t - times[k]) / (times[k + 1] - times[k]);
+    return curveLocation(piece, k, safeguardedNewton(timeAt, u0, {lo.u, hi.u}, caps).x);
 }
 
 } // namespace chaplygin

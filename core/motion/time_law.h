@@ -1,4 +1,6 @@
 #pragma once
+// The time law t(s) along a tabulated path and its inverse, the body's place at a time
+// (docs/physics.md §2, docs/numerics.md §7).
 #include "control/control_law.h"
 #include "paths/path.h"
 

@@ -1,4 +1,6 @@
 #pragma once
+// The genuine vakonomic body in closed form through Jacobi elliptic functions
+// (docs/physics.md §8).
 #include "systems/system.h"
 
 #include <string>

@@ -1,4 +1,7 @@
 #pragma once
+// Chebyshev interpolation on [-1, 1]: the points of the second kind, the transform, series sums
+// and integrals; the per-panel interpolants of the path table, the time law and the free motion
+// (docs/numerics.md §7).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -23,8 +26,9 @@ const std::array<double, kPoints>& points();
 const double* transform(int degree);
 
 namespace detail {
-/// Two doubles in one vector register (a GCC and Clang extension): the transform below sums
-/// across the interleaved series two at a time, which the compilers do not find on their own.
+/// Two doubles in one vector register (a GCC and Clang extension): the transform and
+/// evaluateAtPlusMinus below sum across the interleaved series two at a time, which the compilers
+/// do not find on their own. Internal to chebyshev.h.
 using Pair = double __attribute__((vector_size(16)));
 } // namespace detail
 
@@ -115,6 +119,38 @@ inline double evaluateOne(const std::array<std::array<double, Q>, N>& c, std::si
         b1 = b;
     }
     return (c[0][q] - b2) + x * b1;
+}
+
+/// The first P (an even number) of Q interleaved series with n coefficients at x and at -x, from
+/// t[k] = T_k(x), k < n (a table: the same points for many series): visit(+1, values at x), then
+/// visit(-1, values at -x). Each series is its even part plus or minus its odd part,
+/// T_k(-x) = (-1)^k T_k(x), summed two series per vector register.
+template <std::size_t P, std::size_t Q, class Visit>
+inline void evaluateAtPlusMinus(const std::array<double, Q>* c, int n, const double* t,
+                                Visit&& visit) {
+    static_assert(P % 2 == 0 && P <= Q, "whole pairs of the series");
+    constexpr std::size_t kPairs = P / 2;
+    detail::Pair even[kPairs] = {}, odd[kPairs] = {};
+    auto accumulate = [&](detail::Pair* sum, int k) {
+        const detail::Pair tk = {t[k], t[k]};
+        for (std::size_t p = 0; p < kPairs; ++p) {
+            detail::Pair ck;
+            std::memcpy(&ck, &c[k][2 * p], sizeof ck);
+            sum[p] += tk * ck;
+        }
+    };
+    for (int k = 0; k < n; k += 2)
+        accumulate(even, k);
+    for (int k = 1; k < n; k += 2)
+        accumulate(odd, k);
+    for (int sign : {1, -1}) {
+        double f[P];
+        for (std::size_t p = 0; p < kPairs; ++p) {
+            const detail::Pair value = sign > 0 ? even[p] + odd[p] : even[p] - odd[p];
+            std::memcpy(&f[2 * p], &value, sizeof value);
+        }
+        visit(sign, static_cast<const double*>(f));
+    }
 }
 
 /// Q series at once, coefficients interleaved c[k][q] (so the inner loop vectorises); `rows`

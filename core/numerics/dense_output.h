@@ -1,4 +1,5 @@
 #pragma once
+// Quintic Hermite dense output between an ODE method's accepted steps (docs/numerics.md §1).
 #include "numerics/ode_problem.h"
 
 #include <array>

@@ -1,4 +1,6 @@
 #pragma once
+// Hand-written classical RK4 with equal steps, optionally projected after each step: the
+// benchmarks' floor.
 #include "numerics/dense_output.h"
 #include "numerics/ode_problem.h"
 

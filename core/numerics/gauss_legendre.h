@@ -1,4 +1,5 @@
 #pragma once
+// The 8-point Gauss-Legendre rule: its nodes and weights, mapped to an interval.
 #include <array>
 
 namespace chaplygin::gauss {

@@ -1,4 +1,6 @@
 #pragma once
+// The one adapter of GSL's C callbacks to C++ callables and OdeProblems (the only void*), and
+// GSL's error handler switched off.
 #include "numerics/ode_problem.h"
 
 #include <gsl/gsl_errno.h>

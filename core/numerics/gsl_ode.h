@@ -1,4 +1,6 @@
 #pragma once
+// GSL's odeiv2 steppers: free integration with every accepted step kept, fixed steps, and values
+// at output times (docs/numerics.md §1).
 #include "numerics/dense_output.h"
 #include "numerics/ode_problem.h"
 

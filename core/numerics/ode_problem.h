@@ -1,4 +1,5 @@
 #pragma once
+// An ODE y' = f(t, y) with its Jacobian as the steppers see it, and the work counters of a solve.
 #include <cstddef>
 
 namespace chaplygin {

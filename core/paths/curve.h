@@ -1,4 +1,5 @@
 #pragma once
+// A parametrised plane curve with exact derivatives up to the third, and its local geometry.
 #include <string>
 #include <vector>
 

@@ -1,10 +1,12 @@
 #include "paths/cusp_finder.h"
 
 #include "common/input_error.h"
+#include "numerics/safeguarded_newton.h"
 #include "paths/panel_geometry.h"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace chaplygin {
 namespace {
@@ -18,23 +20,21 @@ double speed2(const CurvePoint& p) {
     return p.dx * p.dx + p.dy * p.dy;
 }
 
+// The cusp's u to rounding: no step test, the iteration runs until the bracket is 4 eps |u| wide
+// or r'.r'' is exactly 0; 100 iterations are a bound (bisection alone would need about 45)
+constexpr NewtonCaps kCuspCaps{
+    .maxIterations = 100,
+    .bracket = {.value = 4 * std::numeric_limits<double>::epsilon(), .relativeToX = true},
+    .stopAtRoot = true};
+
 // r'.r'' = (|r'|^2)'/2 changes sign from - to + at a minimum of |r'|: Newton, kept in [lo, hi]
 double refineMinimum(const Curve& c, double lo, double hi, double u) {
-    for (int iter = 0; iter < 100; ++iter) {
-        CurvePoint p = c.eval(u);
-        const double g = p.dx * p.ddx + p.dy * p.ddy;
-        if (g == 0)
-            return u;
-        (g > 0 ? hi : lo) = u;
-        const double dg = p.ddx * p.ddx + p.ddy * p.ddy + p.dx * p.dddx + p.dy * p.dddy;
-        double next = u - g / dg;
-        if (!(next > lo && next < hi))
-            next = 0.5 * (lo + hi);
-        if (next == u || hi - lo <= 4 * std::numeric_limits<double>::epsilon() * std::fabs(u))
-            return next;
-        u = next;
-    }
-    return u;
+    auto slope = [&](double v) {
+        CurvePoint p = c.eval(v);
+        return NewtonValue{p.dx * p.ddx + p.dy * p.ddy,
+                           p.ddx * p.ddx + p.ddy * p.ddy + p.dx * p.dddx + p.dy * p.dddy};
+    };
+    return safeguardedNewton(slope, u, {lo, hi}, kCuspCaps).x;
 }
 
 } // namespace

@@ -1,4 +1,6 @@
 #pragma once
+// The cusps of a curve, where r' vanishes, found and checked before it is tabulated
+// (docs/physics.md §3).
 #include "paths/curve.h"
 
 #include <vector>

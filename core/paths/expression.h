@@ -1,4 +1,5 @@
 #pragma once
+// Typed expressions in one variable with exact derivatives (muparser values, GiNaC derivatives).
 #include <memory>
 #include <string>
 

@@ -1,4 +1,6 @@
 #pragma once
+// Internal to paths/ (expression.cpp): the check of a typed expression's constant parts before
+// GiNaC sees it.
 #include <string>
 
 namespace chaplygin {

@@ -1,4 +1,6 @@
 #pragma once
+// The curves of typed expressions, a graph y(x) and a parametric x(u), y(u), and the straight
+// segment.
 #include "paths/curve.h"
 #include "paths/expression.h"
 

@@ -1,4 +1,6 @@
 #pragma once
+// Internal to paths/ (path_table.cpp): the certification of a path table's per-panel Chebyshev
+// interpolants (docs/numerics.md §7).
 #include "paths/panel_geometry.h"
 
 #include <array>
@@ -25,10 +27,10 @@ struct Certifier {
     double cuspStart, cuspEnd;      // u of a cusp at either end, or NaN
     std::size_t halvingsLeft;       // of the table's budget; when none are left, panels stay exact
     std::vector<PanelSums>& leaves; // the kept panels' sums (empty at the start)
-    std::vector<PathTable::ChebPanel> cheb;
-    std::vector<PathTable::Row> rows;
-    std::vector<PathTable::Sample> samples;
-    PathTable::Bounds bounds;
+    std::vector<PathTable::ChebPanel> cheb{};
+    std::vector<PathTable::Row> rows{};
+    std::vector<PathTable::Sample> samples{};
+    PathTable::Bounds bounds{};
 
     // Splits a panel whose interpolants miss their tolerance. A resolved function's error falls
     // by orders of magnitude per halving; when a halving gains less than a factor 4 the error is

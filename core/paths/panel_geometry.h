@@ -1,4 +1,7 @@
 #pragma once
+// The exact geometry of one panel of a path table, shared by its refinement (path_table.cpp) and
+// the certification of its interpolants (panel_certifier.cpp); pathPlace names a point of a curve
+// in messages.
 #include "paths/path_table.h"
 
 #include <array>
@@ -6,9 +9,6 @@
 #include <string>
 
 namespace chaplygin {
-
-// The exact geometry of one panel of a path table, shared by its refinement (path_table.cpp) and
-// the certification of its interpolants (panel_certifier.cpp).
 
 /// "path at u = ..." in the curve's own parameter, for messages.
 std::string pathPlace(const Curve& c, double u);

@@ -1,4 +1,6 @@
 #pragma once
+// A path as pieces in order of traversal: tabulated curves, driven forwards or backing up, and
+// pivots at corners (docs/physics.md §3).
 #include "paths/path_source.h"
 #include "paths/path_table.h"
 

@@ -1,4 +1,6 @@
 #pragma once
+// What the user gave for a path (a graph, a parametric curve or a polyline), before any
+// tabulation.
 #include <string>
 #include <utility>
 #include <vector>

@@ -1,12 +1,14 @@
 #include "paths/path_table.h"
 
 #include "common/input_error.h"
+#include "numerics/safeguarded_newton.h"
 #include "paths/panel_certifier.h"
 #include "paths/panel_geometry.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
 namespace chaplygin {
@@ -49,7 +51,7 @@ struct Refiner {
     const Curve& curve;
     double lengthScale, totalWidth, lengthRef, weightedRef, stiffRef;
     std::size_t budget; // halvings allowed
-    std::vector<PanelData> leaves;
+    std::vector<PanelData> leaves{};
     std::size_t splits = 0; // panels halved so far: the work, bounded like the leaves
 
     bool close(double coarse, double fine, double ref, double width) const {
@@ -143,71 +145,100 @@ struct ScratchLease {
     }
 };
 
-} // namespace
+// The curve's parameter range [u0, u1], checked
+struct Range {
+    double u0 = 0, u1 = 0;
+};
 
-PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::size_t halvingBudget)
-    : m_curve(std::move(curve)), m_ends(std::move(ends)) {
-    const Curve& c = *m_curve;
-    double u0 = c.u0(), u1 = c.u1();
+Range checkedRange(const Curve& c) {
+    const double u0 = c.u0(), u1 = c.u1();
     if (!std::isfinite(u0) || !std::isfinite(u1) || !(u0 < u1))
         throw InputError(c.parameterName() + "-range",
                          "needs two different finite numbers " + c.parameterName() + "0, " +
                              c.parameterName() + "1, got " + formatNumber(c.parameterValue(u0)) +
                              ", " + formatNumber(c.parameterValue(u1)));
+    return {u0, u1};
+}
 
-    if (c.straight()) {
-        // one panel, closed form: no scales to find, nothing to refine
-        PanelData d = computePanel(c, u0, u1, u1 - u0);
-        for (double u : {u0, u1}) {
-            CurvePoint p = c.eval(u);
-            CurveGeometry g = geometryOf(p);
-            PathNode n;
-            n.u = u;
-            n.s = u == u0 ? 0.0 : d.length;
-            n.x = p.x;
-            n.y = p.y;
-            n.speed = g.speed;
-            n.phi = g.heading;
-            m_nodes.push_back(n);
-        }
-        m_panels.push_back(d.gauss);
-        m_uniform = true;
-        indexNodes();
-        return;
+// The nodes and Gauss panels of a table, with the 2 pi n added to each node's phi
+struct Assembly {
+    std::vector<PathNode> nodes;
+    std::vector<PathTable::GaussPanel> panels;
+    std::vector<double> wraps;
+};
+
+// A straight segment: one panel, closed form; no scales to find, nothing to refine
+Assembly straightPanel(const Curve& c, Range range) {
+    const double u0 = range.u0, u1 = range.u1;
+    PanelData d = computePanel(c, u0, u1, u1 - u0);
+    Assembly a;
+    for (double u : {u0, u1}) {
+        CurvePoint p = c.eval(u);
+        CurveGeometry g = geometryOf(p);
+        a.nodes.push_back({.u = u,
+                           .s = u == u0 ? 0.0 : d.length,
+                           .x = p.x,
+                           .y = p.y,
+                           .phi = g.heading,
+                           .speed = g.speed});
     }
-    // a coarse look at the whole curve sets the scales of the refinement
+    a.panels.push_back(d.gauss);
+    return a;
+}
+
+// A coarse look at the whole curve: the length scale of the refinement, and whether ds/du and
+// kappa are the same at every sample (a line or a circular arc)
+struct CoarseLook {
+    double lengthScale = 0;
+    bool uniform = true;
+    CurveGeometry first; // at u0 (zero when a cusp starts the curve)
+};
+
+CoarseLook lookAt(const Curve& c, const PathTable::CuspEnds& ends) {
+    const double u0 = c.u0(), u1 = c.u1();
     double xmin = INFINITY, xmax = -INFINITY, ymin = INFINITY, ymax = -INFINITY;
-    CurveGeometry g0;
-    bool looksUniform = true; // the same ds/du and kappa at every sample
-    for (int i = m_ends.start ? 1 : 0; i <= (m_ends.end ? 63 : 64); ++i) {
+    CoarseLook look;
+    for (int i = ends.start ? 1 : 0; i <= (ends.end ? 63 : 64); ++i) {
         double u = u0 + (u1 - u0) * i / 64.0;
         CurvePoint p;
         CurveGeometry g = checkedGeometry(c, u, &p);
         if (i == 0)
-            g0 = g;
-        looksUniform = looksUniform && std::fabs(g.speed - g0.speed) <= 1e-12 * g0.speed &&
+            look.first = g;
+        const CurveGeometry& g0 = look.first;
+        look.uniform = look.uniform && std::fabs(g.speed - g0.speed) <= 1e-12 * g0.speed &&
                        std::fabs(g.kappa - g0.kappa) <= 1e-12 * std::fabs(g0.kappa) + 1e-300;
         xmin = std::min(xmin, p.x);
         xmax = std::max(xmax, p.x);
         ymin = std::min(ymin, p.y);
         ymax = std::max(ymax, p.y);
     }
-    double lengthScale = std::max({xmax - xmin, ymax - ymin, 1e-300});
+    look.lengthScale = std::max({xmax - xmin, ymax - ymin, 1e-300});
+    return look;
+}
 
-    ScratchLease lease;
-    std::vector<PanelData>& initial = lease.scratch.initial;
+// The panels the refinement starts from, and the sums over them that scale its tolerances
+struct Start {
+    bool piecewise = false; // the panels are the curve's knot intervals
     double lengthRef = 0, weightedRef = 0, stiffRef = 0;
+};
+
+// The source scanned into panels: a piecewise curve's knot intervals, else kInitialPanels, or as
+// few as the turn per panel allows on a line or a circular arc. Written into `initial`, the
+// thread's scratch.
+Start startPanels(const Curve& c, const CoarseLook& look, std::vector<PanelData>& initial) {
+    const double u0 = c.u0(), u1 = c.u1();
+    Start start;
     std::vector<double> edges = c.breakpoints();
-    const bool piecewise = edges.size() >= 2;
+    start.piecewise = edges.size() >= 2;
     initial.reserve(std::max<std::size_t>(edges.size(), kInitialPanels));
     if (edges.size() < 2) {
         edges.clear();
-        // a line or a circular arc starts from as few panels as the turn per panel allows
         int count = kInitialPanels;
-        if (looksUniform)
-            count = std::clamp(static_cast<int>(std::ceil(std::fabs(g0.kappa) * g0.speed *
-                                                          (u1 - u0) / (0.9 * kMaxTurnPerPanel))),
-                               1, kInitialPanels);
+        if (look.uniform)
+            count = std::clamp(
+                static_cast<int>(std::ceil(std::fabs(look.first.kappa) * look.first.speed *
+                                           (u1 - u0) / (0.9 * kMaxTurnPerPanel))),
+                1, kInitialPanels);
         for (int k = 0; k < count; ++k)
             edges.push_back(u0 + (u1 - u0) * k / count);
         edges.push_back(u1);
@@ -216,41 +247,33 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
         double a = edges[k], b = edges[k + 1];
         if (!(b > a))
             continue;
-        initial.push_back(computePanel(c, a, b, lengthScale));
-        lengthRef += initial.back().length;
-        weightedRef += initial.back().weighted;
-        stiffRef += initial.back().stiff;
+        initial.push_back(computePanel(c, a, b, look.lengthScale));
+        start.lengthRef += initial.back().length;
+        start.weightedRef += initial.back().weighted;
+        start.stiffRef += initial.back().stiff;
     }
-    Refiner refiner{c,        lengthScale,   u1 - u0, lengthRef, weightedRef,
-                    stiffRef, halvingBudget, {},      0};
-    Certifier certifier{c,
-                        piecewise,
-                        lengthScale,
-                        m_ends.start ? u0 : NAN,
-                        m_ends.end ? u1 : NAN,
-                        0,
-                        lease.scratch.leaves,
-                        {},
-                        {},
-                        {},
-                        {}};
-    // interpolants on the refined panels, split where they cannot be certified, within what the
-    // refinement left of the budget; the halvings of both are counted in refiner.splits
+    return start;
+}
+
+// The start panels refined and the refined panels' interpolants certified (split where they cannot
+// be), within one budget of halvings counted in refiner.splits. A spline's knot intervals are each
+// certified as they are, and refined only where that fails.
+void refineAndCertify(const std::vector<PanelData>& initial, const Start& start,
+                      std::size_t halvingBudget, Refiner& refiner, Certifier& certifier) {
     auto certifyRefined = [&] {
         certifier.halvingsLeft = halvingBudget - std::min(halvingBudget, refiner.splits);
         for (const PanelData& d : refiner.leaves)
             certifier.certify(d, 0, INFINITY);
         refiner.splits = halvingBudget - certifier.halvingsLeft;
     };
-    if (piecewise && !uniformAtGaussNodes(initial)) {
-        // the knot intervals of a spline: each is certified as it is, and refined only where
-        // that fails
+    if (start.piecewise && !uniformAtGaussNodes(initial)) {
         certifier.leaves.reserve(initial.size());
         certifier.cheb.reserve(initial.size());
         certifier.rows.reserve(initial.size() * (cheb::kLowDegree + 2));
         certifier.samples.reserve(initial.size() * (cheb::kLowDegree + 1));
         for (const PanelData& p : initial) {
-            const double stiffTolerance = kPanelTolerance * stiffRef * ((p.b - p.a) / (u1 - u0));
+            const double stiffTolerance =
+                kPanelTolerance * start.stiffRef * ((p.b - p.a) / refiner.totalWidth);
             if (p.absTurn <= kMaxTurnPerPanel && certifier.acceptWhole(p, stiffTolerance))
                 continue;
             refiner.leaves.clear();
@@ -268,72 +291,121 @@ PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::siz
             certifyRefined();
         }
     }
-    m_halvings = refiner.splits;
-    m_cheb = std::move(certifier.cheb);
-    m_chebRows = std::move(certifier.rows);
-    m_chebSamples = std::move(certifier.samples);
-    m_bounds = certifier.bounds;
+}
 
-    // panel ends carry the exact geometry; phi is unwrapped by the quadrature of kappa ds
-    const std::size_t leafCount = m_cheb.empty() ? refiner.leaves.size() : certifier.leaves.size();
-    m_nodes.reserve(leafCount + 1);
-    m_panels.reserve(leafCount);
-    auto nodeAt = [&](double u) {
-        const std::optional<Cusp>& cusp = u == u0 ? m_ends.start : m_ends.end;
+// The table's nodes at the ends of its panels, with the exact geometry; phi is unwrapped by the
+// quadrature of kappa ds, and wraps[k] is the 2 pi n added at node k
+template <class Leaf>
+Assembly assemble(const Curve& c, const PathTable::CuspEnds& ends,
+                  const std::vector<Leaf>& leaves) {
+    const double u0 = c.u0(), u1 = c.u1();
+    // the exact geometry at u, or the limits at a cusp end
+    auto exactNode = [&](double u) {
+        const std::optional<Cusp>& cusp = u == u0 ? ends.start : ends.end;
         if ((u == u0 || u == u1) && cusp)
             return cuspNode(c, *cusp, u == u0);
         CurvePoint p;
         CurveGeometry g = checkedGeometry(c, u, &p);
-        PathNode n;
-        n.u = u;
-        n.x = p.x;
-        n.y = p.y;
-        n.kappa = g.kappa;
-        n.dkappa = g.dkappa;
-        n.speed = g.speed;
-        n.phi = g.heading;
-        return n;
+        return PathNode{.u = u,
+                        .x = p.x,
+                        .y = p.y,
+                        .phi = g.heading,
+                        .kappa = g.kappa,
+                        .dkappa = g.dkappa,
+                        .speed = g.speed};
     };
-    m_nodes.push_back(nodeAt(u0));
-    std::vector<double> wraps{0.0}; // 2 pi n added to atan2 at each node
-    auto addNode = [&](const PanelSums& leaf) {
-        PathNode n = nodeAt(leaf.b);
-        const PathNode& prev = m_nodes.back();
+    Assembly a;
+    a.nodes.reserve(leaves.size() + 1);
+    a.panels.reserve(leaves.size());
+    a.wraps.reserve(leaves.size() + 1);
+    a.nodes.push_back(exactNode(u0));
+    a.wraps.push_back(0.0);
+    for (const PanelSums& leaf : leaves) {
+        PathNode n = exactNode(leaf.b);
+        const PathNode& prev = a.nodes.back();
         n.s = prev.s + leaf.length;
         double predicted = prev.phi + leaf.turn;
         double wrap =
             2 * std::numbers::pi * std::round((predicted - n.phi) / (2 * std::numbers::pi));
         n.phi += wrap;
-        wraps.push_back(wrap);
-        m_nodes.push_back(n);
-        m_panels.push_back(leaf.gauss);
-    };
-    if (m_cheb.empty())
-        for (const PanelData& leaf : refiner.leaves)
-            addNode(leaf);
-    else
-        for (const PanelSums& leaf : certifier.leaves)
-            addNode(leaf);
-    indexNodes();
-    // the interpolated phi starts from atan2 at the panel's start; add the node's 2 pi n
-    for (std::size_t k = 0; k < m_cheb.size(); ++k)
-        if (m_cheb[k].certified)
-            m_chebRows[m_cheb[k].row][kPhi] += wraps[k];
+        a.wraps.push_back(wrap);
+        a.nodes.push_back(n);
+        a.panels.push_back(leaf.gauss);
+    }
+    return a;
+}
 
-    // constant ds/du and curvature: lines and circles get closed forms
-    const PathNode& first = m_nodes.front();
+// Constant ds/du and curvature at every node and Gauss node: lines and circles get closed forms
+bool constantSpeedAndCurvature(const std::vector<PathNode>& nodes,
+                               const std::vector<PathTable::GaussPanel>& panels,
+                               double lengthScale) {
+    const PathNode& first = nodes.front();
     double kappaTol = 1e-12 * std::max(std::fabs(first.kappa), 1.0 / lengthScale);
     auto same = [&](double speed, double kappa) {
         return std::fabs(speed - first.speed) <= 1e-12 * first.speed &&
                std::fabs(kappa - first.kappa) <= kappaTol;
     };
-    m_uniform = true;
-    for (std::size_t k = 0; k < m_panels.size() && m_uniform; ++k) {
-        m_uniform = same(m_nodes[k + 1].speed, m_nodes[k + 1].kappa);
-        gauss::Mapped m = gauss::mapTo(m_nodes[k].u, m_nodes[k + 1].u);
-        for (int i = 0; i < gauss::kPoints && m_uniform; ++i)
-            m_uniform = same(m_panels[k].weight[i] / m.w[i], m_panels[k].kappa[i]);
+    bool uniform = true;
+    for (std::size_t k = 0; k < panels.size() && uniform; ++k) {
+        uniform = same(nodes[k + 1].speed, nodes[k + 1].kappa);
+        gauss::Mapped m = gauss::mapTo(nodes[k].u, nodes[k + 1].u);
+        for (int i = 0; i < gauss::kPoints && uniform; ++i)
+            uniform = same(panels[k].weight[i] / m.w[i], panels[k].kappa[i]);
     }
+    return uniform;
+}
+
+} // namespace
+
+PathTable::PathTable(std::shared_ptr<const Curve> curve, CuspEnds ends, std::size_t halvingBudget)
+    : m_curve(std::move(curve)), m_ends(std::move(ends)) {
+    const Curve& c = *m_curve;
+    const Range range = checkedRange(c);
+    if (c.straight()) {
+        Assembly a = straightPanel(c, range);
+        m_nodes = std::move(a.nodes);
+        m_panels = std::move(a.panels);
+        indexNodes();
+        m_uniform = true;
+        return;
+    }
+    const CoarseLook look = lookAt(c, m_ends);
+    ScratchLease lease;
+    std::vector<PanelData>& initial = lease.scratch.initial;
+    const Start start = startPanels(c, look, initial);
+    const double u0 = range.u0, u1 = range.u1;
+    Refiner refiner{.curve = c,
+                    .lengthScale = look.lengthScale,
+                    .totalWidth = u1 - u0,
+                    .lengthRef = start.lengthRef,
+                    .weightedRef = start.weightedRef,
+                    .stiffRef = start.stiffRef,
+                    .budget = halvingBudget};
+    Certifier certifier{.curve = c,
+                        .piecewise = start.piecewise,
+                        .lengthScale = look.lengthScale,
+                        .cuspStart = m_ends.start ? u0 : NAN,
+                        .cuspEnd = m_ends.end ? u1 : NAN,
+                        .halvingsLeft = 0,
+                        .leaves = lease.scratch.leaves};
+    refineAndCertify(initial, start, halvingBudget, refiner, certifier);
+    m_halvings = refiner.splits;
+    m_cheb = std::move(certifier.cheb);
+    m_chebRows = std::move(certifier.rows);
+    m_chebSamples = std::move(certifier.samples);
+    m_bounds = certifier.bounds;
+    // with interpolants the certifier's panels are the table's (it may have halved the refined
+    // ones), without them the refiner's
+    Assembly nodes = m_cheb.empty() ? assemble(c, m_ends, refiner.leaves)
+                                    : assemble(c, m_ends, certifier.leaves);
+    // the interpolated phi starts from atan2 at the panel's start; add the node's 2 pi n
+    for (std::size_t k = 0; k < m_cheb.size(); ++k)
+        if (m_cheb[k].certified)
+            m_chebRows[m_cheb[k].row][kPhi] += nodes.wraps[k];
+    m_nodes = std::move(nodes.nodes);
+    m_panels = std::move(nodes.panels);
+    indexNodes();
+    m_uniform = constantSpeedAndCurvature(m_nodes, m_panels, look.lengthScale);
 }
 
 void PathTable::indexNodes() {
@@ -448,22 +520,21 @@ double PathTable::uAtArcLength(double s) const {
     const PathNode &lo = m_nodes[k], &hi = m_nodes[k + 1];
     if (m_uniform)
         return lo.u + (s - lo.s) / lo.speed;
-    double a = lo.u, b = hi.u;
-    double u = a + (b - a) * (s - lo.s) / (hi.s - lo.s);
-    for (int iter = 0; iter < 30; ++iter) {
+    // Newton on s(u) = s with ds/du exact, safeguarded by bisection on the panel: converged at a
+    // step below 1e-15 of |u| plus the panel's width (the rounding of the Gauss sum); on the smooth
+    // s(u) Newton takes a few steps, and 30 only bound a bisection
+    const NewtonCaps caps{
+        .maxIterations = 30,
+        .newtonStep = {.value = 1e-15, .relativeToX = true, .scale = hi.u - lo.u}};
+    auto arcLength = [&](double u) {
         Partial part = partial(k, u);
         double f = lo.s - s;
         for (int i = 0; i < gauss::kPoints; ++i)
             f += part.weight[i] * part.geometry[i].speed;
-        (f > 0 ? b : a) = u;
-        double step = f / geometryOf(m_curve->eval(u)).speed;
-        if (std::fabs(step) <= 1e-15 * (std::fabs(u) + (hi.u - lo.u))) {
-            u -= step;
-            break;
-        }
-        u = (u - step > a && u - step < b) ? u - step : 0.5 * (a + b);
-    }
-    return u;
+        return NewtonValue{f, geometryOf(m_curve->eval(u)).speed};
+    };
+    const double u0 = lo.u + (hi.u - lo.u) * (s - lo.s) / (hi.s - lo.s);
+    return safeguardedNewton(arcLength, u0, {lo.u, hi.u}, caps).x;
 }
 
 } // namespace chaplygin

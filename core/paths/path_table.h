@@ -1,4 +1,6 @@
 #pragma once
+// The adaptive path table: Gauss panels carrying every integral along a smooth curve, and
+// certified per-panel Chebyshev interpolants of its geometry (docs/numerics.md §7).
 #include "numerics/chebyshev.h"
 #include "numerics/gauss_legendre.h"
 #include "paths/curve.h"
@@ -72,7 +74,9 @@ class PathTable {
     /// degree more), and the values of ds/dxi = (half width) ds/du and kappa at the Chebyshev
     /// points of the panel's degree, x_j = cos(pi j/degree), j = 0..degree (for the time law).
     /// A panel is certified at cheb::kLowDegree where that suffices, else at cheb::kDegree; the
-    /// table keeps them packed, so a short panel takes half the memory.
+    /// table keeps them packed, so a short panel takes half the memory. kPadding is an eighth
+    /// column, always 0, so that a row is 8 doubles (64 bytes, a cache line) and its series are
+    /// summed in whole vector registers.
     enum Quantity { kX, kY, kPhi, kKappa, kDkappa, kS, kSpeed, kPadding, kQuantities };
     using Row = std::array<double, kQuantities>;
     struct Sample {

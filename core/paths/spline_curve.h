@@ -1,4 +1,5 @@
 #pragma once
+// The cubic smoothing spline through a drawn stroke's points.
 #include "paths/curve.h"
 
 #include <vector>

@@ -1,4 +1,5 @@
 #pragma once
+// Internal to paths/ (path.cpp): a stretch of a curve between its cusps.
 #include "paths/curve.h"
 
 #include <memory>

@@ -1,4 +1,5 @@
 #pragma once
+// The vectors of any body for the canvas's arrows: its pose, velocities and forces.
 #include "scene/solution.h"
 
 namespace chaplygin {

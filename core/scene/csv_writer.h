@@ -1,4 +1,5 @@
 #pragma once
+// The command line's CSV: the header and the rows of a Solution, written from the column table.
 #include "scene/csv_columns.h"
 #include "scene/solution.h"
 

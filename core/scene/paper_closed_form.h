@@ -1,4 +1,6 @@
 #pragma once
+// The paper's closed forms for the line and circle presets, independent of the path table and
+// the time law: what the accuracy readout compares with.
 #include "scene/scene.h"
 
 #include <optional>

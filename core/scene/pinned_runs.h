@@ -1,4 +1,5 @@
 #pragma once
+// Pinned runs: a run from a scene, back to a scene of its own, and its label.
 #include "scene/scene.h"
 
 #include <string>

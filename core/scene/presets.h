@@ -1,4 +1,5 @@
 #pragma once
+// The paper's four examples as presets (resources/scenes/presets).
 #include "scene/scene.h"
 
 #include <string>

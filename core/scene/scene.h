@@ -1,4 +1,6 @@
 #pragma once
+// Scene, the plain data a run is made from: the path, the system, the mode and speed, the horizon
+// and what the view shows.
 #include "control/control_law.h"
 #include "paths/path_source.h"
 #include "systems/system.h"

@@ -1,4 +1,5 @@
 #pragma once
+// The scene file format: a Scene to versioned JSON and back, with the JSON path of a bad value.
 #include "scene/scene.h"
 
 #include <string>

@@ -1,4 +1,5 @@
 #pragma once
+// The scene files of resources/scenes, compiled into the core at build time.
 #include <span>
 #include <string_view>
 

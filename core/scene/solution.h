@@ -1,4 +1,6 @@
 #pragma once
+// Solution, the one immutable result of a scene: the controlled and the free motion at any time,
+// and the models behind them.
 #include "control/control_law.h"
 #include "motion/free_motion.h"
 #include "motion/perturbed_motion.h"

@@ -1,4 +1,5 @@
 #pragma once
+// The --summary JSON of a Solution.
 #include "scene/solution.h"
 
 #include <string>

@@ -1,4 +1,6 @@
 #pragma once
+// The Chaplygin systems (sleigh, disk, carriage) and their reduction to a sleigh's m_eff, a and b
+// (docs/physics.md §1).
 #include <map>
 #include <string>
 

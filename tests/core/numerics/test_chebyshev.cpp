@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
@@ -66,9 +68,47 @@ TEST(Chebyshev, FoldedTransformEqualsTheFullCosineSum) {
                 s *= (k == 0 || k == n ? 1.0 : 2.0) / n;
                 size *= 2.0 / n;
                 // both sums round at most n + 1 times, each by an ulp of the terms' size
-                EXPECT_NEAR(c[k][q], s, 2 * (n + 1) * 2.220446049250313e-16 * size)
+                EXPECT_NEAR(c[k][q], s, 2 * (n + 1) * std::numeric_limits<double>::epsilon() * size)
                     << "degree " << n << ", k = " << k;
             }
+    }
+}
+
+// the first 4 of 5 series at +-x from a table of T_k(x): the even and odd sums written out here,
+// and Clenshaw's sum at both points
+TEST(Chebyshev, SeriesAtPlusAndMinusXAreTheirEvenPartPlusOrMinusTheOddPart) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> value(-1, 1);
+    for (int n : {cheb::kLowDegree + 1, cheb::kPoints}) {
+        std::array<std::array<double, 5>, cheb::kPoints> c{};
+        for (int k = 0; k < n; ++k)
+            for (double& v : c[k])
+                v = value(rng);
+        const double x = 0.5255324099163290; // a Gauss node
+        std::array<double, cheb::kPoints> t{};
+        t[0] = 1;
+        t[1] = x;
+        for (int k = 2; k < n; ++k)
+            t[k] = 2 * x * t[k - 1] - t[k - 2];
+        double atPlus[4], atMinus[4];
+        int visits = 0;
+        cheb::evaluateAtPlusMinus<4>(c.data(), n, t.data(), [&](int sign, const double* f) {
+            std::copy(f, f + 4, sign > 0 ? atPlus : atMinus);
+            visits += sign > 0 ? 1 : 10;
+        });
+        EXPECT_EQ(visits, 11);
+        for (std::size_t q = 0; q < 4; ++q) {
+            double even = 0, odd = 0;
+            for (int k = 0; k < n; k += 2)
+                even += t[k] * c[k][q];
+            for (int k = 1; k < n; k += 2)
+                odd += t[k] * c[k][q];
+            EXPECT_NEAR(atPlus[q], even + odd, 1e-15) << "n = " << n << ", series " << q;
+            EXPECT_NEAR(atMinus[q], even - odd, 1e-15) << "n = " << n << ", series " << q;
+            const std::size_t rows = static_cast<std::size_t>(n);
+            EXPECT_NEAR(atPlus[q], cheb::evaluateOne(c, q, x, rows), 1e-14);
+            EXPECT_NEAR(atMinus[q], cheb::evaluateOne(c, q, -x, rows), 1e-14);
+        }
     }
 }
 
