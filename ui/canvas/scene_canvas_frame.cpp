@@ -36,6 +36,12 @@ void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now, const QRegio
     if (m_showVakonomic)
         trail(s.vakT, s.vakX, s.vakY, {now.vak.x, now.vak.y},
               m_style.pen(m_style.vakonomic(), std::max(0.75 * w, 1.5), Qt::DashDotLine));
+    if (drawsOpenLoop())
+        trail(s.pertT, s.pertX, s.pertY, {now.pert.x, now.pert.y},
+              m_style.pen(m_style.openLoop(), std::max(0.75 * w, 1.5), Qt::DotLine));
+    if (drawsClosedLoop())
+        trail(s.pertT, s.fbX, s.fbY, {now.fb.x, now.fb.y},
+              m_style.pen(m_style.closedLoop(), std::max(0.75 * w, 1.5), Qt::DashDotDotLine));
 }
 
 std::vector<QRectF> SceneCanvas::trailEndsBounds(const MotionSample& now, double from) const {
@@ -62,6 +68,10 @@ std::vector<QRectF> SceneCanvas::trailEndsBounds(const MotionSample& now, double
     trail(s.freeT, s.freeX, s.freeY, now.free.x, now.free.y);
     if (m_showVakonomic)
         trail(s.vakT, s.vakX, s.vakY, now.vak.x, now.vak.y);
+    if (drawsOpenLoop())
+        trail(s.pertT, s.pertX, s.pertY, now.pert.x, now.pert.y);
+    if (drawsClosedLoop())
+        trail(s.pertT, s.fbX, s.fbY, now.fb.x, now.fb.y);
     return boxes;
 }
 
@@ -81,6 +91,10 @@ QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& no
     body(now.free.x, now.free.y, now.free.phi);
     if (m_showVakonomic)
         body(now.vak.x, now.vak.y, now.vak.phi);
+    if (drawsOpenLoop())
+        body(now.pert.x, now.pert.y, now.pert.phi);
+    if (drawsClosedLoop())
+        body(now.fb.x, now.fb.y, now.fb.phi);
     add(m_vectors.bounds(m_document->solution(), m_document->scene().vectors, now, world));
     // only the widget is painted: a body far outside the view (a wild zoom) must not overflow int
     if (!std::isfinite(box.x()) || !std::isfinite(box.y()) || !std::isfinite(box.width()) ||
@@ -193,6 +207,10 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         body({now->free.x, now->free.y, now->free.phi}, m_style.free(), true);
         if (m_showVakonomic)
             body({now->vak.x, now->vak.y, now->vak.phi}, m_style.vakonomic(), true);
+        if (drawsOpenLoop())
+            body({now->pert.x, now->pert.y, now->pert.phi}, m_style.openLoop(), true);
+        if (drawsClosedLoop())
+            body({now->fb.x, now->fb.y, now->fb.phi}, m_style.closedLoop(), true);
         p.restore();
         m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform(), m_scale,
                         rect(), e->region());
@@ -200,6 +218,11 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         m_movingPainted = movingBounds(*solution, *now, m_time);
     } else {
         m_movingPainted = {};
+    }
+    if (m_pushing) {
+        // the push being dragged: a line from where the body was grabbed
+        p.setPen(m_style.pen(m_style.closedLoop().darker(140), 2, Qt::DashLine));
+        p.drawLine(toPixel(m_pushFrom), m_pushTo);
     }
     if (m_drawMode)
         paintVertices(p);
