@@ -238,16 +238,18 @@ void TestPerturbation::grabAndPushIsOneUndoStep() {
     m_window->loadScene(presetScene("sinusoid"));
     const double t = 2;
     m_window->playback()->seek(t);
+    // zoomed in: a 12 px drag is a push of some 0.15 m
+    canvas->zoomBy(4);
     QCOMPARE(canvas->time(), t);
     const MotionSample m = m_window->document()->solution()->at(t);
     const int before = m_window->undoStack()->count();
-    // press on the body (at P), drag 40 px along its left normal
+    // press on the body (at P), drag 12 px along its left normal
     const QPoint from = canvas->toPixel({m.x, m.y}).toPoint();
     const QPointF normal(-std::sin(m.phi), std::cos(m.phi)); // world, y up
     const QPoint to =
-        canvas->toPixel(QPointF(m.x, m.y) + normal * (40 / canvas->scale())).toPoint();
+        canvas->toPixel(QPointF(m.x, m.y) + normal * (12 / canvas->scale())).toPoint();
     // the pixels in metres before the push refits the view to the new bodies
-    const double metres = 40 / canvas->scale(), pixel = 1 / canvas->scale();
+    const double metres = 12 / canvas->scale(), pixel = 1 / canvas->scale();
     const QPointF d = canvas->toWorld(to) - canvas->toWorld(from);
     const double expected = d.x() * normal.x() + d.y() * normal.y();
     QTest::mousePress(canvas, Qt::LeftButton, {}, from);

@@ -10,6 +10,7 @@
 #include <QDockWidget>
 #include <QMenu>
 #include <QMenuBar>
+#include <QScrollArea>
 
 namespace chaplygin::ui {
 
@@ -19,7 +20,13 @@ void installPerturbationControls(MainWindow* window) {
     auto* panel = new PerturbationPanel;
     auto* dock = new QDockWidget(MainWindow::tr("Perturbation"), window);
     dock->setObjectName(QStringLiteral("perturbationDock"));
-    dock->setWidget(panel);
+    // taller than a low window: it scrolls, as the parameters dock does
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(panel);
+    dock->setWidget(scroll);
     auto* parameters = window->findChild<QDockWidget*>(QStringLiteral("parametersDock"));
     window->addDockWidget(Qt::LeftDockWidgetArea, dock);
     if (parameters) {
