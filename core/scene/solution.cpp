@@ -7,7 +7,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <stdexcept>
 
 namespace chaplygin {
 namespace {
@@ -187,7 +189,8 @@ Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,
             perturbationSpec(*scene.perturbation, *m_path, params, m_tEnd);
         const PathPiece& piece = m_path->pieces().front();
         auto nominal = std::make_shared<const NominalControl>(m_path, m_timeLaw, params);
-        const PathFrame frame(piece.table, piece.phiOffset);
+        m_frame = std::make_shared<const PathFrame>(piece.table, piece.phiOffset);
+        const PathFrame& frame = *m_frame;
         m_open = std::make_shared<const PerturbedMotion>(PerturbedMotion::Kind::OpenLoop, nominal,
                                                          frame, spec, m_tEnd);
         m_feedback = std::make_shared<const PerturbedMotion>(PerturbedMotion::Kind::Feedback,
@@ -225,6 +228,34 @@ void Solution::controlledAt(double t, MotionSample& out) const {
     out.y = n.y;
     out.kappa = piece.direction * n.kappa;
     out.control = controlOnPiece(m_params, piece, n, &out.phi);
+}
+
+std::vector<TrackingError> Solution::trackingErrors(const std::vector<double>& times) const {
+    std::vector<TrackingError> out;
+    if (!m_frame)
+        return out;
+    out.reserve(times.size());
+    // Newton from the previous closest point; a lost projection restarts from the path's start
+    double uOpen = m_frame->u0(), uFb = m_frame->u0();
+    auto error = [&](const PerturbedState& b, double& u, double& e, double& theta) {
+        try {
+            const PathProjection p = m_frame->project(b.x, b.y, u);
+            u = p.point.u;
+            e = p.e;
+            theta = std::remainder(b.phi - p.point.phi, 2 * std::numbers::pi);
+        } catch (const std::runtime_error&) {
+            u = m_frame->u0();
+            e = theta = std::numeric_limits<double>::quiet_NaN();
+        }
+    };
+    for (double t : times) {
+        TrackingError r;
+        r.t = t;
+        error(m_open->at(t), uOpen, r.openE, r.openTheta);
+        error(m_feedback->at(t), uFb, r.fbE, r.fbTheta);
+        out.push_back(r);
+    }
+    return out;
 }
 
 MotionSample Solution::at(double t) const {

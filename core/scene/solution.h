@@ -27,6 +27,14 @@ struct MotionSample {
     PerturbedState fb;      ///< perturbed body under the feedback (closed loop)
 };
 
+/// The perturbed bodies' distance from the path and heading error at t (docs/physics.md §9),
+/// each against its closest path point; NaN where that point is not found.
+struct TrackingError {
+    double t = 0;
+    double openE = 0, openTheta = 0; ///< open loop: lateral error e (left > 0) [m], theta [rad]
+    double fbE = 0, fbTheta = 0;     ///< closed loop
+};
+
 /// Which model or method produced each quantity (shown by the GUI, written to --summary).
 struct ModelReport {
     std::string path;         ///< how the path was tabulated
@@ -73,6 +81,9 @@ class Solution {
     bool perturbed() const { return m_open != nullptr; }
     const PerturbedMotion* openLoop() const { return m_open.get(); }
     const PerturbedMotion* feedback() const { return m_feedback.get(); }
+    /// The tracking errors at increasing times (empty without a perturbation): each closest
+    /// point found by Newton from the one before, so the times should be close together.
+    std::vector<TrackingError> trackingErrors(const std::vector<double>& times) const;
     /// count samples evenly spaced on [0, tEnd] (count >= 2).
     std::vector<MotionSample> sample(int count) const;
     std::vector<MotionSample> sampleAt(const std::vector<double>& times) const;
@@ -93,6 +104,7 @@ class Solution {
     VakonomicMotion m_vak;
     double m_tEnd = 0;
     std::shared_ptr<const PerturbedMotion> m_open, m_feedback; // with a perturbation only
+    std::shared_ptr<const PathFrame> m_frame;                  // the path as their frame
     ModelReport m_models;
 };
 

@@ -236,6 +236,34 @@
         <source>vakonomic body (P)</source>
         <translation>corpo vakonômico (P)</translation>
     </message>
+    <message>
+        <source>open loop e</source>
+        <translation>malha aberta e</translation>
+    </message>
+    <message>
+        <source>feedback e</source>
+        <translation>realimentação e</translation>
+    </message>
+    <message>
+        <source>lateral error e [m]</source>
+        <translation>erro lateral e [m]</translation>
+    </message>
+    <message>
+        <source>open loop θ</source>
+        <translation>malha aberta θ</translation>
+    </message>
+    <message>
+        <source>feedback θ</source>
+        <translation>realimentação θ</translation>
+    </message>
+    <message>
+        <source>heading error θ [rad]</source>
+        <translation>erro de rumo θ [rad]</translation>
+    </message>
+    <message>
+        <source>Pushed bodies: lateral error e(t) and heading error θ(t)</source>
+        <translation>Corpos empurrados: erro lateral e(t) e erro de rumo θ(t)</translation>
+    </message>
 </context>
 <context>
     <name>PlotSeries</name>
@@ -1001,6 +1029,30 @@ corpo vakonômico: %1</translation>
         <source>Chaplygin Lab ended without saving the scene you were working on. A copy was kept at %1. Restore it?</source>
         <translation>O Chaplygin Lab terminou sem salvar a cena em que você trabalhava. Uma cópia foi guardada em %1. Restaurá-la?</translation>
     </message>
+    <message>
+        <source>Perturbation</source>
+        <translation>Perturbação</translation>
+    </message>
+    <message>
+        <source>Push the body</source>
+        <translation>Empurrar o corpo</translation>
+    </message>
+    <message>
+        <source>Pushed body, &amp;open loop</source>
+        <translation>Corpo empurrado, malha &amp;aberta</translation>
+    </message>
+    <message>
+        <source>With a perturbation: the body that keeps the nominal λ(t) after the push</source>
+        <translation>Com perturbação: o corpo que mantém o λ(t) nominal após o empurrão</translation>
+    </message>
+    <message>
+        <source>Pushed body, &amp;closed loop</source>
+        <translation>Corpo empurrado, malha &amp;fechada</translation>
+    </message>
+    <message>
+        <source>With a perturbation: the body the feedback steers back to the path</source>
+        <translation>Com perturbação: o corpo que a realimentação traz de volta ao caminho</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::MethodsPanel</name>
@@ -1379,6 +1431,77 @@ O que os estudantes devem observar…</translation>
     </message>
 </context>
 <context>
+    <name>chaplygin::ui::PerturbationPanel</name>
+    <message>
+        <source>Perturbed bodies (open loop and feedback)</source>
+        <translation>Corpos perturbados (malha aberta e realimentação)</translation>
+    </message>
+    <message>
+        <source>Two more bodies start from the controlled one moved by the offsets and get the push: one keeps the nominal λ(t), one is steered back by feedback (docs/physics.md §9)</source>
+        <translation>Mais dois corpos partem do controlado deslocados pelos desvios e recebem o empurrão: um mantém o λ(t) nominal, o outro é trazido de volta por realimentação (docs/physics.md §9)</translation>
+    </message>
+    <message>
+        <source>offset dy (left)</source>
+        <translation>deslocamento dy (à esquerda)</translation>
+    </message>
+    <message>
+        <source>heading offset dφ</source>
+        <translation>desvio de rumo dφ</translation>
+    </message>
+    <message>
+        <source>control angle offset dΨ</source>
+        <translation>desvio do ângulo de controle dΨ</translation>
+    </message>
+    <message>
+        <source>push at t</source>
+        <translation>empurrão em t</translation>
+    </message>
+    <message>
+        <source>push: Ψ jumps by</source>
+        <translation>empurrão: Ψ salta</translation>
+    </message>
+    <message>
+        <source>push: P moves left by</source>
+        <translation>empurrão: P vai à esquerda</translation>
+    </message>
+    <message>
+        <source>feedback rate P</source>
+        <translation>taxa de realimentação P</translation>
+    </message>
+    <message>
+        <source>limit |Ψ̇| to</source>
+        <translation>limitar |Ψ̇| a</translation>
+    </message>
+    <message>
+        <source>rad/s</source>
+        <translation>rad/s</translation>
+    </message>
+    <message>
+        <source>controller&apos;s b</source>
+        <translation>b do controlador</translation>
+    </message>
+    <message>
+        <source>The b the feedback assumes; unchecked, the plant&apos;s own</source>
+        <translation>O b que a realimentação supõe; desmarcado, o da própria planta</translation>
+    </message>
+    <message>
+        <source>Perturb the bodies</source>
+        <translation>Perturbar os corpos</translation>
+    </message>
+    <message>
+        <source>Remove the perturbation</source>
+        <translation>Remover a perturbação</translation>
+    </message>
+    <message>
+        <source>Change the perturbation: %1</source>
+        <translation>Alterar a perturbação: %1</translation>
+    </message>
+    <message>
+        <source>Change the feedback rate</source>
+        <translation>Alterar a taxa de realimentação</translation>
+    </message>
+</context>
+<context>
     <name>chaplygin::ui::PinSet</name>
     <message>
         <source> (does not solve)</source>
@@ -1460,6 +1583,14 @@ O que os estudantes devem observar…</translation>
     <message>
         <source>of %1 s</source>
         <translation>de %1 s</translation>
+    </message>
+    <message>
+        <source>pushed, open loop: the nominal λ(t) as planned</source>
+        <translation>empurrado, malha aberta: o λ(t) nominal como planejado</translation>
+    </message>
+    <message>
+        <source>pushed, closed loop: feedback steers it back</source>
+        <translation>empurrado, malha fechada: a realimentação o traz de volta</translation>
     </message>
 </context>
 <context>

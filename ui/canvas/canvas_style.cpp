@@ -13,11 +13,16 @@ const QColor kControlled(0x1f, 0x77, 0xb4);
 const QColor kFree(0xd6, 0x27, 0x28);
 const QColor kVakonomic(0x94, 0x67, 0xbd);
 const QColor kPath(0x7f, 0x7f, 0x7f);
-// high contrast: four well separated grey levels (luminance 0.02, 0.12, 0.26, 0.46)
+const QColor kOpenLoop(0xff, 0x7f, 0x0e);
+const QColor kClosedLoop(0x2c, 0xa0, 0x2c);
+// high contrast: well separated grey levels (luminance 0.02, 0.12, 0.26, 0.46; the perturbed
+// bodies 0.35 and 0.57)
 const QColor kHcControlled(0x00, 0x1f, 0x7a);
 const QColor kHcVakonomic(0xb0, 0x00, 0xb0);
 const QColor kHcFree(0xff, 0xa0, 0x00);
 const QColor kHcPath(0x8c, 0x8c, 0x8c);
+const QColor kHcOpenLoop(0xff, 0x70, 0xa0);
+const QColor kHcClosedLoop(0x40, 0xe4, 0x60);
 
 QString key(const char* name) {
     return QStringLiteral("canvas/") + QLatin1String(name);
@@ -41,6 +46,14 @@ QColor CanvasStyle::free() const {
 
 QColor CanvasStyle::vakonomic() const {
     return highContrast ? kHcVakonomic : kVakonomic;
+}
+
+QColor CanvasStyle::openLoop() const {
+    return highContrast ? kHcOpenLoop : kOpenLoop;
+}
+
+QColor CanvasStyle::closedLoop() const {
+    return highContrast ? kHcClosedLoop : kClosedLoop;
 }
 
 QPen CanvasStyle::pen(const QColor& color, double width, Qt::PenStyle style) const {

@@ -24,6 +24,10 @@ struct CanvasStyle {
     QColor free() const;
     /// The third (vakonomic) body, for the canvas and the plots.
     QColor vakonomic() const;
+    /// The perturbed bodies (docs/physics.md §9): open loop (the nominal lambda(t)) and closed
+    /// loop (feedback).
+    QColor openLoop() const;
+    QColor closedLoop() const;
     /// The path where the palette does not colour it by curvature.
     QColor path() const;
 

@@ -105,7 +105,7 @@ void CanvasCurves::update(const std::shared_ptr<const Solution>& solution,
     m_solution = solution;
     m_scale = devicePxPerMetre;
     m_pins.clear();
-    m_path = m_free = m_vak = {};
+    m_path = m_free = m_vak = m_openLoop = m_closedLoop = {};
     if (!solution || !(devicePxPerMetre > 0))
         return;
     const double tolerance = kTolerancePx / devicePxPerMetre;
@@ -123,6 +123,19 @@ void CanvasCurves::update(const std::shared_ptr<const Solution>& solution,
             return QPointF(v.x, v.y);
         },
         s.tEnd(), tolerance);
+    // the pushed bodies (docs/physics.md §9), when the scene has a perturbation
+    auto pushed = [&](const PerturbedMotion* body) {
+        return flattenInTime(
+            [body](double t) {
+                const PerturbedState b = body->at(t);
+                return QPointF(b.x, b.y);
+            },
+            s.tEnd(), tolerance);
+    };
+    if (s.perturbed()) {
+        m_openLoop = pushed(s.openLoop());
+        m_closedLoop = pushed(s.feedback());
+    }
 }
 
 const FlatCurve& CanvasCurves::pinnedPath(const std::shared_ptr<const Solution>& run) {

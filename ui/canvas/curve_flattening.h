@@ -44,13 +44,16 @@ class CanvasCurves {
     const FlatCurve& path() const { return m_path; }
     const FlatCurve& free() const { return m_free; }
     const FlatCurve& vakonomic() const { return m_vak; }
+    /// The pushed bodies' paths (empty without a perturbation).
+    const FlatCurve& openLoop() const { return m_openLoop; }
+    const FlatCurve& closedLoop() const { return m_closedLoop; }
     /// A pinned run's path, flattened at the current scale.
     const FlatCurve& pinnedPath(const std::shared_ptr<const Solution>& run);
 
   private:
     std::shared_ptr<const Solution> m_solution;
     double m_scale = 0;
-    FlatCurve m_path, m_free, m_vak;
+    FlatCurve m_path, m_free, m_vak, m_openLoop, m_closedLoop;
     std::map<const Solution*, std::pair<std::shared_ptr<const Solution>, FlatCurve>> m_pins;
 };
 

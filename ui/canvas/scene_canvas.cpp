@@ -105,6 +105,10 @@ QRectF SceneCanvas::sceneBounds() const {
     extend(s.freeX, s.freeY);
     if (m_showVakonomic)
         extend(s.vakX, s.vakY);
+    if (drawsOpenLoop())
+        extend(s.pertX, s.pertY);
+    if (drawsClosedLoop())
+        extend(s.fbX, s.fbY);
     if (x0 > x1)
         return {};
     QRectF box(QPointF(x0, y0), QPointF(x1, y1));
@@ -184,6 +188,37 @@ void SceneCanvas::setShowVakonomic(bool show) {
     update();
 }
 
+void SceneCanvas::setShowOpenLoop(bool show) {
+    m_showOpenLoop = show;
+    update();
+}
+
+void SceneCanvas::setShowClosedLoop(bool show) {
+    m_showClosedLoop = show;
+    update();
+}
+
+bool SceneCanvas::drawsOpenLoop() const {
+    return m_showOpenLoop && m_document->series().perturbed;
+}
+
+bool SceneCanvas::drawsClosedLoop() const {
+    return m_showClosedLoop && m_document->series().perturbed;
+}
+
+bool SceneCanvas::onControlledBody(QPointF pixel) const {
+    const auto& solution = m_document->solution();
+    if (!solution)
+        return false;
+    const MotionSample m = solution->at(std::clamp(m_time, 0.0, solution->tEnd()));
+    BodyLook look{m_style.body, m_style.bodyOpacity, m_style.lineScale};
+    const QRectF box = BodySprites::pixelBounds(worldTransform(), m_scale, solution->scene().system,
+                                                solution->system(), {m.x, m.y, m.phi}, look);
+    // the body's box, at least a finger's width around P
+    const QPointF p = toPixel({m.x, m.y});
+    return box.contains(pixel) || QLineF(p, pixel).length() <= 12 * m_style.lineScale;
+}
+
 void SceneCanvas::zoomBy(double factor) {
     m_autoFit = false;
     m_scale = std::clamp(m_scale * factor, 1e-3, 1e5);
@@ -242,6 +277,15 @@ void SceneCanvas::mousePressEvent(QMouseEvent* e) {
         }
     } else if (m_drawMode && e->button() == Qt::LeftButton) {
         m_stroke = {toWorld(e->position())};
+    } else if (e->button() == Qt::LeftButton && onControlledBody(e->position())) {
+        // grab and push (docs/physics.md §9): the drag's sideways part is the push
+        const auto& solution = m_document->solution();
+        m_pushing = true;
+        m_pushTime = std::clamp(m_time, 0.0, solution->tEnd());
+        m_pushPhi = solution->at(m_pushTime).phi;
+        m_pushFrom = toWorld(e->position());
+        m_pushTo = e->position();
+        setCursor(Qt::SizeAllCursor);
     } else {
         m_panning = true;
         setCursor(Qt::ClosedHandCursor);
@@ -259,6 +303,9 @@ void SceneCanvas::mouseMoveEvent(QMouseEvent* e) {
             m_stroke.push_back(toWorld(e->position()));
             update();
         }
+    } else if (m_pushing) {
+        m_pushTo = e->position();
+        update();
     } else if (m_panning) {
         QPointF d = e->position() - m_lastMouse;
         m_centre -= QPointF(d.x() / m_scale, -d.y() / m_scale);
@@ -288,6 +335,16 @@ void SceneCanvas::mouseReleaseEvent(QMouseEvent* e) {
         update();
         if (points.size() >= 3)
             emit pathDrawn(points);
+    }
+    if (m_pushing && e->button() == Qt::LeftButton) {
+        m_pushing = false;
+        setCursor(m_drawMode ? Qt::CrossCursor : Qt::ArrowCursor);
+        // the drag's component along the heading's left normal [m]
+        const QPointF d = toWorld(e->position()) - m_pushFrom;
+        const double left = -d.x() * std::sin(m_pushPhi) + d.y() * std::cos(m_pushPhi);
+        if (QLineF(toPixel(m_pushFrom), e->position()).length() >= 3)
+            emit pushDragged(m_pushTime, left);
+        update();
     }
     if (m_panning) {
         m_panning = false;

@@ -34,6 +34,12 @@ class SceneCanvas : public QWidget {
     bool drawMode() const { return m_drawMode; }
     /// Whether the genuine vakonomic body (a third body) is drawn.
     bool showsVakonomic() const { return m_showVakonomic; }
+    /// Whether the perturbed bodies are drawn when the scene has a perturbation
+    /// (docs/physics.md §9): the open loop and the closed loop.
+    bool showsOpenLoop() const { return m_showOpenLoop; }
+    bool showsClosedLoop() const { return m_showClosedLoop; }
+    /// Whether a push is being dragged from the controlled body.
+    bool pushing() const { return m_pushing; }
     /// Pixels per metre.
     double scale() const { return m_scale; }
     /// World point (metres) <-> widget pixel.
@@ -67,6 +73,8 @@ class SceneCanvas : public QWidget {
     void setDrawMode(bool on);
     void zoomBy(double factor);
     void setShowVakonomic(bool show);
+    void setShowOpenLoop(bool show);
+    void setShowClosedLoop(bool show);
     /// Shows or collapses the legend strip under the drawing area (key L).
     void setLegendVisible(bool visible);
 
@@ -76,6 +84,9 @@ class SceneCanvas : public QWidget {
     /// The user moved (drag) or deleted (right click) a vertex of the drawn path in draw mode.
     void pointsEdited(const std::vector<std::pair<double, double>>& points);
     void followBodyChanged(bool follow);
+    /// The user dragged the controlled body sideways at time t: a push of pushDy [m] to the
+    /// left of its heading (docs/physics.md §9).
+    void pushDragged(double t, double pushDy);
 
   protected:
     void paintEvent(QPaintEvent*) override;
@@ -147,7 +158,17 @@ class SceneCanvas : public QWidget {
     bool m_autoFit = true; // refit on resize and new solutions until the user zooms or pans
     bool m_drawMode = false;
     bool m_showVakonomic = true;
+    bool m_showOpenLoop = true, m_showClosedLoop = true;
     bool m_panning = false;
+    bool m_pushing = false; // dragging the controlled body: a push
+    QPointF m_pushFrom;     // world point pressed
+    QPointF m_pushTo;       // pixel under the mouse while pushing
+    double m_pushTime = 0, m_pushPhi = 0;
+    /// Whether the scene's perturbed bodies are there and drawn.
+    bool drawsOpenLoop() const;
+    bool drawsClosedLoop() const;
+    /// Whether a pixel lies on the controlled body at the current time.
+    bool onControlledBody(QPointF pixel) const;
     QPointF m_lastMouse;
     std::vector<QPointF> m_stroke; // world points of the stroke being drawn
     int m_dragVertex = -1;         // the vertex being dragged, or -1
@@ -162,6 +183,7 @@ class SceneCanvas : public QWidget {
         bool vakonomic = true;
         CanvasStyle style;
         bool legend = true;
+        bool openLoop = true, closedLoop = true;
         bool operator==(const BackgroundKey&) const = default;
     };
     BackgroundKey backgroundKey() const;

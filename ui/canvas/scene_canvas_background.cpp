@@ -159,6 +159,17 @@ void SceneCanvas::paintLegend(QPainter& p) const {
             p.setPen(m_style.pen(m_style.vakonomic(), 2, Qt::DashDotLine));
             p.drawLine(QPointF(x, y + 3 * dy), QPointF(x + len, y + 3 * dy));
         }
+        // the perturbed bodies in a second column (docs/physics.md §9)
+        const bool perturbed = drawsOpenLoop() || drawsClosedLoop();
+        const double x2 = 0.5 * width();
+        if (drawsOpenLoop()) {
+            p.setPen(m_style.pen(m_style.openLoop(), 2, Qt::DotLine));
+            p.drawLine(QPointF(x2, y), QPointF(x2 + len, y));
+        }
+        if (drawsClosedLoop()) {
+            p.setPen(m_style.pen(m_style.closedLoop(), 2, Qt::DashDotDotLine));
+            p.drawLine(QPointF(x2, y + dy), QPointF(x2 + len, y + dy));
+        }
         for (int i = 0; i < 24; ++i) {
             QColor c =
                 m_style.highContrast ? m_style.path() : pale(curvatureColor((i - 11.5) / 4.0));
@@ -169,13 +180,19 @@ void SceneCanvas::paintLegend(QPainter& p) const {
         }
         p.setPen(Qt::black);
         double tx = x + len + 6;
-        auto text = [&](double row, const QString& s) {
-            QRectF r(tx, y + row * dy - 0.5 * dy, width() - tx - 4, dy);
+        auto text = [&](double row, const QString& s, double left = -1) {
+            const double from = left < 0 ? tx : left;
+            const double right = left < 0 && perturbed && row < 2 ? x2 - 8 : width() - 4;
+            QRectF r(from, y + row * dy - 0.5 * dy, right - from, dy);
             p.drawText(r, Qt::AlignLeft | Qt::AlignVCenter,
                        p.fontMetrics().elidedText(s, Qt::ElideRight, int(r.width())));
         };
         text(0, tr("controlled body and its trail (tracks the path)"));
         text(1, tr("free motion from the same start (ghost)"));
+        if (drawsOpenLoop())
+            text(0, tr("pushed, open loop: the nominal \u03bb(t) as planned"), x2 + len + 6);
+        if (drawsClosedLoop())
+            text(1, tr("pushed, closed loop: feedback steers it back"), x2 + len + 6);
         if (m_showVakonomic)
             text(3, tr("genuine vakonomic body: \u03bb obeys its own equation (21)"));
         text(2, m_style.highContrast
@@ -190,8 +207,17 @@ void SceneCanvas::paintLegend(QPainter& p) const {
 }
 
 SceneCanvas::BackgroundKey SceneCanvas::backgroundKey() const {
-    return {m_document->solution().get(), size(),          m_scale, m_centre,       m_drawMode,
-            devicePixelRatioF(),          m_showVakonomic, m_style, m_legendVisible};
+    return {m_document->solution().get(),
+            size(),
+            m_scale,
+            m_centre,
+            m_drawMode,
+            devicePixelRatioF(),
+            m_showVakonomic,
+            m_style,
+            m_legendVisible,
+            drawsOpenLoop(),
+            drawsClosedLoop()};
 }
 
 void SceneCanvas::paintBackground() {

@@ -37,6 +37,19 @@ std::vector<SceneCanvas::Trail> SceneCanvas::trails(const MotionSample& now) con
                        {now.vak.x, now.vak.y},
                        false,
                        m_style.pen(m_style.vakonomic(), std::max(0.75 * w, 1.5), Qt::DashDotLine)});
+    if (drawsOpenLoop())
+        out.push_back({&c.openLoop(),
+                       m_time,
+                       {now.pert.x, now.pert.y},
+                       false,
+                       m_style.pen(m_style.openLoop(), std::max(0.75 * w, 1.5), Qt::DotLine)});
+    if (drawsClosedLoop())
+        out.push_back(
+            {&c.closedLoop(),
+             m_time,
+             {now.fb.x, now.fb.y},
+             false,
+             m_style.pen(m_style.closedLoop(), std::max(0.75 * w, 1.5), Qt::DashDotDotLine)});
     return out;
 }
 
@@ -96,6 +109,10 @@ QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& no
     body(now.free.x, now.free.y, now.free.phi);
     if (m_showVakonomic)
         body(now.vak.x, now.vak.y, now.vak.phi);
+    if (drawsOpenLoop())
+        body(now.pert.x, now.pert.y, now.pert.phi);
+    if (drawsClosedLoop())
+        body(now.fb.x, now.fb.y, now.fb.phi);
     add(m_vectors.bounds(m_document->solution(), m_document->scene().vectors, now, world));
     // only the widget is painted: a body far outside the view (a wild zoom) must not overflow int
     if (!std::isfinite(box.x()) || !std::isfinite(box.y()) || !std::isfinite(box.width()) ||
@@ -210,6 +227,10 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         body({now->free.x, now->free.y, now->free.phi}, m_style.free(), true);
         if (m_showVakonomic)
             body({now->vak.x, now->vak.y, now->vak.phi}, m_style.vakonomic(), true);
+        if (drawsOpenLoop())
+            body({now->pert.x, now->pert.y, now->pert.phi}, m_style.openLoop(), true);
+        if (drawsClosedLoop())
+            body({now->fb.x, now->fb.y, now->fb.phi}, m_style.closedLoop(), true);
         p.restore();
         m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform(), m_scale,
                         rect(), e->region());
@@ -217,6 +238,11 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         m_movingPainted = movingBounds(*solution, *now, m_time);
     } else {
         m_movingPainted = {};
+    }
+    if (m_pushing) {
+        // the push being dragged: a line from where the body was grabbed
+        p.setPen(m_style.pen(m_style.closedLoop().darker(140), 2, Qt::DashLine));
+        p.drawLine(toPixel(m_pushFrom), m_pushTo);
     }
     if (m_drawMode)
         paintVertices(p);

@@ -13,7 +13,7 @@ namespace {
 // the look of the plot being drawn (setPlotLook); set by drawPlot
 CanvasStyle t_look;
 struct Palette {
-    QColor controlled, free, path, vakonomic;
+    QColor controlled, free, path, vakonomic, openLoop, closedLoop;
 } t_palette;
 const QColor& kControlled = t_palette.controlled;
 const QColor& kFree = t_palette.free;
@@ -153,6 +153,37 @@ void trajectoryPlot(QCustomPlot& plot, QCPAxisRect* rect, const PlotSeries& s) {
     legendIn(rect, plot);
 }
 
+// the perturbed bodies' errors against their closest path points (docs/physics.md §9): e above,
+// the heading error below, open loop and closed loop
+void trackingErrorPlot(QCustomPlot& plot, const PlotSeries& s) {
+    QCPLayoutGrid* grid = plot.plotLayout();
+    grid->clear();
+    auto* panels = new QCPLayoutGrid;
+    grid->addElement(0, 0, panels);
+    QCPAxisRect* rects[2];
+    for (int i = 0; i < 2; ++i) {
+        rects[i] = new QCPAxisRect(&plot);
+        panels->addElement(0, i, rects[i]);
+    }
+    addGraph(rects[0], s.pertT, s.openE, QCoreApplication::translate("PlotFigures", "open loop e"),
+             t_palette.openLoop, Qt::DotLine);
+    addGraph(rects[0], s.pertT, s.fbE, QCoreApplication::translate("PlotFigures", "feedback e"),
+             t_palette.closedLoop);
+    labels(rects[0], QStringLiteral("t [s]"),
+           QCoreApplication::translate("PlotFigures", "lateral error e [m]"));
+    addGraph(rects[1], s.pertT, s.openTheta,
+             QCoreApplication::translate("PlotFigures", "open loop \u03b8"), t_palette.openLoop,
+             Qt::DotLine);
+    addGraph(rects[1], s.pertT, s.fbTheta,
+             QCoreApplication::translate("PlotFigures", "feedback \u03b8"), t_palette.closedLoop);
+    labels(rects[1], QStringLiteral("t [s]"),
+           QCoreApplication::translate("PlotFigures", "heading error \u03b8 [rad]"));
+    for (QCPAxisRect* r : rects) {
+        rescale(r);
+        legendIn(r, plot);
+    }
+}
+
 // the paper's Figs. 2 and 3: s(t), x(t), y(t) and y(x) with the path
 void paperFigure(QCustomPlot& plot, const PlotSeries& s) {
     QCPLayoutGrid* grid = plot.plotLayout();
@@ -273,6 +304,8 @@ QString plotFileStem(PlotKind kind) {
         return QStringLiteral("trajectory");
     case PlotKind::PaperFigure:
         return QStringLiteral("paper_figure");
+    case PlotKind::TrackingError:
+        return QStringLiteral("tracking_error");
     }
     return QStringLiteral("plot");
 }
@@ -292,6 +325,9 @@ QString plotTitle(PlotKind kind) {
     case PlotKind::PaperFigure:
         return QCoreApplication::translate(
             "PlotFigures", "s(t), x(t), y(t) and y(x), as in the paper's Figs. 2-3");
+    case PlotKind::TrackingError:
+        return QCoreApplication::translate(
+            "PlotFigures", "Pushed bodies: lateral error e(t) and heading error \u03b8(t)");
     }
     return {};
 }
@@ -303,12 +339,17 @@ void drawPlot(QCustomPlot& plot, PlotKind kind, const PlotSeries& series) {
         t_look.highContrast = plot.property("chaplyginHighContrast").toBool();
         t_look = t_look.sanitized();
     }
-    t_palette = {t_look.controlled(), t_look.free(), t_look.path(), t_look.vakonomic()};
+    t_palette = {t_look.controlled(), t_look.free(),     t_look.path(),
+                 t_look.vakonomic(),  t_look.openLoop(), t_look.closedLoop()};
     plot.setAutoAddPlottableToLegend(false);
     plot.clearPlottables();
     plot.clearItems();
     if (kind == PlotKind::PaperFigure) {
         paperFigure(plot, series);
+        return;
+    }
+    if (kind == PlotKind::TrackingError) {
+        trackingErrorPlot(plot, series);
         return;
     }
     QCPLayoutGrid* grid = plot.plotLayout();

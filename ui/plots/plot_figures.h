@@ -11,7 +11,9 @@ class QRectF;
 
 namespace chaplygin::ui {
 
-enum class PlotKind { Psi, Chi, Lambda, Energy, Trajectory, PaperFigure };
+/// TrackingError: the perturbed bodies' lateral and heading errors (docs/physics.md §9), drawn
+/// only for a scene with a perturbation.
+enum class PlotKind { Psi, Chi, Lambda, Energy, Trajectory, PaperFigure, TrackingError };
 
 /// File stem and title of each plot.
 QString plotFileStem(PlotKind kind);

@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 
 #include <cmath>
+#include <vector>
 
 namespace chaplygin::ui {
 
@@ -42,6 +43,23 @@ PlotSeries collectSeries(const Solution& solution, int freeSamples, int exactSam
         p.vakChi << v.chi;
         p.vakLambda << v.lambda;
         p.vakEnergy << v.energy;
+    }
+    if (solution.perturbed()) {
+        p.perturbed = true;
+        std::vector<double> times(p.freeT.begin(), p.freeT.end());
+        for (const TrackingError& e : solution.trackingErrors(times)) {
+            const PerturbedState open = solution.openLoop()->at(e.t);
+            const PerturbedState fb = solution.feedback()->at(e.t);
+            p.pertT << e.t;
+            p.pertX << open.x;
+            p.pertY << open.y;
+            p.fbX << fb.x;
+            p.fbY << fb.y;
+            p.openE << e.openE;
+            p.openTheta << e.openTheta;
+            p.fbE << e.fbE;
+            p.fbTheta << e.fbTheta;
+        }
     }
     for (const PathPiece& piece : solution.path()->pieces()) {
         if (piece.kind != PathPiece::Kind::Curve)

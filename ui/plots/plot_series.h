@@ -14,6 +14,11 @@ struct PlotSeries {
     QVector<double> freeT, freeX, freeY, freePsi, freeChi, freeEnergy;
     /// the genuine vakonomic body, at the free motion's times
     QVector<double> vakT, vakX, vakY, vakPsi, vakChi, vakLambda, vakEnergy;
+    /// with a perturbation only (docs/physics.md §9): the open-loop and the closed-loop bodies
+    /// and their tracking errors, at the free motion's times
+    bool perturbed = false;
+    QVector<double> pertT, pertX, pertY, fbX, fbY;
+    QVector<double> openE, openTheta, fbE, fbTheta;
     QVector<double> pathX, pathY; ///< the prescribed path, whole
     double tEnd = 0;
 };

@@ -55,6 +55,23 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
             [this](const QString& error) { emit exportFailed(error); });
         installFitAllAction(plot);
     }
+    m_errorPlot = new FlatPlot;
+    m_errorPlot->setObjectName(plotFileStem(PlotKind::TrackingError));
+    m_errorPlot->setMinimumSize(200, 110);
+    m_errorPlot->setToolTip(plotTitle(PlotKind::TrackingError));
+    m_errorPlot->setNotAntialiasedElements(QCP::aeAll);
+    m_errorPlot->hide();
+    connect(m_errorPlot, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) {
+        QCPAxisRect* rect = m_errorPlot->axisRectCount() > 0 ? m_errorPlot->axisRect() : nullptr;
+        if (rect && (e->buttons() & Qt::LeftButton))
+            if (double t = rect->axis(QCPAxis::atBottom)->pixelToCoord(e->position().x());
+                std::isfinite(t))
+                emit seekRequested(t);
+    });
+    m_grid->addWidget(m_errorPlot, 4, 0, 1, -1);
+    installPlotExportMenu(
+        m_errorPlot, [] { return plotFileStem(PlotKind::TrackingError); },
+        [this](const QString& error) { emit exportFailed(error); });
     connect(document, &SceneDocument::solutionChanged, this, &PlotsPanel::refresh);
 }
 
@@ -90,6 +107,13 @@ void PlotsPanel::refresh() {
         fitTicksToHeight(*m_plots[i]);
         m_plots[i]->replot(QCustomPlot::rpQueuedReplot);
     }
+    const bool perturbed = m_document->series().perturbed;
+    m_errorPlot->setVisible(perturbed);
+    if (perturbed) {
+        drawPlot(*m_errorPlot, PlotKind::TrackingError, m_document->series());
+        fitTicksToHeight(*m_errorPlot);
+        m_errorPlot->replot(QCustomPlot::rpQueuedReplot);
+    }
 }
 
 void PlotsPanel::placeCursor(int index) {
@@ -116,12 +140,15 @@ void PlotsPanel::setTime(double t) {
 void PlotsPanel::setLook(const CanvasStyle& look) {
     for (QCustomPlot* plot : m_plots)
         setPlotLook(*plot, look);
+    setPlotLook(*m_errorPlot, look);
     refresh();
 }
 
 void PlotsPanel::replotNow() {
     for (QCustomPlot* plot : m_plots)
         plot->replot(QCustomPlot::rpImmediateRefresh);
+    if (m_errorPlot->isVisible())
+        m_errorPlot->replot(QCustomPlot::rpImmediateRefresh);
 }
 
 } // namespace chaplygin::ui

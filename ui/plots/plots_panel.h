@@ -27,6 +27,9 @@ class PlotsPanel : public QWidget {
     double cursorTime() const { return m_time; }
     /// The time cursor drawn over a plot.
     QWidget* cursor(int index) const { return m_cursors[index]; }
+    /// The perturbed bodies' errors against t (docs/physics.md §9), shown under the four plots
+    /// when the scene has a perturbation.
+    QCustomPlot* errorPlot() const { return m_errorPlot; }
 
   public slots:
     /// Hands the document's series to the plots (after each recompute).
@@ -52,6 +55,7 @@ class PlotsPanel : public QWidget {
     SceneDocument* m_document;
     std::array<QCustomPlot*, 4> m_plots{};
     std::array<QWidget*, 4> m_cursors{};
+    QCustomPlot* m_errorPlot = nullptr;
     double m_time = 0;
     QGridLayout* m_grid;
     int m_columns = 2;

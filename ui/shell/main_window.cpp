@@ -25,6 +25,7 @@
 #include "shell/gallery_menu.h"
 #include "shell/instruments.h"
 #include "shell/language_menu.h"
+#include "shell/perturbation_controls.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
 #include "shell/space_to_play.h"
@@ -122,6 +123,7 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     connect(m_parameters, &ParametersPanel::sceneEdited, this, editParameters);
     connect(m_sweep, &SweepPanel::sceneEdited, this, editParameters);
     installInstruments(this);
+    installPerturbationControls(this);
 
     if (!m_useSettings)
         resize(1280, 800);

@@ -40,6 +40,8 @@ class PresentationMode : public QObject {
     QMenu* makeScaleMenu(QWidget* parent);
     /// Whether entering goes full screen (off for screenshots, which have a fixed size).
     void setFullScreen(bool on) { m_fullScreen = on; }
+    /// One more dock that a demo does not need (hidden while presenting).
+    void addHiddenDock(QDockWidget* dock) { m_hidden << dock; }
 
     /// The user's canvas style outside presentation mode (body display, trail, opacity).
     const CanvasStyle& baseStyle() const { return m_base; }
