@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The layering rule inside core/: its folders include each other without a cycle.
 
-Usage: core_include_cycles.py SOURCE_DIR. Prints every folder edge that lies on a cycle and exits 1,
+Usage: include_cycles.py SOURCE_DIR. Prints every folder edge that lies on a cycle and exits 1,
 or prints the folder order (lowest first) and exits 0. docs/architecture.md gives the intended order.
 """
 import os
