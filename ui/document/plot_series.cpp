@@ -1,4 +1,4 @@
-#include "plots/plot_series.h"
+#include "document/plot_series.h"
 
 #include <QCoreApplication>
 
