@@ -268,6 +268,8 @@ FreeState FreeMotion::at(double t) const {
     if (!interpolated)
         velocities(t, &st.sdot, &st.phidot, &st.phi);
     st.energy = 0.5 * m_sys.mass * (st.sdot * st.sdot + m_sys.b * m_sys.b * st.phidot * st.phidot);
+    st.psi = std::atan2(st.sdot, m_sys.b * st.phidot);
+    st.chi = st.psi - (m_sys.a / m_sys.b) * st.phi;
     return st;
 }
 
