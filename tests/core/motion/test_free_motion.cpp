@@ -161,6 +161,45 @@ TEST(FreeMotion, ControlAngleAndChiFollowTheirDefinitions) {
     }
 }
 
+// Where sdot changes sign (a < 0, or a start backing up), Psi follows the closed form's branch,
+// gd(kt + c) turning left and pi - gd(kt + c) turning right, without a jump, and chi stays
+// constant.
+TEST(FreeMotion, ControlAngleContinuousWhileBackingUp) {
+    struct Case {
+        DerivedSystem sys;
+        FreeInitial init;
+    };
+    const Case cases[] = {
+        {{1.0, -0.4, 0.9}, {1, 1, 0.2, 0.5, -0.8}},  // right turn, ends backing up
+        {{1.0, -0.4, 0.9}, {1, 1, 0.2, 0.5, 0.8}},   // left turn, ends backing up
+        {{2.0, 0.3, 0.7}, {0, 0, -1.0, -0.4, -1.3}}, // right turn, starts backing up
+    };
+    for (const Case& k : cases) {
+        const DerivedSystem& sys = k.sys;
+        const FreeInitial& i0 = k.init;
+        FreeMotion free(sys, i0, 40);
+        double v = std::hypot(i0.sdot, sys.b * i0.phidot), rate = sys.a * v / (sys.b * sys.b);
+        double c = std::asinh(i0.sdot / (sys.b * std::fabs(i0.phidot)));
+        double sigma = i0.phidot > 0 ? 1 : -1;
+        auto psi = [&](double t) {
+            double gd = 2 * std::atan(std::tanh(0.5 * (rate * t + c)));
+            return sigma > 0 ? gd : std::numbers::pi - gd;
+        };
+        double chi0 = psi(0) - sys.a / sys.b * i0.phi;
+        ASSERT_LT(free.at(0).sdot * free.at(40).sdot, 0) << "sdot changes sign";
+        double before = free.at(0).psi;
+        for (int j = 0; j <= 400; ++j) {
+            double t = 40.0 * j / 400;
+            FreeState f = free.at(t);
+            EXPECT_NEAR(f.psi, psi(t), 1e-12) << "t = " << t;
+            EXPECT_NEAR(v * std::sin(f.psi), f.sdot, 1e-14 * v) << "t = " << t;
+            EXPECT_NEAR(f.chi, chi0, 1e-11) << "t = " << t;
+            EXPECT_LT(std::fabs(f.psi - before), 0.2) << "t = " << t;
+            before = f.psi;
+        }
+    }
+}
+
 // The two ill-conditioned cases, tiny offset (b/a = 1e9) and tiny initial curvature (kappa0 = 1e-7
 // and 1e-9, below where c = atanh(sdot0/V) is lost), against a 60-digit mpmath reference:
 // tests/core/motion/free_motion_reference.py prints these rows (t, x, y, phi - phi0, sdot, phidot).
