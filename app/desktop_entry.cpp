@@ -4,6 +4,7 @@
 #include "common/input_error.h"
 #include "document/scene_document.h"
 #include "headless_options.h"
+#include "option_table.h"
 #include "panels/accuracy_readout.h"
 #include "panels/methods_panel.h"
 #include "panels/sweep_panel.h"
@@ -36,6 +37,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <unistd.h>
@@ -76,61 +78,67 @@ struct ScreenshotOptions {
     Scene scene;
 };
 
-ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
-    ScreenshotOptions o;
-    std::vector<std::string> rest;
-    auto value = [&](int& i, const std::string& option) {
-        if (i + 1 >= argc)
-            throw InputError(option, "needs a value");
-        return std::string(argv[++i]);
-    };
-    for (int i = 1; i < argc; ++i) {
-        std::string arg = argv[i];
-        if (arg == "--screenshot") {
-            o.file = value(i, arg);
-        } else if (arg == "--presentation") {
-            o.presentation = true;
-        } else if (arg == "--at") {
-            o.at = parseNumber(value(i, arg), "--at");
-            if (o.at < 0)
-                throw InputError("--at", "the time must be >= 0");
-        } else if (arg == "--panel") {
-            std::string panel = value(i, arg);
-            if (panel != "path" && panel != "parameters" && panel != "methods" &&
-                panel != "sweep" && panel != "notes" && panel != "equations")
-                throw InputError("--panel", "expected path, parameters, methods, sweep, notes or "
-                                            "equations, got '" +
-                                                panel + "'");
-            o.showSweep = panel == "sweep";
-            if (panel == "notes" || panel == "equations")
-                o.dock = panel + "Dock";
-            o.showParameters = panel == "parameters";
-            o.showMethods = panel == "methods";
-        } else if (arg == "--language") {
-            o.language = value(i, arg);
-            if (o.language != "en" && o.language != "pt_BR")
-                throw InputError("--language", "expected en or pt_BR, got '" + o.language + "'");
-        } else if (arg == "--size") {
-            std::string size = value(i, arg);
-            auto x = size.find('x');
-            if (x == std::string::npos)
-                throw InputError("--size", "expected WxH, e.g. 1280x800");
-            double w = parseNumber(size.substr(0, x), "--size");
-            double h = parseNumber(size.substr(x + 1), "--size");
-            if (w < 320 || h < 240 || w > 8000 || h > 8000 || w != int(w) || h != int(h))
-                throw InputError("--size",
-                                 "width and height must be whole numbers in 320x240 ... 8000x8000");
-            o.width = int(w);
-            o.height = int(h);
-        } else {
-            rest.push_back(arg);
-        }
+// the scene options' errors name the options, not the scene's fields
+Scene sceneOf(const app::OptionValues& given) {
+    try {
+        return sceneFromOptions(given);
+    } catch (const InputError& e) {
+        throw withOptionNames(e, SpeedMode::Energy);
     }
+}
+
+void readPanel(const std::string& panel, ScreenshotOptions& o) {
+    if (panel != "path" && panel != "parameters" && panel != "methods" && panel != "sweep" &&
+        panel != "notes" && panel != "equations")
+        throw InputError("--panel", "expected path, parameters, methods, sweep, notes or "
+                                    "equations, got '" +
+                                        panel + "'");
+    o.showSweep = panel == "sweep";
+    if (panel == "notes" || panel == "equations")
+        o.dock = panel + "Dock";
+    o.showParameters = panel == "parameters";
+    o.showMethods = panel == "methods";
+}
+
+std::pair<int, int> readWindowSize(const std::string& size) {
+    auto x = size.find('x');
+    if (x == std::string::npos)
+        throw InputError("--size", "expected WxH, e.g. 1280x800");
+    double w = parseNumber(size.substr(0, x), "--size");
+    double h = parseNumber(size.substr(x + 1), "--size");
+    if (w < 320 || h < 240 || w > 8000 || h > 8000 || w != int(w) || h != int(h))
+        throw InputError("--size",
+                         "width and height must be whole numbers in 320x240 ... 8000x8000");
+    return {int(w), int(h)};
+}
+
+ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
+    const app::OptionValues given =
+        app::readOptions(std::vector<std::string>(argv + 1, argv + argc), app::Screenshot);
+    ScreenshotOptions o;
+    o.file = given.value("--screenshot").value_or("");
     if (o.file.empty())
         throw InputError("--screenshot", "needs the output file name");
-    HeadlessOptions scene = parseHeadlessOptions(rest);
-    o.scene = scene.scene;
-    o.sweep = scene.sweep;
+    o.presentation = given.has("--presentation");
+    if (auto at = given.value("--at")) {
+        o.at = parseNumber(*at, "--at");
+        if (o.at < 0)
+            throw InputError("--at", "the time must be >= 0");
+    }
+    if (auto panel = given.value("--panel"))
+        readPanel(*panel, o);
+    if (auto language = given.value("--language")) {
+        o.language = *language;
+        if (o.language != "en" && o.language != "pt_BR")
+            throw InputError("--language", "expected en or pt_BR, got '" + o.language + "'");
+    }
+    if (auto size = given.value("--size"))
+        std::tie(o.width, o.height) = readWindowSize(*size);
+    o.scene = sceneOf(given);
+    if (auto sweep = given.value("--sweep")) {
+        o.sweep = parseSweepSpec(*sweep);
+        validateSweep(o.scene, *o.sweep);
+    }
     return o;
 }
 
@@ -220,17 +228,23 @@ DesktopOptions parseDesktopOptions(int argc, char** argv) {
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         bool takesValue = false;
-        if (arg == "--presentation")
-            o.presentation = true;
-        else if (arg.size() > 1 && arg[0] == '-' && isQtOption(arg, takesValue))
+        if (arg.size() > 1 && arg[0] == '-' && isQtOption(arg, takesValue))
             i += takesValue ? 1 : 0;
         else
             rest.push_back(arg);
     }
-    if (rest.size() == 1 && rest[0].rfind('-', 0) != 0)
+    if (!rest.empty() && rest[0].rfind('-', 0) != 0) {
         o.file = rest[0];
-    else if (!rest.empty())
-        o.scene = parseHeadlessOptions(rest).scene;
+        rest.erase(rest.begin());
+    }
+    const app::OptionValues given = app::readOptions(rest, app::Window);
+    o.presentation = given.has("--presentation");
+    const bool sceneOptions =
+        given.hasAnyOf(app::OptionSection::Scene) || given.hasAnyOf(app::OptionSection::System);
+    if (o.file && sceneOptions)
+        throw InputError(*o.file, "give a scene file or scene options, not both");
+    if (sceneOptions)
+        o.scene = sceneOf(given);
     return o;
 }
 
@@ -281,6 +295,8 @@ int runDesktop(int argc, char** argv) {
     window.show();
     if (options.presentation)
         window.presentation()->setActive(true);
+    // an earlier run that ended abnormally left an unsaved scene: offer it back
+    QTimer::singleShot(0, &window, [&window] { window.offerRestore(); });
     return app.exec();
 }
 

@@ -1,6 +1,7 @@
 #include "headless_options.h"
 
 #include "common/input_error.h"
+#include "option_table.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
 
@@ -111,163 +112,28 @@ SweepSpec parseSweepSpec(const std::string& text) {
 
 namespace {
 
-HeadlessOptions parseOptions(const std::vector<std::string>& args) {
-    HeadlessOptions o;
-    std::optional<std::string> preset, pathExpr, points, corners, scenePath, vT, vS;
-    std::optional<std::pair<double, double>> xRange, uRange;
-    std::optional<std::string> system, mode;
-    std::vector<std::pair<std::string, double>> params;
-    std::optional<double> tEnd;
-    std::set<std::string> seen;
+using app::OptionValues;
 
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& opt = args[i];
-        auto value = [&]() -> std::string {
-            if (i + 1 >= args.size())
-                throw InputError(opt, "needs a value");
-            if (args[i + 1].rfind("--", 0) == 0)
-                throw InputError(opt,
-                                 "needs a value (the next word is the option " + args[i + 1] + ")");
-            return args[++i];
-        };
-        auto once = [&]() {
-            if (!seen.insert(opt).second && opt != "--param")
-                throw InputError(opt, "given more than once");
-        };
-        if (opt == "--headless") {
-            continue;
-        } else if (opt == "--work-precision") {
-            once();
-            o.workPrecision = true;
-        } else if (opt == "--help" || opt == "-h") {
-            o.help = true;
-        } else if (opt == "--preset") {
-            once();
-            preset = value();
-        } else if (opt == "--scene") {
-            once();
-            scenePath = value();
-        } else if (opt == "--path") {
-            once();
-            pathExpr = value();
-        } else if (opt == "--x-range") {
-            once();
-            xRange = parseRange(value(), opt);
-        } else if (opt == "--u-range") {
-            once();
-            uRange = parseRange(value(), opt);
-        } else if (opt == "--points") {
-            once();
-            points = value();
-        } else if (opt == "--corners") {
-            once();
-            corners = value();
-        } else if (opt == "--system") {
-            once();
-            system = value();
-        } else if (opt == "--param") {
-            std::string v = value();
-            auto eq = v.find('=');
-            if (eq == std::string::npos || eq == 0)
-                throw InputError("--param", "expects NAME=VALUE, got '" + v + "'");
-            std::string name = trim(v.substr(0, eq));
-            params.emplace_back(name, parseNumber(trim(v.substr(eq + 1)), "--param " + name));
-        } else if (opt == "--mode") {
-            once();
-            mode = value();
-        } else if (opt == "--vT") {
-            once();
-            vT = value();
-        } else if (opt == "--vs") {
-            once();
-            vS = value();
-        } else if (opt == "--t-end") {
-            once();
-            tEnd = parseNumber(value(), opt);
-        } else if (opt == "--times") {
-            once();
-            std::vector<double> ts;
-            for (const std::string& t : split(value(), ',')) {
-                ts.push_back(parseNumber(trim(t), "--times"));
-                if (ts.back() < 0)
-                    throw InputError("--times", "times must be >= 0, got " + trim(t));
-            }
-            if (ts.empty())
-                throw InputError("--times", "needs at least one time");
-            o.times = ts;
-        } else if (opt == "--samples") {
-            once();
-            double n = parseNumber(value(), opt);
-            if (n != std::floor(n) || n < 2 || n > 1e7)
-                throw InputError(opt, "must be a whole number between 2 and 10000000");
-            o.samples = static_cast<int>(n);
-        } else if (opt == "--csv") {
-            once();
-            o.csvPath = value();
-        } else if (opt == "--summary") {
-            once();
-            o.summaryPath = value();
-        } else if (opt == "--plots") {
-            once();
-            o.plotsDir = value();
-        } else if (opt == "--sweep") {
-            once();
-            o.sweep = parseSweepSpec(value());
-        } else if (opt == "--animation") {
-            once();
-            o.animationPath = value();
-        } else if (opt == "--with-plots") {
-            once();
-            o.withPlots = true;
-        } else if (opt == "--fps") {
-            once();
-            double fps = parseNumber(value(), opt);
-            if (fps != std::floor(fps) || fps < 1 || fps > 120)
-                throw InputError(opt, "must be a whole number from 1 to 120");
-            o.fps = static_cast<int>(fps);
-        } else if (opt == "--size") {
-            once();
-            std::string size = value();
-            auto x = size.find('x');
-            if (x == std::string::npos)
-                throw InputError(opt, "expected WxH, e.g. 1280x720, got '" + size + "'");
-            double w = parseNumber(size.substr(0, x), opt),
-                   h = parseNumber(size.substr(x + 1), opt);
-            if (w < 64 || h < 64 || w > 7680 || h > 4320 || w != std::floor(w) ||
-                h != std::floor(h))
-                throw InputError(opt,
-                                 "width and height must be whole numbers in 64x64 ... 7680x4320");
-            o.width = static_cast<int>(w);
-            o.height = static_cast<int>(h);
-        } else if (opt == "--format") {
-            once();
-            o.formats.clear();
-            for (const std::string& f : split(value(), ',')) {
-                std::string t = trim(f);
-                if (t != "png" && t != "pdf" && t != "svg")
-                    throw InputError("--format", "unknown format '" + t + "' (use png, pdf, svg)");
-                o.formats.push_back(t);
-            }
-            if (o.formats.empty())
-                throw InputError("--format", "needs at least one of png, pdf, svg");
-        } else {
-            throw InputError(opt, "unknown option (see --help)");
-        }
-    }
-    if (o.help)
-        return o;
+std::optional<std::pair<double, double>> rangeOption(const OptionValues& given, const char* name) {
+    if (auto text = given.value(name))
+        return parseRange(*text, name);
+    return std::nullopt;
+}
 
-    // the scene: a preset, a file, or a path given here; then overrides
+// --preset, --scene, --path or --points: the scene's path, system and mode before the overrides
+Scene baseScene(const OptionValues& given) {
+    const auto preset = given.value("--preset"), scenePath = given.value("--scene"),
+               pathExpr = given.value("--path"), points = given.value("--points");
+    const auto xRange = rangeOption(given, "--x-range"), uRange = rangeOption(given, "--u-range");
     int sources = (preset ? 1 : 0) + (scenePath ? 1 : 0) + (pathExpr ? 1 : 0) + (points ? 1 : 0);
     if (sources > 1)
         throw InputError("path", "give only one of --preset, --scene, --path and --points");
-    Scene& s = o.scene;
+    Scene s;
     if (preset) {
         s = presetScene(*preset);
     } else if (scenePath) {
         s = loadSceneFile(*scenePath);
     } else if (pathExpr) {
-        s = Scene{};
         parsePathExpression(*pathExpr, s.path);
         if (s.path.kind == PathKind::Graph) {
             if (!xRange)
@@ -285,31 +151,41 @@ HeadlessOptions parseOptions(const std::vector<std::string>& args) {
             std::tie(s.path.from, s.path.to) = *uRange;
         }
     } else if (points) {
-        s = Scene{};
         s.path.kind = PathKind::Polyline;
         s.path.points = parsePoints(*points);
     } else {
         throw InputError("path",
                          "no path: give --preset, --scene, --path or --points (see --help)");
     }
-    if (corners) {
+    if ((xRange || uRange) && !pathExpr)
+        throw InputError(xRange ? "--x-range" : "--u-range", "applies only to --path");
+    return s;
+}
+
+// --corners, --system, --param, --mode, --vT/--vs and --t-end on top of the base scene
+void applyOverrides(const OptionValues& given, Scene& s) {
+    if (auto corners = given.value("--corners")) {
         if (s.path.kind != PathKind::Polyline)
             throw InputError("--corners", "applies only to --points paths");
         s.path.corners = cornerModeFromName(*corners);
     }
-    if ((xRange || uRange) && !pathExpr)
-        throw InputError(xRange ? "--x-range" : "--u-range", "applies only to --path");
-    if (system) {
+    if (auto system = given.value("--system")) {
         SystemKind kind = systemKindFromName(*system);
-        if (kind != s.system.kind || !preset)
+        if (kind != s.system.kind || !given.has("--preset"))
             s.system.params = defaultSystemParams(kind);
         s.system.kind = kind;
     }
-    for (const auto& [name, v] : params) {
+    for (const std::string& v : given.values("--param")) {
+        auto eq = v.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw InputError("--param", "expects NAME=VALUE, got '" + v + "'");
+        std::string name = trim(v.substr(0, eq));
+        double value = parseNumber(trim(v.substr(eq + 1)), "--param " + name);
         if (s.system.kind == SystemKind::Sleigh && (name == "I" || name == "b"))
             s.system.params.erase(name == "I" ? "b" : "I");
-        s.system.params[name] = v;
+        s.system.params[name] = value;
     }
+    const auto mode = given.value("--mode"), vT = given.value("--vT"), vS = given.value("--vs");
     if (mode)
         s.mode = speedModeFromName(*mode);
     if (vT && vS)
@@ -324,8 +200,93 @@ HeadlessOptions parseOptions(const std::vector<std::string>& args) {
         s.speed = parseNumber(*vT, "--vT");
     if (vS)
         s.speed = parseNumber(*vS, "--vs");
-    if (tEnd)
-        s.tEnd = *tEnd;
+    if (auto tEnd = given.value("--t-end"))
+        s.tEnd = parseNumber(*tEnd, "--t-end");
+}
+
+std::vector<double> parseTimes(const std::string& text) {
+    std::vector<double> ts;
+    for (const std::string& t : split(text, ',')) {
+        ts.push_back(parseNumber(trim(t), "--times"));
+        if (ts.back() < 0)
+            throw InputError("--times", "times must be >= 0, got " + trim(t));
+    }
+    if (ts.empty())
+        throw InputError("--times", "needs at least one time");
+    return ts;
+}
+
+int parseWholeNumber(const std::string& text, const char* option, double lo, double hi,
+                     const char* range) {
+    double n = parseNumber(text, option);
+    if (n != std::floor(n) || n < lo || n > hi)
+        throw InputError(option, std::string("must be a whole number ") + range);
+    return static_cast<int>(n);
+}
+
+std::vector<std::string> parseFormats(const std::string& text) {
+    std::vector<std::string> formats;
+    for (const std::string& f : split(text, ',')) {
+        std::string t = trim(f);
+        if (t != "png" && t != "pdf" && t != "svg")
+            throw InputError("--format", "unknown format '" + t + "' (use png, pdf, svg)");
+        formats.push_back(t);
+    }
+    if (formats.empty())
+        throw InputError("--format", "needs at least one of png, pdf, svg");
+    return formats;
+}
+
+// the output options of a headless run
+void readOutputs(const OptionValues& given, HeadlessOptions& o) {
+    o.workPrecision = given.has("--work-precision");
+    if (auto times = given.value("--times"))
+        o.times = parseTimes(*times);
+    if (auto samples = given.value("--samples"))
+        o.samples = parseWholeNumber(*samples, "--samples", 2, 1e7, "between 2 and 10000000");
+    o.csvPath = given.value("--csv").value_or("");
+    o.summaryPath = given.value("--summary").value_or("");
+    o.plotsDir = given.value("--plots").value_or("");
+    if (auto sweep = given.value("--sweep"))
+        o.sweep = parseSweepSpec(*sweep);
+    o.animationPath = given.value("--animation").value_or("");
+    o.withPlots = given.has("--with-plots");
+    if (auto fps = given.value("--fps"))
+        o.fps = parseWholeNumber(*fps, "--fps", 1, 120, "from 1 to 120");
+    if (auto size = given.value("--size")) {
+        auto x = size->find('x');
+        if (x == std::string::npos)
+            throw InputError("--size", "expected WxH, e.g. 1280x720, got '" + *size + "'");
+        double w = parseNumber(size->substr(0, x), "--size"),
+               h = parseNumber(size->substr(x + 1), "--size");
+        if (w < 64 || h < 64 || w > 7680 || h > 4320 || w != std::floor(w) || h != std::floor(h))
+            throw InputError("--size",
+                             "width and height must be whole numbers in 64x64 ... 7680x4320");
+        o.width = static_cast<int>(w);
+        o.height = static_cast<int>(h);
+    }
+    if (auto formats = given.value("--format"))
+        o.formats = parseFormats(*formats);
+}
+
+} // namespace
+
+Scene sceneFromOptions(const app::OptionValues& given) {
+    Scene s = baseScene(given);
+    applyOverrides(given, s);
+    return s;
+}
+
+namespace {
+
+HeadlessOptions parseOptions(const std::vector<std::string>& args) {
+    const OptionValues given = app::readOptions(args, app::Headless);
+    HeadlessOptions o;
+    o.help = given.has("--help");
+    if (o.help)
+        return o;
+    readOutputs(given, o);
+    o.scene = sceneFromOptions(given);
     if (o.times && o.scene.tEnd)
         throw InputError("--times", "give --times or --t-end, not both");
     if (o.sweep && (o.workPrecision || !o.animationPath.empty()))
@@ -339,10 +300,10 @@ HeadlessOptions parseOptions(const std::vector<std::string>& args) {
         (o.workPrecision || !o.csvPath.empty() || !o.summaryPath.empty() || !o.plotsDir.empty()))
         throw InputError("--animation", "writes the animation alone; run --csv, --summary and "
                                         "--plots separately");
-    if (o.animationPath.empty() && (seen.count("--fps") || seen.count("--size") || o.withPlots))
-        throw InputError(seen.count("--fps")    ? "--fps"
-                         : seen.count("--size") ? "--size"
-                                                : "--with-plots",
+    if (o.animationPath.empty() && (given.has("--fps") || given.has("--size") || o.withPlots))
+        throw InputError(given.has("--fps")    ? "--fps"
+                         : given.has("--size") ? "--size"
+                                               : "--with-plots",
                          "applies only to --animation");
     if (o.sweep)
         validateSweep(o.scene, *o.sweep);
@@ -375,47 +336,6 @@ InputError withOptionNames(const InputError& error, SpeedMode mode) {
         return error;
     std::string message = error.what();
     return InputError(option, message.substr(std::min(message.size(), field.size() + 2)));
-}
-
-std::string headlessUsage() {
-    return R"(Headless (no window; --headless may stand anywhere):
-Scene (one of):
-  --preset line|circle|catenary|sinusoid      the paper's examples with the paper's parameters
-  --path "y=EXPR" --x-range X0,X1             graph path, traversed from X0 to X1 (X1 < X0:
-                                              from right to left)
-  --path "x=EXPR;y=EXPR" --u-range U0,U1      parametric path in u
-  --points "x0,y0 x1,y1 ..." [--corners pivot|smooth]   polyline (drawn) path
-  --scene FILE                                a scene saved by the app (JSON)
-System and motion:
-  --system sleigh|disk|carriage               default sleigh
-  --param NAME=VALUE                          repeatable. sleigh: m, a, and I or b;
-                                              disk: m, R, I1, I2; carriage: R, a, m, I1, I2, M, I
-  --mode energy|speed                         constant kinetic energy (default) or constant speed
-  --vT V | --vs V                             v_T = sqrt(2T/m_eff) [m/s], or the constant speed [m/s]
-  --t-end T                                   horizon [s]; default: time to traverse the path
-Output:
-  --times T1,T2,...                           rows exactly at these times
-  --samples N                                 rows evenly spaced on [0, t_end] (default 501)
-  --csv FILE|-                                time series (CSV with a header row)
-  --summary FILE|-                            JSON: b, m_eff, path length, duration, models used
-                                              (printed on standard output when no output is given)
-  --plots DIR --format png,pdf,svg            the plots, as the app draws them
-  --work-precision                            the speed-against-accuracy sweep of every method:
-                                              CSV problem,method,tolerance,error,seconds,rhs_evals,chosen;
-                                              --summary names the references, --plots draws the diagram
-  --sweep NAME=FROM:TO:COUNT                  one CSV row per value of a parameter (m, a, b, I, vT,
-                                              vs, or the disk's or carriage's): NAME,duration,
-                                              max_abs_lambda,max_abs_control_couple,
-                                              max_abs_force_lateral,max_abs_control_power,
-                                              final_separation; --plots draws each column
-  --animation FILE [--fps N] [--size WxH]     the canvas from 0 to t_end in real time: FILE.gif or
-                                              FILE.mp4 (needs the ffmpeg program), or a folder of
-                                              PNG frames (FILE ending in / or without extension);
-                                              default 30 fps, 1280x720; --with-plots puts
-                                              the plots beside the canvas
-Expressions: + - * / ^ ( ), sin cos tan asin acos atan sinh cosh tanh exp sqrt abs ln log, pi, e.
-Exit status: 0 success, 2 bad input (the message names the option or the place), 1 internal failure.
-)";
 }
 
 } // namespace chaplygin

@@ -9,6 +9,10 @@
 
 namespace chaplygin {
 
+namespace app {
+class OptionValues;
+}
+
 /// The parsed headless command line (chaplygin-lab --headless --help).
 struct HeadlessOptions {
     Scene scene;
@@ -39,7 +43,8 @@ SweepSpec parseSweepSpec(const std::string& text);
 /// scene_file); other errors are returned unchanged.
 InputError withOptionNames(const InputError& error, SpeedMode mode);
 
-/// The headless and scene options' part of the usage (app/program_usage.h prints it all).
-std::string headlessUsage();
+/// The scene that --preset, --scene, --path or --points and the system and motion options
+/// describe (the window, the screenshot and the headless run share them). Throws InputError.
+Scene sceneFromOptions(const app::OptionValues& given);
 
 } // namespace chaplygin

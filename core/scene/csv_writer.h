@@ -1,4 +1,5 @@
 #pragma once
+#include "scene/csv_columns.h"
 #include "scene/solution.h"
 
 #include <string>
@@ -6,11 +7,9 @@
 
 namespace chaplygin {
 
-/// The CSV header of the command-line contract (README, Headless examples), columns in order.
-const std::vector<std::string>& csvColumns();
-
-/// The rows as CSV text with a header, full double precision. Throws std::runtime_error naming
-/// the column and time if any value is not finite: a NaN never reaches a CSV.
+/// The rows as CSV text with a header, one column per entry of csvColumns(), full double
+/// precision. Throws std::runtime_error naming the column and time if any value is not finite: a
+/// NaN never reaches a CSV.
 std::string formatCsv(const std::vector<MotionSample>& rows);
 
 } // namespace chaplygin

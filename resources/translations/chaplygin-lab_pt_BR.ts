@@ -26,12 +26,12 @@
         <translation>&lt;b&gt;Trenó de Chaplygin&lt;/b&gt;: m = %1 kg, a = %2 m, b = %3 m (b² = a² + I/m, b é o raio de giração em relação a P)</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Rolling disk&lt;/b&gt; (App. A) as a sleigh: M_eff = m + I1/R² = %1 kg, b = R√(I2/(I1 + mR²)) = %2 √(%3/(%4 + %5·%2²)) = %6 m (A14); the contact point is under the centre, so a = 0</source>
-        <translation>&lt;b&gt;Disco rolante&lt;/b&gt; (Apêndice A) como trenó: M_eff = m + I1/R² = %1 kg, b = R√(I2/(I1 + mR²)) = %2 √(%3/(%4 + %5·%2²)) = %6 m (A14); o ponto de contato fica sob o centro, logo a = 0</translation>
+        <source>&lt;b&gt;Rolling disk&lt;/b&gt; (App. A) as a sleigh: m_eff = m + I1/R² = %1 kg, b = R√(I2/(I1 + mR²)) = %2 √(%3/(%4 + %5·%2²)) = %6 m (A14); the contact point is under the centre, so a = 0</source>
+        <translation>&lt;b&gt;Disco rolante&lt;/b&gt; (Apêndice A) como trenó: m_eff = m + I1/R² = %1 kg, b = R√(I2/(I1 + mR²)) = %2 √(%3/(%4 + %5·%2²)) = %6 m (A14); o ponto de contato fica sob o centro, logo a = 0</translation>
     </message>
     <message>
-        <source>&lt;b&gt;Two-wheeled carriage&lt;/b&gt; (App. B) as a sleigh: M_eff = M + 2(m + I1/R²) = %1 kg, b = √(J/M_eff) = %2 m with J = I + 2I2 + 2a²(m + I1/R²) (B18); a = %3 m</source>
-        <translation>&lt;b&gt;Carrinho de duas rodas&lt;/b&gt; (Apêndice B) como trenó: M_eff = M + 2(m + I1/R²) = %1 kg, b = √(J/M_eff) = %2 m com J = I + 2I2 + 2a²(m + I1/R²) (B18); a = %3 m</translation>
+        <source>&lt;b&gt;Two-wheeled carriage&lt;/b&gt; (App. B) as a sleigh: m_eff = M + 2(m + I1/R²) = %1 kg, b = √(J/m_eff) = %2 m with J = I + 2I2 + 2a²(m + I1/R²) (B18); a = %3 m</source>
+        <translation>&lt;b&gt;Carrinho de duas rodas&lt;/b&gt; (Apêndice B) como trenó: m_eff = M + 2(m + I1/R²) = %1 kg, b = √(J/m_eff) = %2 m com J = I + 2I2 + 2a²(m + I1/R²) (B18); a = %3 m</translation>
     </message>
     <message>
         <source>&lt;p&gt;t = &lt;b&gt;%1 s&lt;/b&gt;: s = %2 m, φ = %3 rad, κ = %4 1/m; %5&lt;/p&gt;</source>
@@ -862,10 +862,6 @@ corpo vakonômico: %1</translation>
         <translation>A cena tem alterações não salvas. Salvá-las?</translation>
     </message>
     <message>
-        <source>cannot save &apos;%1&apos;: the scene does not solve (%2); fix it or undo first</source>
-        <translation>não é possível salvar &apos;%1&apos;: a cena não tem solução (%2); corrija-a ou desfaça antes</translation>
-    </message>
-    <message>
         <source>Saved %1</source>
         <translation>%1 salvo</translation>
     </message>
@@ -992,6 +988,14 @@ corpo vakonômico: %1</translation>
     <message>
         <source>&lt;h3&gt;Chaplygin Lab %1&lt;/h3&gt;&lt;p&gt;Control of nonholonomic Chaplygin systems for teaching: the sleigh, the rolling disk and the two-wheeled carriage follow a prescribed path, beside the free motion from the same start.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Paper:&lt;/b&gt; Antunes, Sigaud, de Moraes, &lt;i&gt;Controlling nonholonomic Chaplygin systems&lt;/i&gt;, Brazilian Journal of Physics (2009).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Licence:&lt;/b&gt; GNU General Public License, version 3 or later (the file COPYING). Components keep their own licences: Qt %2 (LGPL v3), QCustomPlot (GPL v3), GiNaC (GPL v2 or later), GSL (GPL v3), muparser (BSD).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Credits:&lt;/b&gt; the Chaplygin Lab contributors; the equations of motion after the paper above, re-derived in the physics notes (Help).&lt;/p&gt;</source>
         <translation>&lt;h3&gt;Chaplygin Lab %1&lt;/h3&gt;&lt;p&gt;Controle de sistemas de Chaplygin não holonômicos para o ensino: o trenó, o disco rolante e o carrinho de duas rodas seguem um caminho prescrito, ao lado do movimento livre a partir do mesmo início.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Artigo:&lt;/b&gt; Antunes, Sigaud, de Moraes, &lt;i&gt;Controlling nonholonomic Chaplygin systems&lt;/i&gt;, Brazilian Journal of Physics (2009).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Licença:&lt;/b&gt; GNU General Public License, versão 3 ou posterior (o arquivo COPYING). Os componentes mantêm as suas próprias licenças: Qt %2 (LGPL v3), QCustomPlot (GPL v3), GiNaC (GPL v2 ou posterior), GSL (GPL v3), muparser (BSD).&lt;/p&gt;&lt;p&gt;&lt;b&gt;Créditos:&lt;/b&gt; os colaboradores do Chaplygin Lab; as equações de movimento seguem o artigo acima e são deduzidas novamente nas notas de física (Ajuda).&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Restore the unsaved scene?</source>
+        <translation>Restaurar a cena não salva?</translation>
+    </message>
+    <message>
+        <source>Chaplygin Lab ended without saving the scene you were working on. A copy was kept at %1. Restore it?</source>
+        <translation>O Chaplygin Lab terminou sem salvar a cena em que você trabalhava. Uma cópia foi guardada em %1. Restaurá-la?</translation>
     </message>
 </context>
 <context>
@@ -1459,6 +1463,14 @@ O que os estudantes devem observar…</translation>
     <message>
         <source>internal error: %1</source>
         <translation>erro interno: %1</translation>
+    </message>
+    <message>
+        <source>cannot save &apos;%1&apos;</source>
+        <translation>não é possível salvar &apos;%1&apos;</translation>
+    </message>
+    <message>
+        <source>the scene does not solve (%1); fix it or undo first</source>
+        <translation>a cena não tem solução (%1); corrija-a ou desfaça antes</translation>
     </message>
 </context>
 <context>

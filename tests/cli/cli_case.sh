@@ -14,3 +14,18 @@ run() {
   [ "$status" -eq "$expected" ] || fail "exit $status, expected $expected for: $* ; stderr: $(cat "$work/err")"
 }
 expect_err() { grep -q -- "$1" "$work/err" || fail "stderr lacks '$1': $(cat "$work/err")"; }
+
+# the number of the column NAME in the header of the CSV FILE (nothing when it has none)
+col() { head -1 "$1" | tr , '\n' | grep -nx -- "$2" | cut -d: -f1; }
+# csv_awk FILE PROGRAM [AWK OPTIONS...]: awk -F, PROGRAM over the CSV, in which $NAME is the column
+# that the header calls NAME (each name is an awk variable holding its column's number, so a program
+# must not assign to one); a $NAME that the header lacks fails the case
+csv_awk() {
+  local file=$1 program=$2 name n=0 vars=()
+  shift 2
+  for name in $(grep -o '\$[A-Za-z_][A-Za-z0-9_]*' <<<"$program" | cut -c2- | sort -u); do
+    [ -n "$(col "$file" "$name")" ] || fail "$file has no column $name: $(head -1 "$file")"
+  done
+  for name in $(head -1 "$file" | tr , ' '); do vars+=(-v "$name=$((n += 1))"); done
+  awk -F, "${vars[@]}" "$@" "$program" "$file"
+}

@@ -2,9 +2,13 @@
 # One command-line test case: cli_test.sh EXE CASE. Exits non-zero with a message on failure.
 set -u
 source "$(dirname "$0")/cli_case.sh" "$@"
-# max |column(a) - expr| over the CSV rows, with awk (no other tools needed)
-max_abs() { awk -F, -v col="$2" "NR>1 { d = \$col - ($3); if (d < 0) d = -d; if (d > m) m = d } END { printf \"%.3g\", m + 0 }" "$1"; }
-below() { awk -v v="$1" -v tol="$2" 'BEGIN { exit !(v <= tol) }' || fail "$3: error $1 > $2"; }
+# max_abs FILE NAME EXPR: max |column NAME - EXPR| over the CSV's rows, EXPR in awk with $NAME for
+# a column (csv_awk)
+max_abs() { csv_awk "$1" "NR>1 { _d = \$$2 - ($3); if (_d < 0) _d = -_d; if (_d > _max) _max = _d } END { printf \"%.3g\", _max + 0 }"; }
+below() {
+  [[ $1 =~ ^[0-9.]+([eE][-+]?[0-9]+)?$ ]] || fail "$3: no error computed ('$1')"
+  awk -v v="$1" -v tol="$2" 'BEGIN { exit !(v <= tol) }' || fail "$3: error $1 > $2"
+}
 
 case "$case_name" in
 columns_and_rows)
@@ -17,19 +21,19 @@ exact_times_circle)
   # circle R = 2, b = 1, v_T = 1: x = R cos(t/sqrt(5)), y = R sin(t/sqrt(5)), lambda = -m a phidot
   run 0 --preset circle --times 0,0.5,1.25,3,7.5,11 --csv "$work/c.csv"
   [ "$(wc -l < "$work/c.csv")" -eq 7 ] || fail "rows"
-  below "$(max_abs "$work/c.csv" 3 '2*cos($1/sqrt(5))')" 1e-9 "x"
-  below "$(max_abs "$work/c.csv" 4 '2*sin($1/sqrt(5))')" 1e-9 "y"
-  below "$(max_abs "$work/c.csv" 6 'atan2(2, 1)')" 1e-12 "psi"
-  below "$(max_abs "$work/c.csv" 8 '-0.5/sqrt(5)')" 1e-12 "lambda"
-  below "$(max_abs "$work/c.csv" 9 '0.5')" 1e-12 "energy"
+  below "$(max_abs "$work/c.csv" x '2*cos($t/sqrt(5))')" 1e-9 "x"
+  below "$(max_abs "$work/c.csv" y '2*sin($t/sqrt(5))')" 1e-9 "y"
+  below "$(max_abs "$work/c.csv" psi 'atan2(2, 1)')" 1e-12 "psi"
+  below "$(max_abs "$work/c.csv" lambda '-0.5/sqrt(5)')" 1e-12 "lambda"
+  below "$(max_abs "$work/c.csv" energy '0.5')" 1e-12 "energy"
   ;;
 no_nan_sinusoid)
   run 0 --preset sinusoid --samples 2001 --csv "$work/s.csv"
   grep -qiE 'nan|inf' "$work/s.csv" && fail "NaN or inf in the CSV"
   # psi stays in (0, pi) and the energy is constant
-  awk -F, 'NR>1 && ($6 <= 0 || $6 >= 3.14159265358979) { exit 1 }' "$work/s.csv" || fail "psi out of (0, pi)"
-  below "$(max_abs "$work/s.csv" 9 '0.5')" 1e-13 "energy"
-  below "$(max_abs "$work/s.csv" 15 '0.5')" 1e-13 "free energy"
+  csv_awk "$work/s.csv" 'NR>1 && ($psi <= 0 || $psi >= 3.14159265358979) { exit 1 }' || fail "psi out of (0, pi)"
+  below "$(max_abs "$work/s.csv" energy '0.5')" 1e-13 "energy"
+  below "$(max_abs "$work/s.csv" free_energy '0.5')" 1e-13 "free energy"
   ;;
 summary_keys)
   run 0 --preset catenary --summary -
@@ -55,35 +59,36 @@ disk_and_carriage)
   # b = 0.3186 below the half-axle a = 0.4 runs; on a circle lambda = 0 and the free body stays on it
   run 0 --preset circle --system carriage --param R=0.3 --param a=0.4 --param m=0.5 --param I1=0.02 \
     --param I2=0.01 --param M=3 --param I=0.2 --times 0,1,2.5,6,12 --csv "$work/c.csv"
-  below "$(max_abs "$work/c.csv" 8 '0')" 1e-14 "carriage lambda on a circle"
-  below "$(max_abs "$work/c.csv" 10 '$3')" 1e-11 "carriage free x on the circle"
-  below "$(max_abs "$work/c.csv" 11 '$4')" 1e-11 "carriage free y on the circle"
+  below "$(max_abs "$work/c.csv" lambda '0')" 1e-14 "carriage lambda on a circle"
+  below "$(max_abs "$work/c.csv" free_x '$x')" 1e-11 "carriage free x on the circle"
+  below "$(max_abs "$work/c.csv" free_y '$y')" 1e-11 "carriage free y on the circle"
   ;;
 vakonomic_columns)
-  # the genuine vakonomic body after today's columns (22-27); m = 1, b = 1, v_T = 1
+  # the genuine vakonomic body, the last columns; m = 1, b = 1, v_T = 1
   run 0 --preset circle --times 0,1,2,3,4,5 --csv "$work/c.csv"
   head -1 "$work/c.csv" | grep -q ',control_couple,vak_x,vak_y,vak_phi,vak_sdot,vak_phidot,vak_lambda$' \
     || fail "header: $(head -1 "$work/c.csv")"
   # t = 0: the tracking's state and lambda(0) = -m a phidot = -0.5/sqrt(5)
-  awk -F, 'NR == 2 { for (i = 0; i < 3; ++i) { d = $(22 + i) - $(3 + i); if (d > 1e-15 || d < -1e-15) exit 1 } }' \
-    "$work/c.csv" || fail "vak_x, vak_y, vak_phi at t = 0"
-  below "$(awk -F, 'NR == 2 { d = $27 + 0.5/sqrt(5); print (d < 0 ? -d : d) }' "$work/c.csv")" 1e-14 "vak_lambda(0)"
+  csv_awk "$work/c.csv" 'function far(d) { return d > 1e-15 || d < -1e-15 }
+    NR == 2 && (far($vak_x - $x) || far($vak_y - $y) || far($vak_phi - $phi)) { exit 1 }' \
+    || fail "vak_x, vak_y, vak_phi at t = 0"
+  below "$(csv_awk "$work/c.csv" 'NR == 2 { d = $vak_lambda + 0.5/sqrt(5); print (d < 0 ? -d : d) }')" 1e-14 "vak_lambda(0)"
   # energy conserved: (vak_sdot^2 + b^2 vak_phidot^2)/2 = 0.5
-  below "$(max_abs "$work/c.csv" 25 '$25 - 0.5*($25^2 + $26^2) + 0.5')" 1e-12 "vak energy"
+  below "$(max_abs "$work/c.csv" vak_sdot '$vak_sdot - 0.5*($vak_sdot^2 + $vak_phidot^2) + 0.5')" 1e-12 "vak energy"
   # it leaves the circle of radius 2 within a few seconds
-  off=$(awk -F, 'NR > 1 { d = sqrt($22^2 + $23^2) - 2; if (d < 0) d = -d; if (d > m) m = d } END { print m }' "$work/c.csv")
+  off=$(csv_awk "$work/c.csv" 'NR > 1 { d = sqrt($vak_x^2 + $vak_y^2) - 2; if (d < 0) d = -d; if (d > m) m = d } END { print m }')
   awk -v o="$off" 'BEGIN { exit !(o > 0.1) }' || fail "vak stays on the circle (off by $off)"
   # on the line (an unstable equilibrium: lambda_c = 0, Psi = pi/2) it follows the tracking
   run 0 --preset line --times 0,2,4,8 --csv "$work/l.csv"
-  below "$(max_abs "$work/l.csv" 22 '$3')" 1e-12 "vak_x on the line"
-  below "$(max_abs "$work/l.csv" 23 '$4')" 1e-12 "vak_y on the line"
-  below "$(max_abs "$work/l.csv" 27 '0')" 1e-15 "vak_lambda on the line"
+  below "$(max_abs "$work/l.csv" vak_x '$x')" 1e-12 "vak_x on the line"
+  below "$(max_abs "$work/l.csv" vak_y '$y')" 1e-12 "vak_y on the line"
+  below "$(max_abs "$work/l.csv" vak_lambda '0')" 1e-15 "vak_lambda on the line"
   grep -q '"vakonomic"' <("$exe" --headless --preset circle --summary -) || fail "summary lacks models.vakonomic"
   ;;
 speed_mode)
   run 0 --preset catenary --vs 0.5 --times 0,2,4,8 --csv "$work/c.csv"
-  below "$(max_abs "$work/c.csv" 2 '0.5*$1')" 1e-12 "s = v_s t"
-  below "$(max_abs "$work/c.csv" 3 'sqrt((0.5*$1)^2 + 1)')" 1e-12 "catenary x"
+  below "$(max_abs "$work/c.csv" s '0.5*$t')" 1e-12 "s = v_s t"
+  below "$(max_abs "$work/c.csv" x 'sqrt((0.5*$t)^2 + 1)')" 1e-12 "catenary x"
   ;;
 corners_pivot)
   # two unit segments and a left quarter turn: duration 2 + pi/2 (b = 1, v_T = 1)
@@ -192,11 +197,11 @@ work_precision)
     --plots "$work/plots" --format png,svg
   head -1 "$work/wp.csv" | grep -qx 'problem,method,tolerance,error,seconds,rhs_evals,chosen' || fail "header"
   for p in controlled free; do
-    n=$(awk -F, -v p=$p 'NR>1 && $1==p {print $2}' "$work/wp.csv" | sort -u | wc -l)
+    n=$(csv_awk "$work/wp.csv" 'NR>1 && $problem==p {print $method}' -v p=$p | sort -u | wc -l)
     [ "$n" -ge 6 ] || fail "$p: only $n methods"
-    awk -F, -v p=$p 'NR>1 && $1==p && $7==0 && $4<=1e-10 {found=1} END {exit !found}' "$work/wp.csv" \
+    csv_awk "$work/wp.csv" 'NR>1 && $problem==p && $chosen==0 && $error<=1e-10 {found=1} END {exit !found}' -v p=$p \
       || fail "$p: no method reaches 1e-10"
-    [ "$(awk -F, -v p=$p 'NR>1 && $1==p && $7==1' "$work/wp.csv" | wc -l)" -eq 1 ] || fail "$p: chosen rows"
+    [ "$(csv_awk "$work/wp.csv" 'NR>1 && $problem==p && $chosen==1' -v p=$p | wc -l)" -eq 1 ] || fail "$p: chosen rows"
   done
   grep -q '"controlled_reference"' "$work/wp.json" || fail "summary names no reference"
   head -c 8 "$work/plots/work_precision.png" | od -An -c | grep -q 'P   N   G' || fail "diagram PNG"
@@ -229,10 +234,10 @@ options_checked_without_output)
 reversed_graph_line)
   # y = 1 + x/2 from x = 2 to x = -1.5, v_T = 1.3: a straight run at v_T along (-2, -1)/sqrt(5)
   run 0 --path "y=1+x/2" --x-range 2,-1.5 --vT 1.3 --times 0,0.7,1.9,2.5 --csv "$work/c.csv" --summary "$work/s.json"
-  below "$(max_abs "$work/c.csv" 3 '2 - 1.3*$1*2/sqrt(5)')" 1e-12 "x"
-  below "$(max_abs "$work/c.csv" 4 '2 - 1.3*$1/sqrt(5)')" 1e-12 "y"
-  below "$(max_abs "$work/c.csv" 2 '1.3*$1')" 1e-12 "s"
-  below "$(awk -F, 'NR>1 { d = cos($5) + 2/sqrt(5); e = sin($5) + 1/sqrt(5); m = (d<0?-d:d) + (e<0?-e:e) } END { print m }' "$work/c.csv")" 1e-14 "heading"
+  below "$(max_abs "$work/c.csv" x '2 - 1.3*$t*2/sqrt(5)')" 1e-12 "x"
+  below "$(max_abs "$work/c.csv" y '2 - 1.3*$t/sqrt(5)')" 1e-12 "y"
+  below "$(max_abs "$work/c.csv" s '1.3*$t')" 1e-12 "s"
+  below "$(csv_awk "$work/c.csv" 'NR>1 { d = cos($phi) + 2/sqrt(5); e = sin($phi) + 1/sqrt(5); m = (d<0?-d:d) + (e<0?-e:e) } END { print m }')" 1e-14 "heading"
   grep -q '"path_length": 3.9131189606' "$work/s.json" || fail "length $(grep path_length "$work/s.json")" # 3.5 sqrt(5)/2
   run 2 --path "y=x" --x-range 1,1
   expect_err "x-range: FROM and TO must differ"
@@ -242,10 +247,10 @@ reversed_parametric_circle)
   # x = -2 cos(t/sqrt(5)), y = 2 sin(t/sqrt(5)), psi = atan2(2, -1), lambda = -m a phidot > 0
   run 0 --path "x=2*cos(u);y=2*sin(u)" --u-range 3.141592653589793,0 --param m=1 --param a=0.5 \
     --param b=1 --vT 1 --times 0,0.5,2,4.5,7 --csv "$work/c.csv"
-  below "$(max_abs "$work/c.csv" 3 '-2*cos($1/sqrt(5))')" 1e-9 "x"
-  below "$(max_abs "$work/c.csv" 4 '2*sin($1/sqrt(5))')" 1e-9 "y"
-  below "$(max_abs "$work/c.csv" 6 'atan2(2, -1)')" 1e-12 "psi"
-  below "$(max_abs "$work/c.csv" 8 '0.5/sqrt(5)')" 1e-12 "lambda"
+  below "$(max_abs "$work/c.csv" x '-2*cos($t/sqrt(5))')" 1e-9 "x"
+  below "$(max_abs "$work/c.csv" y '2*sin($t/sqrt(5))')" 1e-9 "y"
+  below "$(max_abs "$work/c.csv" psi 'atan2(2, -1)')" 1e-12 "psi"
+  below "$(max_abs "$work/c.csv" lambda '0.5/sqrt(5)')" 1e-12 "lambda"
   ;;
 expression_blowup)
   # a typo that once took seconds and gigabytes inside the symbolic differentiation
@@ -303,6 +308,12 @@ desktop_unknown_option)
   env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$exe" --preset nowhere >"$work/out" 2>"$work/err"
   [ $? -eq 2 ] || fail "a bad preset in desktop mode: exit $?"
   expect_err "--preset"
+  # the option table says where an option applies
+  env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM "$exe" --preset circle --csv x.csv >"$work/out" 2>"$work/err"
+  [ $? -eq 2 ] || fail "--csv in the window: not refused"
+  expect_err "--csv: applies only to --headless"
+  run 2 --preset circle --presentation
+  expect_err "--presentation: applies only to the window and --screenshot"
   ;;
 *)
   fail "unknown case"

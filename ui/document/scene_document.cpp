@@ -15,7 +15,16 @@ constexpr qint64 kFrameMs = 16;
 constexpr int kPathWaitMs = 8; // how long a path request may hold the UI thread
 } // namespace
 
-SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {
+SceneDocument::SceneDocument(QObject* parent, bool persistent)
+    : QObject(parent), m_persistent(persistent), m_undo(new QUndoStack(this)) {
+    connect(m_undo, &QUndoStack::cleanChanged, this,
+            [this](bool clean) { emit modifiedChanged(!clean); });
+    if (m_persistent) {
+        // every change is kept on disk until it is saved (or undone back to the saved state)
+        m_autosave = new Autosave(this);
+        connect(m_undo, &QUndoStack::indexChanged, this, &SceneDocument::keepCopy);
+        connect(m_undo, &QUndoStack::cleanChanged, this, &SceneDocument::keepCopy);
+    }
     m_timer.setSingleShot(true);
     connect(&m_timer, &QTimer::timeout, this, &SceneDocument::recompute);
     // one worker: every asynchronous path build (and so every GiNaC compile it makes) is serial
@@ -25,6 +34,8 @@ SceneDocument::SceneDocument(QObject* parent) : QObject(parent) {
 }
 
 SceneDocument::~SceneDocument() {
+    // the undo stack signals cleanChanged while it is destroyed
+    m_undo->disconnect(this);
     m_pathWatcher.disconnect(this);
     m_pathPool.waitForDone();
 }

@@ -1,4 +1,5 @@
 #pragma once
+#include "document/autosave.h"
 #include "document/plot_series.h"
 #include "scene/scene.h"
 #include "scene/solution.h"
@@ -10,6 +11,7 @@
 #include <QString>
 #include <QThreadPool>
 #include <QTimer>
+#include <QUndoStack>
 
 #include <atomic>
 #include <functional>
@@ -20,15 +22,55 @@
 
 namespace chaplygin::ui {
 
-/// The open scene and its latest valid Solution, shared by every view. Scene changes are
+/// The open scene and its latest valid Solution, shared by every view, and everything that
+/// changes it: the undo stack and its edits, loading and saving, the modified state, the recent
+/// files and the autosaved copy (docs/architecture.md, The flow of a scene). Scene changes are
 /// coalesced: setScene() only marks the document dirty, and one recompute runs with the latest
 /// scene on the next turn of the event loop, at most one per 16 ms frame while a slider moves. A
 /// scene that fails leaves the last valid Solution in place and reports the InputError.
 class SceneDocument : public QObject {
     Q_OBJECT
   public:
-    explicit SceneDocument(QObject* parent = nullptr);
+    /// persistent: the program's own window, which keeps the recent files in QSettings and a copy
+    /// of the unsaved scene on disk (Autosave); off for tests and screenshots.
+    explicit SceneDocument(QObject* parent = nullptr, bool persistent = false);
     ~SceneDocument() override;
+
+    // Editing (scene_document_editing.cpp)
+
+    /// Every change of the scene, one undoable step each.
+    QUndoStack* undoStack() const { return m_undo; }
+    /// Whether the scene differs from its file (or from the scene it was loaded as).
+    bool isModified() const { return !m_undo->isClean(); }
+    /// Replaces the scene as a new document (File > New and Open, a scene given at start): the
+    /// undo stack starts empty and the solution is computed at once. A scene that does not solve
+    /// throws InputError and changes nothing.
+    void load(const Scene& scene);
+    /// Changes the scene as one undo step (latest value wins for the recompute); consecutive
+    /// edits with the same non-empty mergeKey merge into one step (one slider drag). A scene
+    /// equal to the current one is no step.
+    void edit(const Scene& scene, const QString& description, const QString& mergeKey = {});
+    /// A change of the system's parameters: checked first (deriveSystem), so that an impossible
+    /// value is refused with its message (returned) and never becomes an undo step.
+    QString editParameters(const Scene& scene, const QString& description,
+                           const QString& mergeKey = {});
+
+    /// File > Open: the file's scene as a new document, clean, first in the recent files.
+    /// Throws InputError naming the file or the place in it.
+    void open(const QString& path);
+    /// File > Save: written atomically, then clean. A scene that does not solve would not open
+    /// again and is refused (InputError); a failed write throws IoError and keeps the old file.
+    void save(const QString& path);
+    /// File > Export CSV of the current solution; throws IoError.
+    void exportCsv(const QString& path) const;
+    /// File > Open Recent (empty unless persistent).
+    QStringList recentFiles() const;
+
+    /// The copy of the unsaved scene on disk (null unless persistent).
+    Autosave* autosave() const { return m_autosave; }
+    /// Loads a copy a killed program left as the document, modified, with the scene's own file
+    /// name; throws InputError when the copy is damaged.
+    void restore(const Autosave::Orphan& orphan);
 
     /// Free-motion samples for the live plots and the ghost's trail (each costs a Solution::at).
     static constexpr int kFreeSamples = 400;
@@ -74,8 +116,19 @@ class SceneDocument : public QObject {
     /// error is empty when the latest scene solved.
     void errorChanged(const QString& error);
     void fileNameChanged(const QString& name);
+    /// The scene was set by an edit, an undo or redo, or a load; pathChanged when its path (or
+    /// preset) differs from the one before, so that views showing the path refresh.
+    void sceneApplied(const Scene& scene, bool pathChanged);
+    void modifiedChanged(bool modified);
+    void recentFilesChanged();
 
   private:
+    /// Sets the scene from an edit, an undo or a load; emits sceneApplied.
+    void apply(const Scene& scene);
+    /// The document is now the file at path: clean, and first in the recent files.
+    void markSavedAs(const QString& path);
+    void keepCopy();
+
     struct PathJob {
         std::shared_ptr<const Path> path;
         QString error;
@@ -86,6 +139,10 @@ class SceneDocument : public QObject {
     /// Hands a finished path request to its caller (once).
     void takePath();
 
+    bool m_persistent;
+    QUndoStack* m_undo;
+    Autosave* m_autosave = nullptr;
+    bool m_applied = false; // whether a scene has been applied yet
     Scene m_scene;
     bool m_dirty = false;
     QTimer m_timer;

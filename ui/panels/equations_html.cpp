@@ -53,15 +53,15 @@ QString systemLine(const Solution& s) {
     case SystemKind::Disk:
         return QCoreApplication::translate(
                    "EquationsPanel",
-                   "<b>Rolling disk</b> (App. A) as a sleigh: M_eff = m + I1/R\u00b2 = %1 kg, "
+                   "<b>Rolling disk</b> (App. A) as a sleigh: m_eff = m + I1/R\u00b2 = %1 kg, "
                    "b = R\u221a(I2/(I1 + mR\u00b2)) = %2 \u221a(%3/(%4 + %5\u00b7%2\u00b2)) = %6 m "
                    "(A14); the contact point is under the centre, so a = 0")
             .arg(num(d.mass), p("R"), p("I2"), p("I1"), p("m"), num(d.b));
     case SystemKind::Carriage:
         return QCoreApplication::translate("EquationsPanel",
                                            "<b>Two-wheeled carriage</b> (App. B) as a sleigh: "
-                                           "M_eff = M + 2(m + I1/R\u00b2) "
-                                           "= %1 kg, b = \u221a(J/M_eff) = %2 m with J = I + 2I2 + "
+                                           "m_eff = M + 2(m + I1/R\u00b2) "
+                                           "= %1 kg, b = \u221a(J/m_eff) = %2 m with J = I + 2I2 + "
                                            "2a\u00b2(m + I1/R\u00b2) "
                                            "(B18); a = %3 m")
             .arg(num(d.mass), num(d.b), num(d.a));
@@ -69,18 +69,21 @@ QString systemLine(const Solution& s) {
     return {};
 }
 
-} // namespace
+// what every section reads: the solution, the state at t and the system
+struct At {
+    const Solution& s;
+    double t;
+    MotionSample m;
+    const ControlState& c;
+    const DerivedSystem& d;
+    bool energy, pivot;
+    double v;
+};
 
-QString equationsHtml(const Solution& s, double t) {
-    t = std::clamp(t, 0.0, s.tEnd());
-    const MotionSample m = s.at(t);
-    const ControlState& c = m.control;
-    const DerivedSystem& d = s.system();
-    const bool energy = s.params().mode == SpeedMode::Energy;
-    const bool pivot = std::isinf(m.kappa);
-    const double v = s.params().speed;
+// the system and the state at t
+QString header(const At& at) {
+    const auto& [s, t, m, c, d, energy, pivot, v] = at;
     QString h;
-    h += QStringLiteral("<html><body>");
     h += QStringLiteral("<p>") + systemLine(s) + QStringLiteral("</p>");
     h += QCoreApplication::translate(
              "EquationsPanel",
@@ -92,7 +95,13 @@ QString equationsHtml(const Solution& s, double t) {
                          : QCoreApplication::translate("EquationsPanel",
                                                        "constant speed, v_s = %1 m/s (App. C)")
                                .arg(num(v)));
+    return h;
+}
 
+// Ψ on its branch, at a corner or backing up through a cusp
+QString controlAngle(const At& at) {
+    const auto& [s, t, m, c, d, energy, pivot, v] = at;
+    QString h;
     h += section(QCoreApplication::translate("EquationsPanel", "Control angle"));
     if (pivot) {
         h += row(QStringLiteral("\u03a8"),
@@ -122,7 +131,13 @@ QString equationsHtml(const Solution& s, double t) {
                      "(45) tan \u03a8 = \u03c1/b on the branch \u03a8 \u2208 (0, \u03c0) "
                      "(erratum to (47))"));
     }
+    return h;
+}
 
+// ṡ, φ̇, the time law and the energy, in the scene's speed mode
+QString velocities(const At& at) {
+    const auto& [s, t, m, c, d, energy, pivot, v] = at;
+    QString h;
     h += section(QCoreApplication::translate("EquationsPanel", "Velocities and time law"));
     if (pivot) {
         h += row(QStringLiteral("\u1e61"), {}, c.sdot, QStringLiteral("m/s"),
@@ -162,7 +177,13 @@ QString equationsHtml(const Solution& s, double t) {
                  .arg(num(d.mass), num(c.sdot), num(d.b), num(c.phidot)),
              c.energy, QStringLiteral("J"),
              QCoreApplication::translate("EquationsPanel", "(49) with \u1e61\u00b2 (erratum)"));
+    return h;
+}
 
+// χ, Ψ̇ and λ
+QString multiplier(const At& at) {
+    const auto& [s, t, m, c, d, energy, pivot, v] = at;
+    QString h;
     h += section(
         QCoreApplication::translate("EquationsPanel", "Driving angle and control multiplier"));
     h += row(QStringLiteral("\u03c7 = \u03a8 \u2212 (a/b)\u03c6"),
@@ -179,7 +200,13 @@ QString equationsHtml(const Solution& s, double t) {
              QStringLiteral("%1 (%2 \u00b7 %3 \u2212 %4 \u00b7 %5)")
                  .arg(num(d.mass), num(d.b), num(c.psidot), num(d.a), num(c.phidot)),
              c.lambda, QStringLiteral("kg m/s"), QStringLiteral("(25), (33)"));
+    return h;
+}
 
+// the control force, the knife's reaction, the couple and their power
+QString forces(const At& at) {
+    const auto& [s, t, m, c, d, energy, pivot, v] = at;
+    QString h;
     h += section(QCoreApplication::translate("EquationsPanel", "Forces on the body"));
     h += row(QStringLiteral("f_s = F_cs = m(s\u0308 \u2212 a\u03c6\u0307\u00b2)"),
              QStringLiteral("%1 (%2 \u2212 %3 \u00b7 %4\u00b2)")
@@ -213,7 +240,13 @@ QString equationsHtml(const Solution& s, double t) {
              energy ? QCoreApplication::translate("EquationsPanel", "0: the control does no work")
                     : QCoreApplication::translate(
                           "EquationsPanel", "dT/dt = m b\u00b2\u03c6\u0307\u03c6\u0308 (App. C)"));
+    return h;
+}
 
+// the free Lagrange–d'Alembert body's velocities and knife reaction
+QString freeBody(const At& at) {
+    const auto& [s, t, m, c, d, energy, pivot, v] = at;
+    QString h;
     h += section(QCoreApplication::translate("EquationsPanel", "Free body (Lagrange\u2013"
                                                                "d'Alembert ghost)"));
     const FreeMotion::Constants k = s.freeMotion().constants();
@@ -243,8 +276,26 @@ QString equationsHtml(const Solution& s, double t) {
              QStringLiteral("%1 (1 \u2212 %2\u00b2/%3\u00b2) \u00b7 %4 \u00b7 %5")
                  .arg(num(d.mass), num(d.a), num(d.b), num(f.sdot), num(f.phidot)),
              freeBodyState(d, f).knifeReaction, QStringLiteral("N"), QStringLiteral("(D15)"));
-    h += QStringLiteral("</body></html>");
     return h;
+}
+
+} // namespace
+
+QString equationsHtml(const Solution& s, double t) {
+    t = std::clamp(t, 0.0, s.tEnd());
+    const MotionSample m = s.at(t);
+    const At at{s,
+                t,
+                m,
+                m.control,
+                s.system(),
+                s.params().mode == SpeedMode::Energy,
+                std::isinf(m.kappa),
+                s.params().speed};
+    QString h = QStringLiteral("<html><body>") + header(at);
+    for (QString (*part)(const At&) : {controlAngle, velocities, multiplier, forces, freeBody})
+        h += part(at);
+    return h + QStringLiteral("</body></html>");
 }
 
 } // namespace chaplygin::ui

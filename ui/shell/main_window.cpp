@@ -38,6 +38,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
@@ -51,8 +52,8 @@
 namespace chaplygin::ui {
 
 MainWindow::MainWindow(bool useSettings, QWidget* parent)
-    : QMainWindow(parent), m_useSettings(useSettings), m_document(new SceneDocument(this)),
-      m_playback(new Playback(this)), m_undo(new QUndoStack(this)) {
+    : QMainWindow(parent), m_useSettings(useSettings),
+      m_document(new SceneDocument(this, useSettings)), m_playback(new Playback(this)) {
     m_canvas = new SceneCanvas(m_document);
     setCentralWidget(m_canvas);
 
@@ -82,7 +83,9 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     connect(m_document, &SceneDocument::solutionChanged, this, &MainWindow::onSolutionChanged);
     connect(m_document, &SceneDocument::errorChanged, this, &MainWindow::onDocumentError);
     connect(m_document, &SceneDocument::fileNameChanged, this, &MainWindow::updateTitle);
-    connect(m_undo, &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &SceneDocument::sceneApplied, this, &MainWindow::showScene);
+    connect(m_document, &SceneDocument::recentFilesChanged, this, &MainWindow::rebuildRecentMenu);
     connect(m_playback, &Playback::timeChanged, this, &MainWindow::onTime);
     connect(m_plots, &PlotsPanel::seekRequested, m_playback, &Playback::seek);
     connect(m_path, &PathPanel::presetChosen, this, &MainWindow::choosePreset);
@@ -91,7 +94,7 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     connect(m_path, &PathPanel::drawModeToggled, m_canvas, &SceneCanvas::setDrawMode);
     connect(m_path, &PathPanel::drawOptionsChanged, this,
             [this](CornerMode mode, double smoothing) {
-                PathSource s = m_current.path;
+                PathSource s = m_document->scene().path;
                 s.corners = mode;
                 s.smoothing = smoothing;
                 setPath(s, tr("Change the corners"), false);
@@ -107,12 +110,17 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
             });
     connect(m_canvas, &SceneCanvas::pointsEdited, this,
             [this](const std::vector<std::pair<double, double>>& points) {
-                PathSource s = m_current.path;
+                PathSource s = m_document->scene().path;
                 s.points = points;
                 setPath(s, tr("Edit the drawn path"), false);
             });
-    connect(m_parameters, &ParametersPanel::sceneEdited, this, &MainWindow::onParametersEdited);
-    connect(m_sweep, &SweepPanel::sceneEdited, this, &MainWindow::onParametersEdited);
+    // a slider's change: the panel's scene goes straight to the document's undo stack
+    auto editParameters = [this](const Scene& scene, const QString& description,
+                                 const QString& mergeKey) {
+        m_parameters->showError(m_document->editParameters(scene, description, mergeKey));
+    };
+    connect(m_parameters, &ParametersPanel::sceneEdited, this, editParameters);
+    connect(m_sweep, &SweepPanel::sceneEdited, this, editParameters);
     installInstruments(this);
 
     if (!m_useSettings)
@@ -125,8 +133,16 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
-    // the undo stack signals cleanChanged while it is destroyed, after this window has gone
-    m_undo->disconnect(this);
+    // the document's undo stack signals while it is destroyed, after this window has gone
+    m_document->disconnect(this);
+}
+
+QUndoStack* MainWindow::undoStack() const {
+    return m_document->undoStack();
+}
+
+Autosave* MainWindow::autosave() const {
+    return m_document->autosave();
 }
 
 void MainWindow::balanceDocks() {
@@ -155,9 +171,9 @@ void MainWindow::buildMenus() {
     file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
-    QAction* undo = m_undo->createUndoAction(this, tr("&Undo"));
+    QAction* undo = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
     undo->setShortcut(QKeySequence::Undo);
-    QAction* redo = m_undo->createRedoAction(this, tr("&Redo"));
+    QAction* redo = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
     // Ctrl+Y and Ctrl+Shift+Z on every platform
     QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
     for (const QKeySequence& k : {QKeySequence(tr("Ctrl+Y")), QKeySequence(tr("Ctrl+Shift+Z"))})
@@ -271,7 +287,7 @@ void MainWindow::startNewScene() {
 
 void MainWindow::rebuildRecentMenu() {
     m_recentMenu->clear();
-    const QStringList files = m_useSettings ? recentFiles() : QStringList();
+    const QStringList files = m_document->recentFiles();
     for (const QString& f : files)
         m_recentMenu
             ->addAction(QFileInfo(f).fileName(), this,
@@ -283,12 +299,7 @@ void MainWindow::rebuildRecentMenu() {
     m_recentMenu->setEnabled(!files.isEmpty());
 }
 
-void MainWindow::applyScene(const Scene& scene) {
-    // a parameter change leaves the path fields alone (with any unfinished typing in them)
-    bool pathChanged =
-        scene.path != m_current.path || scene.preset != m_current.preset || !m_applied;
-    m_current = scene;
-    m_applied = true;
+void MainWindow::showScene(const Scene& scene, bool pathChanged) {
     if (pathChanged) {
         m_path->setScene(scene);
         m_path->showError({});
@@ -296,25 +307,17 @@ void MainWindow::applyScene(const Scene& scene) {
     }
     m_parameters->setScene(scene);
     m_parameters->showError({});
-    m_document->setScene(scene);
 }
 
 void MainWindow::loadScene(const Scene& scene) {
-    m_document->check(scene); // a scene that does not solve never replaces the current one
-    PinSet::check(*m_document, scene);
-    m_undo->clear();
-    applyScene(scene);
-    m_document->flush();
+    m_document->load(scene);
     m_playback->seek(0);
     m_canvas->fitScene();
 }
 
 void MainWindow::editScene(const Scene& scene, const QString& description,
                            const QString& mergeKey) {
-    if (scene == m_current)
-        return;
-    m_undo->push(new SceneCommand(
-        description, m_current, scene, [this](const Scene& s) { applyScene(s); }, mergeKey));
+    m_document->edit(scene, description, mergeKey);
 }
 
 void MainWindow::choosePreset(const QString& name) {
@@ -339,7 +342,7 @@ void MainWindow::setPath(const PathSource& source, const QString& description, b
         m_path->showError(error);
         if (!error.isEmpty())
             return;
-        Scene next = m_current;
+        Scene next = m_document->scene();
         next.path = source;
         next.preset.clear();
         editScene(next, description);
@@ -351,18 +354,6 @@ void MainWindow::setPath(const PathSource& source, const QString& description, b
     });
     if (m_document->pathPending())
         statusBar()->showMessage(tabulating);
-}
-
-void MainWindow::onParametersEdited(const Scene& scene, const QString& description,
-                                    const QString& mergeKey) {
-    try {
-        deriveSystem(scene.system);
-    } catch (const InputError& e) {
-        m_parameters->showError(QString::fromStdString(e.what()));
-        return;
-    }
-    m_parameters->showError({});
-    editScene(scene, description, mergeKey);
 }
 
 void MainWindow::onSolutionChanged() {
@@ -398,7 +389,7 @@ bool MainWindow::loadGalleryEntry(const QString& name) {
         m_document->check(entry.scene); // the core's refusal is the lesson of a rejected entry
     } catch (const InputError& e) {
         const QString refusal = QString::fromStdString(e.what());
-        m_noteScene = m_current;
+        m_noteScene = m_document->scene();
         m_accuracy->setNote(tr("Refused: %1").arg(title),
                             refusal + QStringLiteral("\n\n") + explanation, true);
         statusBar()->showMessage(refusal, 10000);
@@ -430,7 +421,7 @@ void MainWindow::onTime(double t) {
 }
 
 bool MainWindow::maybeSave() {
-    if (!m_useSettings || m_undo->isClean())
+    if (!m_useSettings || !m_document->isModified())
         return true;
     auto answer = QMessageBox::question(
         this, tr("Chaplygin Lab"), tr("The scene has unsaved changes. Save them?"),
@@ -447,43 +438,25 @@ void MainWindow::newScene() {
     m_document->setFileName({});
 }
 
-// the document now is the file at path: clean, and first in the recent files
-void MainWindow::markSavedAs(const QString& path) {
-    m_document->setFileName(path);
-    m_undo->setClean();
-    if (m_useSettings) {
-        addRecentFile(path);
-        rebuildRecentMenu();
-    }
-}
-
 bool MainWindow::openFile(const QString& path) {
     try {
-        Scene scene = openSceneFile(path);
-        loadScene(scene);
+        m_document->open(path);
     } catch (const std::exception& e) {
         showFileError(QString::fromStdString(e.what()));
         return false;
     }
-    markSavedAs(path);
+    m_playback->seek(0);
+    m_canvas->fitScene();
     return true;
 }
 
 bool MainWindow::saveFile(const QString& path) {
-    // a scene that does not solve would not open again: it never replaces a file
-    m_document->flush();
-    if (!m_document->error().isEmpty()) {
-        showFileError(tr("cannot save '%1': the scene does not solve (%2); fix it or undo first")
-                          .arg(path, m_document->error()));
-        return false;
-    }
     try {
-        saveSceneFile(path, m_current);
+        m_document->save(path);
     } catch (const std::exception& e) {
         showFileError(QString::fromStdString(e.what()));
         return false;
     }
-    markSavedAs(path);
     statusBar()->showMessage(tr("Saved %1").arg(path), 4000);
     return true;
 }
@@ -503,7 +476,7 @@ bool MainWindow::exportPlotsTo(const QString& dir, const QStringList& formats) {
 bool MainWindow::exportCsvTo(const QString& path) {
     m_document->flush();
     try {
-        exportCsvFile(path, *m_document->solution());
+        m_document->exportCsv(path);
     } catch (const std::exception& e) {
         showFileError(QString::fromStdString(e.what()));
         return false;
@@ -524,9 +497,9 @@ void MainWindow::openDialog() {
 bool MainWindow::saveDialog(bool askName) {
     QString path = m_document->fileName();
     if (askName || path.isEmpty())
-        path =
-            chooseSaveFile(this, tr("Save scene"), QStringLiteral("scene"),
-                           sceneFileStem(m_current, m_document->fileName()), tr("Scenes (*.json)"));
+        path = chooseSaveFile(this, tr("Save scene"), QStringLiteral("scene"),
+                              sceneFileStem(m_document->scene(), m_document->fileName()),
+                              tr("Scenes (*.json)"));
     return !path.isEmpty() && saveFile(path);
 }
 
@@ -538,9 +511,9 @@ void MainWindow::exportPlotsDialog() {
 }
 
 void MainWindow::exportCsvDialog() {
-    QString path =
-        chooseSaveFile(this, tr("Export CSV"), QStringLiteral("csv"),
-                       sceneFileStem(m_current, m_document->fileName()), tr("CSV (*.csv)"));
+    QString path = chooseSaveFile(this, tr("Export CSV"), QStringLiteral("csv"),
+                                  sceneFileStem(m_document->scene(), m_document->fileName()),
+                                  tr("CSV (*.csv)"));
     if (!path.isEmpty())
         exportCsvTo(path);
 }
@@ -582,7 +555,7 @@ void MainWindow::updateTitle() {
     QString name = m_document->fileName().isEmpty() ? tr("untitled")
                                                     : QFileInfo(m_document->fileName()).fileName();
     setWindowTitle(tr("%1%2 \u2014 Chaplygin Lab")
-                       .arg(name, m_undo->isClean() ? QString() : QStringLiteral("*")));
+                       .arg(name, m_document->isModified() ? QStringLiteral("*") : QString()));
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
@@ -592,7 +565,39 @@ void MainWindow::closeEvent(QCloseEvent* e) {
     }
     if (m_useSettings)
         saveWindowLayout(this);
+    if (m_document->autosave())
+        m_document->autosave()->discard(); // a clean exit leaves nothing to restore
     e->accept();
+}
+
+bool MainWindow::offerRestore(const RestoreQuestion& restore) {
+    if (!m_document->autosave())
+        return false;
+    const std::vector<Autosave::Orphan> orphans = m_document->autosave()->orphans();
+    if (orphans.empty())
+        return false;
+    const Autosave::Orphan& newest = orphans.front();
+    const bool wanted =
+        restore ? restore(newest)
+                : QMessageBox::question(
+                      this, tr("Restore the unsaved scene?"),
+                      tr("Chaplygin Lab ended without saving the scene you were working on. A "
+                         "copy was kept at %1. Restore it?")
+                          .arg(QLocale().toString(newest.written, QLocale::LongFormat)),
+                      QMessageBox::Yes | QMessageBox::No, QMessageBox::Yes) == QMessageBox::Yes;
+    bool restored = false;
+    if (wanted) {
+        try {
+            m_document->restore(newest);
+            m_playback->seek(0);
+            m_canvas->fitScene();
+            restored = true;
+        } catch (const std::exception& e) {
+            showFileError(QString::fromStdString(e.what()));
+        }
+    }
+    Autosave::removeOrphan(newest);
+    return restored;
 }
 
 } // namespace chaplygin::ui

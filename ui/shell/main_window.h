@@ -1,9 +1,11 @@
 #pragma once
+#include "document/autosave.h"
 #include "scene/scene.h"
 #include "shell/dock_layout.h"
 
 #include <QMainWindow>
 
+#include <functional>
 #include <optional>
 
 class QAction;
@@ -32,8 +34,8 @@ class TimelineBar;
 struct AnimationSettings;
 
 /// The Chaplygin Lab window: the scene canvas in the centre, path, parameters and plots docks,
-/// the timeline toolbar, and the File, Edit, View and Help menus. Every path and parameter
-/// change goes through the undo stack.
+/// the timeline toolbar, and the File, Edit, View and Help menus. It builds the widgets and wires
+/// them to the SceneDocument, which holds the scene, its undo stack and its files.
 class MainWindow : public QMainWindow {
     Q_OBJECT
   public:
@@ -42,10 +44,10 @@ class MainWindow : public QMainWindow {
     explicit MainWindow(bool useSettings = true, QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    /// Replaces the scene as a new document (File > New, Open): clears the undo stack and
-    /// solves at once. Throws InputError when the scene does not solve.
+    /// SceneDocument::load, then the view from t = 0 with the scene fitted. Throws InputError
+    /// when the scene does not solve.
     void loadScene(const Scene& scene);
-    /// Changes the scene as one undo step (latest value wins for the recompute).
+    /// SceneDocument::edit (one undo step).
     void editScene(const Scene& scene, const QString& description, const QString& mergeKey = {});
 
     /// File operations without dialogs; each returns false and shows why on failure.
@@ -86,7 +88,7 @@ class MainWindow : public QMainWindow {
     /// Shows and raises the Methods dock.
     void showMethodsDock();
     TimelineBar* timeline() const { return m_timeline; }
-    QUndoStack* undoStack() const { return m_undo; }
+    QUndoStack* undoStack() const;
     QAction* followAction() const { return m_followAction; }
     QMenu* recentMenu() const { return m_recentMenu; }
     PresentationMode* presentation() const { return m_presentation; }
@@ -107,21 +109,28 @@ class MainWindow : public QMainWindow {
     /// The About text (version from the build, licence, credits, the paper).
     static QString aboutText();
 
+    /// After an abnormal end of an earlier run: offers the newest unsaved scene it left
+    /// (Autosave), asking `restore` (by default a dialog saying from when). A restored scene
+    /// is the document, modified, with its own file name; either way the copy is removed.
+    /// Returns whether a scene was restored.
+    using RestoreQuestion = std::function<bool(const Autosave::Orphan&)>;
+    bool offerRestore(const RestoreQuestion& restore = {});
+    /// The copy of the unsaved scene (null for tests and screenshots).
+    Autosave* autosave() const;
+
   protected:
     void closeEvent(QCloseEvent* e) override;
 
   private:
     void buildMenus();
     void rebuildRecentMenu();
-    void markSavedAs(const QString& path);
-    void applyScene(const Scene& scene);
+    /// The panels show a scene the document has applied.
+    void showScene(const Scene& scene, bool pathChanged);
     void onSolutionChanged();
     void onDocumentError(const QString& error);
     void onTime(double t);
     void choosePreset(const QString& name);
     void setPath(const PathSource& source, const QString& description, bool refit = true);
-    void onParametersEdited(const Scene& scene, const QString& description,
-                            const QString& mergeKey);
     /// Asks to save unsaved changes; false when the user cancels.
     bool maybeSave();
     void newScene();
@@ -138,7 +147,6 @@ class MainWindow : public QMainWindow {
     bool m_useSettings;
     SceneDocument* m_document;
     Playback* m_playback;
-    QUndoStack* m_undo;
     SceneCanvas* m_canvas;
     PathPanel* m_path;
     ParametersPanel* m_parameters;
@@ -158,8 +166,6 @@ class MainWindow : public QMainWindow {
     QAction* m_redoAction = nullptr;
     QAction* m_playNewScenes = nullptr;
     int m_galleryIndex = -1;
-    Scene m_current;
-    bool m_applied = false; // whether m_current has been shown yet
     QString m_lastFileError;
 };
 

@@ -149,7 +149,9 @@ def main():
         print(f"// {name}: summary a, b, m_eff, I, path_length, duration")
         print("{" + ", ".join(mp.nstr(summary[k], 20) for k in
                               ("a", "b", "m_eff", "I", "path_length", "duration")) + "},")
-        print("// rows in CSV column order")
+        print("// rows: t, s, x, y, phi, psi, chi, lambda, energy, free_x, free_y, free_phi, "
+              "free_sdot, free_phidot, free_energy, sdot, phidot, psidot, force_axial, "
+              "force_lateral, control_couple")
         for r in rows:
             print("{" + ", ".join(mp.nstr(v, 20) for v in r) + "},")
 

@@ -6,6 +6,7 @@
 #include "common/input_error.h"
 #include "control/piece_control.h"
 #include "gsl_quadrature.h"
+#include "scene/csv_columns.h"
 #include "scene/solution.h"
 
 #include <gtest/gtest.h>
@@ -13,22 +14,33 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <string_view>
 #include <vector>
 
 using namespace chaplygin;
 
 namespace {
 
-constexpr int kColumns = 15;
-using Row = std::array<double, kColumns>;
+// the reference's columns, in the order cusp_reference.py prints a row
+constexpr auto kReferenceColumns = std::to_array<std::string_view>(
+    {"t", "s", "x", "y", "phi", "psi", "chi", "lambda", "energy", "sdot", "phidot", "psidot",
+     "force_axial", "force_lateral", "control_couple"});
+using Row = std::array<double, kReferenceColumns.size()>;
+
+// the position of a column in a reference row; a name it lacks does not compile
+consteval std::size_t column(std::string_view name) {
+    for (std::size_t k = 0; k < kReferenceColumns.size(); ++k)
+        if (kReferenceColumns[k] == name)
+            return k;
+    throw "not a column of the reference";
+}
 
 struct Reference {
     const char* x;
     const char* y;
     double u0, u1, vT;
     std::array<double, 3> summary; // cusp time, duration, path length
-    std::vector<Row> rows; // t, s, x, y, phi, psi, chi, lambda, energy, sdot, phidot, psidot,
-                           // force_axial, force_lateral, control_couple
+    std::vector<Row> rows;         // kReferenceColumns
 };
 
 const std::vector<Reference>& references() {
@@ -130,28 +142,13 @@ Scene sleighOn(const char* x, const char* y, double u0, double u1, double vT) {
     return s;
 }
 
+// a sample's values of the reference's columns, read through the CSV's column table
 Row columnsOf(const MotionSample& m) {
-    const ControlState& c = m.control;
-    return {m.t,
-            m.s,
-            m.x,
-            m.y,
-            m.phi,
-            c.psi,
-            c.chi,
-            c.lambda,
-            c.energy,
-            c.sdot,
-            c.phidot,
-            c.psidot,
-            c.forceAxial,
-            c.forceLateral,
-            c.controlCouple};
+    Row row{};
+    for (std::size_t k = 0; k < kReferenceColumns.size(); ++k)
+        row[k] = csvColumns()[csvColumnIndex(kReferenceColumns[k]).value()].value(m);
+    return row;
 }
-
-const char* const kNames[kColumns] = {
-    "t",      "s",    "x",      "y",      "phi",         "psi",           "chi",           "lambda",
-    "energy", "sdot", "phidot", "psidot", "force_axial", "force_lateral", "control_couple"};
 
 } // namespace
 
@@ -161,10 +158,13 @@ TEST(Cusp, EveryControlledColumnAgreesWithTheReference) {
         EXPECT_NEAR(s.duration(), ref.summary[1], 1e-13) << ref.y;
         EXPECT_NEAR(s.path()->length(), ref.summary[2], 1e-13) << ref.y;
         for (const Row& want : ref.rows) {
-            Row got = columnsOf(s.at(std::min(want[0], s.duration())));
-            for (int q = 1; q < kColumns; ++q)
+            Row got = columnsOf(s.at(std::min(want[column("t")], s.duration())));
+            for (std::size_t q = 0; q < kReferenceColumns.size(); ++q) {
+                if (q == column("t"))
+                    continue; // the time asked for
                 EXPECT_NEAR(got[q], want[q], 1e-11 * std::max(1.0, std::fabs(want[q])))
-                    << ref.y << " at t = " << want[0] << ": " << kNames[q];
+                    << ref.y << " at t = " << want[column("t")] << ": " << kReferenceColumns[q];
+            }
         }
     }
 }
@@ -212,9 +212,12 @@ TEST(Cusp, TableNodesIncludeTheCuspWithItsLimits) {
             seen = true;
             const Row& want = ref.rows[3]; // the row at the cusp
             Row got = columnsOf(m);
-            for (int q = 1; q < kColumns; ++q)
+            for (std::size_t q = 0; q < kReferenceColumns.size(); ++q) {
+                if (q == column("t"))
+                    continue; // the time asked for
                 EXPECT_NEAR(got[q], want[q], 1e-11 * std::max(1.0, std::fabs(want[q])))
-                    << kNames[q];
+                    << kReferenceColumns[q];
+            }
         }
     }
     EXPECT_TRUE(seen);
@@ -232,11 +235,11 @@ TEST(Cusp, StateBesideTheCuspWhereTheCurvatureUnderflows) {
             PathNode n = piece.table->at(u);
             ControlState c = controlOnPiece(controlParamsOf(s.scene()), piece, n);
             const Row& want = ref.rows[3];
-            EXPECT_NEAR(c.psi, want[5], 1e-12) << u;
-            EXPECT_NEAR(c.lambda, want[7], 1e-12) << u;
-            EXPECT_NEAR(c.sdot, want[9], 1e-12) << u;
-            EXPECT_NEAR(c.phidot, want[10], 1e-12) << u;
-            EXPECT_NEAR(c.controlCouple, want[14], 1e-12) << u;
+            EXPECT_NEAR(c.psi, want[column("psi")], 1e-12) << u;
+            EXPECT_NEAR(c.lambda, want[column("lambda")], 1e-12) << u;
+            EXPECT_NEAR(c.sdot, want[column("sdot")], 1e-12) << u;
+            EXPECT_NEAR(c.phidot, want[column("phidot")], 1e-12) << u;
+            EXPECT_NEAR(c.controlCouple, want[column("control_couple")], 1e-12) << u;
         }
 }
 

@@ -1,0 +1,98 @@
+// The editing half of SceneDocument: the undo steps, loading and saving, the recent files and
+// the autosaved copy. Kept apart from the recompute in scene_document.cpp.
+#include "common/input_error.h"
+#include "document/pin_set.h"
+#include "document/scene_command.h"
+#include "document/scene_document.h"
+#include "document/scene_files.h"
+#include "systems/system.h"
+
+#include <exception>
+
+namespace chaplygin::ui {
+
+void SceneDocument::apply(const Scene& scene) {
+    // a parameter change leaves the path's views alone (with any unfinished typing in them)
+    const bool pathChanged =
+        !m_applied || scene.path != m_scene.path || scene.preset != m_scene.preset;
+    m_applied = true;
+    setScene(scene);
+    emit sceneApplied(scene, pathChanged);
+}
+
+void SceneDocument::load(const Scene& scene) {
+    check(scene); // a scene that does not solve never replaces the current one
+    PinSet::check(*this, scene);
+    m_undo->clear();
+    apply(scene);
+    flush();
+}
+
+void SceneDocument::edit(const Scene& scene, const QString& description, const QString& mergeKey) {
+    if (m_applied && scene == m_scene)
+        return;
+    m_undo->push(new SceneCommand(
+        description, m_scene, scene, [this](const Scene& s) { apply(s); }, mergeKey));
+}
+
+QString SceneDocument::editParameters(const Scene& scene, const QString& description,
+                                      const QString& mergeKey) {
+    try {
+        deriveSystem(scene.system);
+    } catch (const InputError& e) {
+        return QString::fromStdString(e.what());
+    }
+    edit(scene, description, mergeKey);
+    return {};
+}
+
+void SceneDocument::markSavedAs(const QString& path) {
+    setFileName(path);
+    m_undo->setClean();
+    if (m_persistent) {
+        addRecentFile(path);
+        emit recentFilesChanged();
+    }
+}
+
+void SceneDocument::open(const QString& path) {
+    load(openSceneFile(path));
+    markSavedAs(path);
+}
+
+void SceneDocument::save(const QString& path) {
+    flush();
+    if (!m_error.isEmpty())
+        throw InputError(
+            tr("cannot save '%1'").arg(path).toStdString(),
+            tr("the scene does not solve (%1); fix it or undo first").arg(m_error).toStdString());
+    saveSceneFile(path, m_scene);
+    markSavedAs(path);
+}
+
+void SceneDocument::exportCsv(const QString& path) const {
+    exportCsvFile(path, *m_solution);
+}
+
+QStringList SceneDocument::recentFiles() const {
+    return m_persistent ? chaplygin::ui::recentFiles() : QStringList();
+}
+
+void SceneDocument::restore(const Autosave::Orphan& orphan) {
+    load(Autosave::readOrphan(orphan));
+    setFileName(orphan.fileName);
+    m_undo->resetClean();
+    keepCopy();
+}
+
+// the copy on disk follows the modified state: written after a change, gone when clean
+void SceneDocument::keepCopy() {
+    if (!m_autosave)
+        return;
+    if (m_undo->isClean())
+        m_autosave->discard();
+    else
+        m_autosave->sceneChanged(m_scene, m_fileName);
+}
+
+} // namespace chaplygin::ui
