@@ -1,6 +1,7 @@
 #include "desktop_entry.h"
 
 #include "canvas/scene_canvas.h"
+#include "common/atomic_file.h"
 #include "common/input_error.h"
 #include "document/scene_document.h"
 #include "headless_options.h"
@@ -25,6 +26,9 @@
 #include <QFile>
 #include <QIcon>
 #include <QImage>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLocale>
 #include <QMessageBox>
 #include <QPixmap>
@@ -75,6 +79,8 @@ struct ScreenshotOptions {
     std::string dock;          ///< --panel notes|equations: raise that dock
     bool presentation = false; ///< --presentation: presentation mode at the given size
     std::string language;      ///< --language en|pt_BR: that catalogue instead of the system's
+    std::string viewReport;    ///< --view-report FILE.json: the canvas's place and map
+    std::optional<BodyDisplay> body; ///< --body scale|outline|marker
     Scene scene;
 };
 
@@ -134,12 +140,41 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
     }
     if (auto size = given.value("--size"))
         std::tie(o.width, o.height) = readWindowSize(*size);
+    o.viewReport = given.value("--view-report").value_or("");
+    if (auto body = given.value("--body")) {
+        if (*body == "scale")
+            o.body = BodyDisplay::ToScale;
+        else if (*body == "outline")
+            o.body = BodyDisplay::Outline;
+        else if (*body == "marker")
+            o.body = BodyDisplay::Marker;
+        else
+            throw InputError("--body", "expected scale, outline or marker, got '" + *body + "'");
+    }
     o.scene = sceneOf(given);
     if (auto sweep = given.value("--sweep")) {
         o.sweep = parseSweepSpec(*sweep);
         validateSweep(o.scene, *o.sweep);
     }
     return o;
+}
+
+// the contract of tests that look at pixels (docs/architecture.md, ui/: the desktop
+// application, Screenshot mode): where the canvas is in the image and its metres-to-pixels map
+void writeViewReport(const std::string& file, MainWindow& window, const QImage& image) {
+    const SceneCanvas* canvas = window.canvas();
+    // the image's pixels per widget pixel (the device pixel ratio of the grab)
+    const double k = image.width() / double(std::max(window.width(), 1));
+    const QPoint corner = canvas->mapTo(&window, QPoint(0, 0));
+    const QPointF origin = canvas->worldToPixel().map(QPointF(0, 0)) + QPointF(corner);
+    const QJsonObject rect{{"x", k * corner.x()},
+                           {"y", k * corner.y()},
+                           {"width", k * canvas->width()},
+                           {"height", k * canvas->height()}};
+    const QJsonObject report{{"canvas", rect},
+                             {"scale", k * canvas->scale()},
+                             {"origin", QJsonArray{k * origin.x(), k * origin.y()}}};
+    writeFileAtomically(file, QJsonDocument(report).toJson().toStdString());
 }
 
 int renderScreenshot(const ScreenshotOptions& o) {
@@ -184,6 +219,12 @@ int renderScreenshot(const ScreenshotOptions& o) {
         dock->show();
         dock->raise();
     }
+    if (o.body) {
+        // this picture only: the saved choice stays
+        CanvasStyle style = window.canvas()->canvasStyle();
+        style.body = *o.body;
+        window.canvas()->setCanvasStyle(style);
+    }
     QCoreApplication::processEvents();
     window.canvas()->fitScene();
     window.playback()->seek(o.at);
@@ -195,6 +236,8 @@ int renderScreenshot(const ScreenshotOptions& o) {
         std::fprintf(stderr, "chaplygin-lab: cannot write the screenshot '%s'\n", o.file.c_str());
         return 1;
     }
+    if (!o.viewReport.empty())
+        writeViewReport(o.viewReport, window, image);
     return 0;
 }
 

@@ -2,6 +2,7 @@
 
 #include "common/input_error.h"
 #include "option_table.h"
+#include "scene/perturbation.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
 
@@ -162,6 +163,33 @@ Scene baseScene(const OptionValues& given) {
     return s;
 }
 
+// --perturb NAME=VALUE, --feedback-rate and --feedback-limit on top of the scene's perturbation
+// (docs/physics.md §9)
+void applyPerturbation(const OptionValues& given, Scene& s) {
+    const std::vector<std::string> perturb = given.values("--perturb");
+    const auto rate = given.value("--feedback-rate"), limit = given.value("--feedback-limit");
+    if (perturb.empty() && !s.perturbation) {
+        if (rate || limit)
+            throw InputError(rate ? "--feedback-rate" : "--feedback-limit",
+                             "applies only to a perturbed scene (give --perturb NAME=VALUE)");
+        return;
+    }
+    Perturbation p = s.perturbation.value_or(Perturbation{});
+    for (const std::string& v : perturb) {
+        auto eq = v.find('=');
+        if (eq == std::string::npos || eq == 0)
+            throw InputError("--perturb", "expects NAME=VALUE, e.g. dy=0.1, got '" + v + "'");
+        const std::string name = trim(v.substr(0, eq));
+        setPerturbationField(p, name, parseNumber(trim(v.substr(eq + 1)), "--perturb " + name));
+    }
+    if (rate)
+        setPerturbationField(p, "feedback_rate", parseNumber(*rate, "--feedback-rate"));
+    if (limit)
+        setPerturbationField(p, "feedback_limit", parseNumber(*limit, "--feedback-limit"));
+    checkPerturbation(p);
+    s.perturbation = p;
+}
+
 // --corners, --system, --param, --mode, --vT/--vs and --t-end on top of the base scene
 void applyOverrides(const OptionValues& given, Scene& s) {
     if (auto corners = given.value("--corners")) {
@@ -202,6 +230,7 @@ void applyOverrides(const OptionValues& given, Scene& s) {
         s.speed = parseNumber(*vS, "--vs");
     if (auto tEnd = given.value("--t-end"))
         s.tEnd = parseNumber(*tEnd, "--t-end");
+    applyPerturbation(given, s);
 }
 
 std::vector<double> parseTimes(const std::string& text) {
@@ -332,6 +361,14 @@ InputError withOptionNames(const InputError& error, SpeedMode mode) {
         option = "--" + field;
     else if (field == "scene_file")
         option = "--scene";
+    else if (field == "perturbation feedback_rate")
+        option = "--feedback-rate";
+    else if (field == "perturbation feedback_limit")
+        option = "--feedback-limit";
+    else if (field == "perturbation")
+        option = "--perturb";
+    else if (field.rfind("perturbation ", 0) == 0)
+        option = "--perturb " + field.substr(std::string("perturbation ").size());
     else
         return error;
     std::string message = error.what();

@@ -32,6 +32,14 @@ constexpr std::array kOptions = {
                .help = "the dock raised (methods computes the work-precision diagram;\n"
                        "sweep runs --sweep)",
                .modes = Screenshot, .section = S::Screenshot},
+    OptionSpec{.name = "--view-report", .argument = "FILE.json",
+               .help = "also write the canvas's rectangle in the screenshot's pixels and\n"
+                       "its map: pixel = origin + scale (x, -y), scale in px/m",
+               .modes = Screenshot, .section = S::Screenshot},
+    OptionSpec{.name = "--body", .argument = "scale|outline|marker",
+               .help = "the bodies to scale, as outlines or as markers (default: the\n"
+                       "saved choice)",
+               .modes = Screenshot, .section = S::Screenshot},
     OptionSpec{.name = "--language", .argument = "en|pt_BR",
                .help = "that catalogue instead of the system's (exit 2 when it is not\n"
                        "installed)",
@@ -76,6 +84,18 @@ constexpr std::array kOptions = {
                .modes = kAllModes, .section = S::System},
     OptionSpec{.name = "--t-end", .argument = "T",
                .help = "horizon [s]; default: time to traverse the path",
+               .modes = kAllModes, .section = S::System},
+    OptionSpec{.name = "--perturb", .argument = "NAME=VALUE",
+               .help = "repeatable; a perturbed body beside the controlled one, open loop\n"
+                       "and with feedback: dy [m, left], dphi, dpsi [rad] at t = 0; a push\n"
+                       "t_push [s] with push_psi [rad] or push_dy [m]; controller_b [m]\n"
+                       "(constant-energy mode; CSV columns pert_* and fb_*)",
+               .modes = kAllModes, .section = S::System, .repeatable = true},
+    OptionSpec{.name = "--feedback-rate", .argument = "P",
+               .help = "the feedback's triple pole at -P in path length [1/m] (default 1)",
+               .modes = kAllModes, .section = S::System},
+    OptionSpec{.name = "--feedback-limit", .argument = "PSIDOT_MAX",
+               .help = "the feedback's bound on |Psidot| [rad/s] (default none)",
                .modes = kAllModes, .section = S::System},
     OptionSpec{.name = "--headless", .argument = "",
                .help = "run without a window and write what the options below ask for\n"

@@ -141,4 +141,19 @@ inline void evaluateMany(const std::array<std::array<double, Q>, N>& c, double x
     evaluateMany(c.data(), rows, x, out);
 }
 
+/// d/dx of series q (the first `rows` coefficients of c[k][q]): sum k c_k U_{k-1}(x), by
+/// Clenshaw's recurrence for the Chebyshev polynomials of the second kind.
+template <std::size_t Q>
+inline double derivativeOne(const std::array<double, Q>* c, std::size_t q, double x,
+                            std::size_t rows) {
+    double b1 = 0, b2 = 0;
+    const double x2 = 2 * x;
+    for (std::size_t j = rows - 1; j >= 1; --j) {
+        double b = (static_cast<double>(j) * c[j][q] - b2) + x2 * b1;
+        b2 = b1;
+        b1 = b;
+    }
+    return b1;
+}
+
 } // namespace chaplygin::cheb

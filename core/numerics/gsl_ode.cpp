@@ -162,4 +162,75 @@ std::vector<OdeValue> gslValuesAt(const OdeProblem& problem, GslStepper stepper,
     return out;
 }
 
+GslSteps integrateGslSteps(const OdeProblem& problem, GslStepper stepper, double t0,
+                           const double* y0, double t1, double tolerance,
+                           const std::function<void(double, const double*)>& accepted) {
+    const int n = problem.dimension();
+    GslSteps out;
+    gsl::OdeAdapter adapter{&problem, &out.work};
+    gsl_odeiv2_system sys{&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian,
+                          static_cast<std::size_t>(n), &adapter};
+    gsl::ensureErrorHandlerOff();
+    double h = (t1 - t0) * std::min(0.1, std::pow(tolerance, 0.25));
+    DriverPtr driver(gsl_odeiv2_driver_alloc_standard_new(&sys, stepType(stepper), h, tolerance,
+                                                          tolerance, 1.0, 0.0));
+    if (!driver)
+        throw std::runtime_error("gsl_odeiv2_driver_alloc failed");
+    OdeValue y{}, f{};
+    std::copy_n(y0, n, y.begin());
+    double t = t0;
+    problem.rhs(t, y.data(), f.data());
+    ++out.work.rhsEvals;
+    const auto keep = [&] {
+        out.t.push_back(t);
+        out.y.push_back(y);
+        out.f.push_back(f);
+        if (accepted)
+            accepted(t, y.data());
+    };
+    keep();
+    gsl_odeiv2_driver* d = driver.get();
+    while (t < t1) {
+        int status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, &sys, &t, t1, &h, y.data());
+        if (status != GSL_SUCCESS)
+            throw std::runtime_error(gslStepperName(stepper) + ": " + gsl_strerror(status) +
+                                     " at t = " + std::to_string(t));
+        std::copy_n(d->e->dydt_out, n, f.begin());
+        keep();
+        if (out.work.rhsEvals > 50'000'000)
+            throw std::runtime_error(gslStepperName(stepper) + ": too many steps");
+    }
+    out.work.steps = static_cast<long>(d->e->count);
+    out.work.rejected = static_cast<long>(d->e->failed_steps);
+    return out;
+}
+
+void gslStepFrom(const OdeProblem& problem, GslStepper stepper, const GslSteps& steps, double t,
+                 double* out) {
+    if (stepper == GslStepper::MsAdams || stepper == GslStepper::MsBdf)
+        throw std::invalid_argument("gslStepFrom: explicit steppers only");
+    const int n = problem.dimension();
+    auto it = std::upper_bound(steps.t.begin(), steps.t.end(), t);
+    const std::size_t k =
+        it == steps.t.begin() ? 0 : static_cast<std::size_t>(it - steps.t.begin()) - 1;
+    const double tk = steps.t[k];
+    std::copy_n(steps.y[k].data(), n, out);
+    if (t <= tk)
+        return;
+    OdeWork work;
+    gsl::OdeAdapter adapter{&problem, &work};
+    gsl_odeiv2_system sys{&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian,
+                          static_cast<std::size_t>(n), &adapter};
+    gsl::ensureErrorHandlerOff();
+    StepPtr step(gsl_odeiv2_step_alloc(stepType(stepper), static_cast<std::size_t>(n)));
+    if (!step)
+        throw std::runtime_error("gsl_odeiv2_step_alloc failed");
+    OdeValue err{}, dydt = steps.f[k];
+    int status =
+        gsl_odeiv2_step_apply(step.get(), tk, t - tk, out, err.data(), dydt.data(), nullptr, &sys);
+    if (status != GSL_SUCCESS)
+        throw std::runtime_error(gslStepperName(stepper) + ": step to t = " + std::to_string(t) +
+                                 " failed");
+}
+
 } // namespace chaplygin

@@ -2,6 +2,7 @@
 #include "numerics/dense_output.h"
 #include "numerics/ode_problem.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -40,5 +41,23 @@ OdeWork integrateGslFixed(const OdeProblem& problem, GslStepper stepper, double 
 /// a step without their history).
 std::vector<OdeValue> gslValuesAt(const OdeProblem& problem, GslStepper stepper, GslSolve& solve,
                                   const std::vector<double>& times);
+
+/// The accepted steps of a free run (t, y and f = y' at each), for problems without a Jacobian:
+/// a value between them is one step of the method from the last step before it (gslStepFrom).
+struct GslSteps {
+    std::vector<double> t;
+    std::vector<OdeValue> y, f;
+    OdeWork work;
+};
+/// Integrates freely from (t0, y0) to t1 as integrateGsl does, keeping the accepted steps only.
+/// `accepted`, when given, sees every accepted (t, y) and may throw to stop the run.
+GslSteps integrateGslSteps(const OdeProblem& problem, GslStepper stepper, double t0,
+                           const double* y0, double t1, double tolerance,
+                           const std::function<void(double, const double*)>& accepted = {});
+/// y(t) into out for t in [steps.t.front(), steps.t.back()]: one step of an explicit stepper
+/// (Rk4, Rkf45, Rkck, Rk8pd) from the last accepted step at or before t, so the value has the
+/// method's own order. Thread-safe (its stepper is its own).
+void gslStepFrom(const OdeProblem& problem, GslStepper stepper, const GslSteps& steps, double t,
+                 double* out);
 
 } // namespace chaplygin

@@ -7,7 +7,7 @@ namespace chaplygin {
 namespace {
 
 // One line per column, in CSV order (docs/physics.md §2 for the control, §4 for the free body,
-// §8 for the genuine vakonomic body). A new column is one more line.
+// §8 for the genuine vakonomic body, §9 for the perturbed ones). A new column is one more line.
 constexpr CsvColumn kColumns[] = {
     {"t", "s", "time", [](auto& m) { return m.t; }},
     {"s", "m", "distance travelled along the path", [](auto& m) { return m.s; }},
@@ -36,12 +36,47 @@ constexpr CsvColumn kColumns[] = {
     {"vak_sdot", "m/s", "vakonomic body's speed", [](auto& m) { return m.vak.sdot; }},
     {"vak_phidot", "rad/s", "vakonomic body's turning rate", [](auto& m) { return m.vak.phidot; }},
     {"vak_lambda", "kg m/s", "vakonomic λ = λ_c − m a φ̇", [](auto& m) { return m.vak.lambda; }},
+    {"pert_x", "m", "open-loop perturbed body's P, x", [](auto& m) { return m.pert.x; }, true},
+    {"pert_y", "m", "open-loop perturbed body's P, y", [](auto& m) { return m.pert.y; }, true},
+    {"pert_phi", "rad", "open-loop perturbed body's heading", [](auto& m) { return m.pert.phi; },
+     true},
+    {"pert_sdot", "m/s", "open-loop perturbed body's speed", [](auto& m) { return m.pert.sdot; },
+     true},
+    {"pert_phidot", "rad/s", "open-loop perturbed body's turning rate",
+     [](auto& m) { return m.pert.phidot; }, true},
+    {"fb_x", "m", "feedback body's P, x", [](auto& m) { return m.fb.x; }, true},
+    {"fb_y", "m", "feedback body's P, y", [](auto& m) { return m.fb.y; }, true},
+    {"fb_phi", "rad", "feedback body's heading", [](auto& m) { return m.fb.phi; }, true},
+    {"fb_sdot", "m/s", "feedback body's speed", [](auto& m) { return m.fb.sdot; }, true},
+    {"fb_phidot", "rad/s", "feedback body's turning rate", [](auto& m) { return m.fb.phidot; },
+     true},
+    {"fb_lambda", "kg m/s", "feedback body's control λ = m (b Ψ̇ − a φ̇)",
+     [](auto& m) { return m.fb.lambda; }, true},
+    {"fb_error", "m", "feedback body's lateral error e (left of the path > 0)",
+     [](auto& m) { return m.fb.error; }, true},
 };
+
+// the perturbed bodies' columns come last, so the columns written are a prefix
+constexpr std::size_t unperturbedCount() {
+    std::size_t n = 0;
+    while (n < std::size(kColumns) && !kColumns[n].perturbed)
+        ++n;
+    for (std::size_t i = n; i < std::size(kColumns); ++i)
+        if (!kColumns[i].perturbed)
+            return 0;
+    return n;
+}
+static_assert(unperturbedCount() > 0, "the perturbed bodies' columns must come last");
 
 } // namespace
 
 std::span<const CsvColumn> csvColumns() {
     return kColumns;
+}
+
+std::span<const CsvColumn> csvColumnsWritten(bool perturbed) {
+    return perturbed ? std::span<const CsvColumn>(kColumns)
+                     : std::span<const CsvColumn>(kColumns, unperturbedCount());
 }
 
 std::optional<std::size_t> csvColumnIndex(std::string_view name) {

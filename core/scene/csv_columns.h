@@ -15,10 +15,15 @@ struct CsvColumn {
     std::string_view unit;    ///< "s", "m", "rad", "m/s", "rad/s", "J", "N", "N m", "kg m/s"
     std::string_view meaning; ///< one line, no '|' (the README's table shows it)
     double (*value)(const MotionSample&);
+    bool perturbed = false; ///< written only for a scene with a perturbation (docs/physics.md §9)
 };
 
 /// The columns in CSV order: the one table the header, every row and the README's list come from.
 std::span<const CsvColumn> csvColumns();
+
+/// The columns written for rows of a scene with or without a perturbation: without one the
+/// perturbed bodies' columns (the last ones) are left out.
+std::span<const CsvColumn> csvColumnsWritten(bool perturbed);
 
 /// The position of the column called NAME in csvColumns(), or nothing.
 std::optional<std::size_t> csvColumnIndex(std::string_view name);

@@ -7,7 +7,8 @@
 namespace chaplygin {
 
 std::string formatCsv(const std::vector<MotionSample>& rows) {
-    const std::span<const CsvColumn> columns = csvColumns();
+    const std::span<const CsvColumn> columns =
+        csvColumnsWritten(!rows.empty() && rows.front().perturbed);
     std::string out;
     for (std::size_t i = 0; i < columns.size(); ++i) {
         if (i)

@@ -48,6 +48,23 @@ constexpr std::size_t kMaxPinnedRuns = 5;
 /// A scene's note is at most this many bytes (UTF-8).
 constexpr std::size_t kMaxNoteBytes = 100000;
 
+/// A push given to the perturbed bodies, or their initial offset from the controlled motion
+/// (docs/physics.md §9). Both bodies, the open loop (the nominal lambda(t) as a signal) and the
+/// closed loop (chained-form feedback), start from the controlled state at t = 0 moved by these.
+struct Perturbation {
+    double dy = 0;               ///< lateral offset of P to the left of the start tangent [m]
+    double dphi = 0;             ///< heading offset [rad]
+    double dpsi = 0;             ///< control angle offset, Psi(0) + dpsi at the same energy [rad]
+    std::optional<double> tPush; ///< time of the push [s]
+    double pushPsi = 0;          ///< the push's jump of Psi [rad]
+    double pushDy = 0;           ///< the push's jump of P to the left of the heading [m]
+    double feedbackRate = 1;     ///< P of the triple pole at -P in path length [1/m]
+    std::optional<double> feedbackLimit; ///< bound on |Psidot| [rad/s]
+    std::optional<double> controllerB; ///< the b the controller assumes [m] (default: the plant's)
+
+    bool operator==(const Perturbation&) const = default;
+};
+
 /// Everything that defines a scene: plain data with defaults, saved and loaded as JSON,
 /// shared by the GUI, the CLI and the tests.
 struct Scene {
@@ -57,6 +74,7 @@ struct Scene {
     SpeedMode mode = SpeedMode::Energy;
     double speed = 1.0;         ///< v_T (Energy) or v_s (Speed) [m/s]
     std::optional<double> tEnd; ///< horizon [s]; default: the time to traverse the path
+    std::optional<Perturbation> perturbation; ///< the perturbed bodies, when given
 
     VectorOverlay vectors;       ///< arrows drawn on the bodies (view only)
     std::string note;            ///< the lecturer's Markdown note (view only)

@@ -1,10 +1,12 @@
 #include "scene/scene_json.h"
 
 #include "common/input_error.h"
+#include "scene/perturbation.h"
 #include "scene/pinned_runs.h"
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -240,6 +242,31 @@ VectorOverlay readVectors(const json& v) {
     return o;
 }
 
+// "perturbation": {NAME: VALUE} (docs/physics.md §9); a bad field is named by its JSON path
+Perturbation readPerturbation(const json& v) {
+    object(v, "/perturbation");
+    Perturbation p;
+    for (auto it = v.begin(); it != v.end(); ++it) {
+        const std::string at = "/perturbation/" + it.key();
+        const double value = number(it.value(), at);
+        try {
+            setPerturbationField(p, it.key(), value);
+        } catch (const InputError& e) {
+            const std::string message = e.what();
+            bad(e.where() == "perturbation" ? std::string("/perturbation") : at,
+                message.substr(std::min(message.size(), e.where().size() + 2)));
+        }
+    }
+    try {
+        checkPerturbation(p);
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        bad("/perturbation/" + e.where().substr(std::string("perturbation ").size()),
+            message.substr(std::min(message.size(), e.where().size() + 2)));
+    }
+    return p;
+}
+
 } // namespace
 
 std::string sceneToJson(const Scene& scene) {
@@ -249,6 +276,12 @@ std::string sceneToJson(const Scene& scene) {
     if (!scene.preset.empty())
         j["preset"] = scene.preset;
     writeRun(j, pinOf(scene));
+    if (scene.perturbation) {
+        json p = json::object();
+        for (const auto& [name, value] : perturbationFields(*scene.perturbation))
+            p[name] = value;
+        j["perturbation"] = p;
+    }
     if (scene.vectors != VectorOverlay{}) {
         json v = json::object();
         for (const VectorKey& k : kVectorKeys) {
@@ -314,6 +347,8 @@ Scene sceneFromJson(const std::string& text) {
     s.mode = run.mode;
     s.speed = run.speed;
     s.tEnd = run.tEnd;
+    if (auto it = j.find("perturbation"); it != j.end())
+        s.perturbation = readPerturbation(*it);
     if (auto it = j.find("vectors"); it != j.end())
         s.vectors = readVectors(*it);
     if (auto it = j.find("note"); it != j.end()) {

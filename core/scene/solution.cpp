@@ -3,9 +3,11 @@
 #include "common/input_error.h"
 #include "control/piece_control.h"
 #include "numerics/chebyshev.h"
+#include "scene/perturbation.h"
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace chaplygin {
 namespace {
@@ -85,6 +87,39 @@ std::string interpolationModel(const Path& path) {
     return out;
 }
 
+// the scene's perturbation checked against its path, mode and horizon (docs/physics.md §9)
+PerturbationSpec perturbationSpec(const Perturbation& p, const Path& path,
+                                  const ControlParams& params, double tEnd) {
+    if (params.mode != SpeedMode::Energy)
+        throw InputError("perturbation", "perturbations need constant-energy mode");
+    if (path.pieces().size() != 1 || path.pieces().front().kind != PathPiece::Kind::Curve ||
+        path.pieces().front().direction != 1)
+        throw InputError("perturbation",
+                         "perturbations need a smooth path without corners or cusps");
+    checkPerturbation(p);
+    if (p.tPush && !(*p.tPush < tEnd))
+        throw InputError("perturbation t_push",
+                         formatNumber(*p.tPush) +
+                             " s is not before the horizon t_end = " + formatNumber(tEnd) + " s");
+    const PathNode n = path.start();
+    const double psi0 = controlOnCurve(params, n.kappa, n.dkappa, n.phi).psi;
+    if (!(psi0 + p.dpsi > 0 && psi0 + p.dpsi < std::numbers::pi))
+        throw InputError("perturbation dpsi",
+                         "Psi(0) + dpsi = " + formatNumber(psi0 + p.dpsi) +
+                             " rad leaves (0, pi): the body would not move forward");
+    PerturbationSpec spec;
+    spec.dy = p.dy;
+    spec.dphi = p.dphi;
+    spec.dpsi = p.dpsi;
+    spec.tPush = p.tPush;
+    spec.pushPsi = p.pushPsi;
+    spec.pushDy = p.pushDy;
+    spec.rate = p.feedbackRate;
+    spec.psiLimit = p.feedbackLimit;
+    spec.controllerB = p.controllerB.value_or(params.system.b);
+    return spec;
+}
+
 } // namespace
 
 ControlParams controlParamsOf(const Scene& scene) {
@@ -147,6 +182,19 @@ Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,
     m_models.freeVelocity = m_free.velocityModel();
     m_models.freePosition = m_free.positionModel();
     m_models.vakonomic = m_vak.model();
+    if (scene.perturbation) {
+        const PerturbationSpec spec =
+            perturbationSpec(*scene.perturbation, *m_path, params, m_tEnd);
+        const PathPiece& piece = m_path->pieces().front();
+        auto nominal = std::make_shared<const NominalControl>(m_path, m_timeLaw, params);
+        const PathFrame frame(piece.table, piece.phiOffset);
+        m_open = std::make_shared<const PerturbedMotion>(PerturbedMotion::Kind::OpenLoop, nominal,
+                                                         frame, spec, m_tEnd);
+        m_feedback = std::make_shared<const PerturbedMotion>(PerturbedMotion::Kind::Feedback,
+                                                             nominal, frame, spec, m_tEnd);
+        m_models.perturbed = m_open->model();
+        m_models.feedback = m_feedback->model();
+    }
 }
 
 void Solution::pivotAt(const PathPiece& piece, double t, double sinceStart,
@@ -184,6 +232,11 @@ MotionSample Solution::at(double t) const {
     controlledAt(t, m);
     m.free = m_free.at(t);
     m.vak = m_vak.at(t);
+    if (m_open) {
+        m.perturbed = true;
+        m.pert = m_open->at(t);
+        m.fb = m_feedback->at(t);
+    }
     return m;
 }
 

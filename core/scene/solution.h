@@ -1,6 +1,7 @@
 #pragma once
 #include "control/control_law.h"
 #include "motion/free_motion.h"
+#include "motion/perturbed_motion.h"
 #include "motion/time_law.h"
 #include "motion/vakonomic_motion.h"
 #include "paths/path.h"
@@ -17,8 +18,11 @@ struct MotionSample {
     double t = 0;
     double s = 0, x = 0, y = 0, phi = 0, kappa = 0; ///< controlled body: knife point P, heading
     ControlState control;
-    FreeState free;     ///< free (Lagrange-d'Alembert) body from the same initial state
-    VakonomicState vak; ///< genuine vakonomic body from the same state and lambda(0)
+    FreeState free;         ///< free (Lagrange-d'Alembert) body from the same initial state
+    VakonomicState vak;     ///< genuine vakonomic body from the same state and lambda(0)
+    bool perturbed = false; ///< the scene has a perturbation: pert and fb are filled in
+    PerturbedState pert;    ///< perturbed body under the nominal lambda(t) (open loop)
+    PerturbedState fb;      ///< perturbed body under the feedback (closed loop)
 };
 
 /// Which model or method produced each quantity (shown by the GUI, written to --summary).
@@ -30,6 +34,8 @@ struct ModelReport {
     std::string freeVelocity; ///< free sdot, phidot, phi
     std::string freePosition; ///< free x, y
     std::string vakonomic;    ///< the genuine vakonomic body
+    std::string perturbed;    ///< the open-loop perturbed body (empty without a perturbation)
+    std::string feedback;     ///< the closed-loop perturbed body (empty without a perturbation)
 };
 
 /// The control parameters of a scene: its system's (m_eff, a, b), mode and speed.
@@ -61,6 +67,10 @@ class Solution {
     /// The genuine vakonomic body alone at t.
     VakonomicState vakonomicAt(double t) const { return m_vak.at(t); }
     const FreeMotion& freeMotion() const { return m_free; }
+    /// Whether the scene has a perturbation, and its two bodies (docs/physics.md §9).
+    bool perturbed() const { return m_open != nullptr; }
+    const PerturbedMotion* openLoop() const { return m_open.get(); }
+    const PerturbedMotion* feedback() const { return m_feedback.get(); }
     /// count samples evenly spaced on [0, tEnd] (count >= 2).
     std::vector<MotionSample> sample(int count) const;
     std::vector<MotionSample> sampleAt(const std::vector<double>& times) const;
@@ -80,6 +90,7 @@ class Solution {
     FreeMotion m_free;
     VakonomicMotion m_vak;
     double m_tEnd = 0;
+    std::shared_ptr<const PerturbedMotion> m_open, m_feedback; // with a perturbation only
     ModelReport m_models;
 };
 

@@ -35,6 +35,11 @@ std::string formatSummary(const Solution& solution) {
                    {"free_velocity", m.freeVelocity},
                    {"free_position", m.freePosition},
                    {"vakonomic", m.vakonomic}};
+    if (solution.perturbed()) {
+        // the two perturbed bodies' integrator and tolerance (docs/physics.md §9)
+        j["models"]["perturbed"] = m.perturbed;
+        j["models"]["feedback"] = m.feedback;
+    }
     return j.dump(2) + "\n";
 }
 

@@ -180,6 +180,29 @@ BENCHMARK(BM_AnimationFrame)
     ->Args({1, 0, 1, 1920, 1})
     ->Unit(benchmark::kMillisecond);
 
+// one zoom step on the canvas (wheel or +/-): the static layer and every trail drawn anew at
+// the new scale; zoom 1 at the fitted view, 20 twenty times closer
+void BM_ZoomStep(benchmark::State& state) {
+    MainWindow window(false);
+    sizeWindow(window, state.range(0));
+    window.show();
+    QCoreApplication::processEvents();
+    showEverything(window);
+    window.canvas()->setTime(5);
+    window.canvas()->zoomBy(double(state.range(1)));
+    QCoreApplication::processEvents();
+    bool in = true;
+    for (auto _ : state) {
+        window.canvas()->zoomBy(in ? 1.1 : 1 / 1.1);
+        in = !in;
+        window.canvas()->repaint();
+    }
+}
+BENCHMARK(BM_ZoomStep)
+    ->ArgNames({"width", "zoom"})
+    ->ArgsProduct({{1280, 1920}, {1, 20}})
+    ->Unit(benchmark::kMillisecond);
+
 // the breakdown of a frame: the canvas alone, the plots' cursor alone
 void BM_StageFrameCanvas(benchmark::State& state) {
     MainWindow window(false);

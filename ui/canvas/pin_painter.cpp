@@ -1,6 +1,7 @@
 #include "canvas/pin_painter.h"
 
 #include "canvas/body_painter.h"
+#include "canvas/curve_flattening.h"
 #include "document/pin_set.h"
 
 #include <QPainter>
@@ -11,12 +12,8 @@
 
 namespace chaplygin::ui {
 
-namespace {
-constexpr double kMinStepPx = 1.0;
-} // namespace
-
-void paintPinnedRuns(QPainter& p, PinSet& pins, const QTransform& world, double t,
-                     QPointF topLeft) {
+void paintPinnedRuns(QPainter& p, PinSet& pins, CanvasCurves& curves, const QTransform& world,
+                     double t, QPointF topLeft) {
     const int n = pins.count();
     if (n == 0)
         return;
@@ -39,16 +36,13 @@ void paintPinnedRuns(QPainter& p, PinSet& pins, const QTransform& world, double 
         pen.setCapStyle(Qt::RoundCap);
         pen.setJoinStyle(Qt::RoundJoin);
         p.setPen(pen);
-        // the trail up to t, like the live body's: the lengths show which run is ahead. Points
-        // closer than a pixel to the last one kept add nothing but drawing time.
+        // the trail up to t, like the live body's: the lengths show which run is ahead; along
+        // its path flattened at this scale, up to its arc length now
+        const FlatCurve& path = curves.pinnedPath(run.solution);
         QPolygonF line;
-        for (int k = 0; k < run.series.x.size() && run.series.t[k] <= t; ++k) {
-            QPointF q = world.map(QPointF(run.series.x[k], run.series.y[k]));
-            if (line.isEmpty() ||
-                std::fabs(q.x() - line.back().x()) + std::fabs(q.y() - line.back().y()) >=
-                    kMinStepPx)
-                line << q;
-        }
+        const std::size_t count = path.countUpTo(m.s);
+        for (std::size_t k = 0; k < count; ++k)
+            line << world.map(path.points[k]);
         line << world.map(QPointF(m.x, m.y));
         p.drawPolyline(line);
         p.save();

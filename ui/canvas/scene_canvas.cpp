@@ -42,6 +42,11 @@ QTransform SceneCanvas::worldTransform() const {
     return t;
 }
 
+const CanvasCurves& SceneCanvas::curves() const {
+    m_curves.update(m_document->solution(), m_scale * devicePixelRatioF());
+    return m_curves;
+}
+
 QPointF SceneCanvas::toPixel(QPointF world) const {
     return worldTransform().map(world);
 }

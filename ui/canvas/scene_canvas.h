@@ -1,6 +1,7 @@
 #pragma once
 #include "canvas/body_sprites.h"
 #include "canvas/canvas_style.h"
+#include "canvas/curve_flattening.h"
 #include "canvas/vector_layer.h"
 #include "paths/path_source.h"
 #include "scene/solution.h"
@@ -8,6 +9,7 @@
 #include <QPixmap>
 
 #include <QImage>
+#include <QPen>
 #include <QPointF>
 #include <QWidget>
 
@@ -37,6 +39,11 @@ class SceneCanvas : public QWidget {
     /// World point (metres) <-> widget pixel.
     QPointF toPixel(QPointF world) const;
     QPointF toWorld(QPointF pixel) const;
+    /// The metres-to-pixels map: pixel = transform.map(world), y up in the world.
+    QTransform worldToPixel() const { return worldTransform(); }
+    /// Every curve drawn, flattened at the current scale (docs/architecture.md, ui/: the desktop
+    /// application, Canvas).
+    const CanvasCurves& curves() const;
 
     QSize sizeHint() const override { return {800, 500}; }
     /// The arrows of View > Vectors as last painted.
@@ -87,6 +94,16 @@ class SceneCanvas : public QWidget {
     void paintGrid(QPainter& p, const QTransform& world, const QRectF& area) const;
     void paintScaleBar(QPainter& p) const;
     void paintPath(QPainter& p, const QTransform& world) const;
+    /// A trail to draw: its flattened curve up to the parameter `limit` (time, or arc length for
+    /// the controlled body), then its end now.
+    struct Trail {
+        const FlatCurve* curve;
+        double limit;
+        QPointF end;
+        bool byArcLength;
+        QPen pen;
+    };
+    std::vector<Trail> trails(const MotionSample& now) const;
     /// The trails up to now, as far as they reach area [px].
     void paintTrails(QPainter& p, const MotionSample& now, const QRegion& area) const;
     void paintLegend(QPainter& p) const;
@@ -164,6 +181,7 @@ class SceneCanvas : public QWidget {
     double m_trailsTime = 0;
     VectorLayer m_vectors;
     BodySprites m_bodies;
+    mutable CanvasCurves m_curves;
     CanvasStyle m_style;
     bool m_legendVisible = true;
     int topBandPx() const;

@@ -85,26 +85,49 @@ void SceneCanvas::paintScaleBar(QPainter& p) const {
 
 void SceneCanvas::paintPath(QPainter& p, const QTransform& world) const {
     const auto& solution = m_document->solution();
-    for (const PathPiece& piece : solution->path()->pieces()) {
-        if (piece.kind == PathPiece::Kind::Pivot) {
-            p.setPen(m_style.pen(QColor(120, 60, 160), 1.5));
-            p.setBrush(Qt::NoBrush);
-            p.drawEllipse(world.map(QPointF{piece.x, piece.y}), 5, 5);
-            continue;
-        }
-        const auto& nodes = piece.table->nodes();
-        for (std::size_t i = 1; i < nodes.size(); ++i) {
-            // a wide pale band, so that the trail on top of it stays visible
-            QPen pen =
-                m_style.pen(m_style.highContrast
-                                ? m_style.path()
-                                : pale(curvatureColor(0.5 * (nodes[i - 1].kappa + nodes[i].kappa))),
-                            6);
+    // a wide pale band, so that the trail on top of it stays visible: one polyline per run of
+    // one colour, through the flattened curve
+    const FlatCurve& flat = curves().path();
+    auto colourOf = [&](std::size_t i) {
+        if (m_style.highContrast)
+            return m_style.path().rgb();
+        const double kappa = 0.5 * (flat.kappa[i - 1] + flat.kappa[i]);
+        return pale(curvatureColor(std::isnan(kappa) ? 0 : kappa)).rgb();
+    };
+    QPolygonF run;
+    QRgb runColour = 0;
+    auto flush = [&] {
+        if (run.size() > 1) {
+            QPen pen = m_style.pen(QColor(runColour), 6);
             pen.setCapStyle(Qt::FlatCap);
             p.setPen(pen);
-            p.drawLine(world.map(QPointF{nodes[i - 1].x, nodes[i - 1].y}),
-                       world.map(QPointF{nodes[i].x, nodes[i].y}));
+            p.drawPolyline(run);
         }
+        run.clear();
+    };
+    for (std::size_t i = 1; i < flat.points.size(); ++i) {
+        const QRgb c = colourOf(i);
+        if (c != runColour || run.isEmpty()) {
+            flush();
+            for (const PathPiece& piece : solution->path()->pieces()) {
+                if (piece.kind != PathPiece::Kind::Pivot)
+                    continue;
+                p.setPen(m_style.pen(QColor(120, 60, 160), 1.5));
+                p.setBrush(Qt::NoBrush);
+                p.drawEllipse(world.map(QPointF{piece.x, piece.y}), 5, 5);
+            }
+            runColour = c;
+            run << world.map(flat.points[i - 1]);
+        }
+        run << world.map(flat.points[i]);
+    }
+    flush();
+    for (const PathPiece& piece : solution->path()->pieces()) {
+        if (piece.kind != PathPiece::Kind::Pivot)
+            continue;
+        p.setPen(m_style.pen(QColor(120, 60, 160), 1.5));
+        p.setBrush(Qt::NoBrush);
+        p.drawEllipse(world.map(QPointF{piece.x, piece.y}), 5, 5);
     }
     // start (filled) and end (open) of the path
     const Path& path = *solution->path();

@@ -16,52 +16,67 @@
 // and the time read-out
 namespace chaplygin::ui {
 
-void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now, const QRegion& area) const {
-    const PlotSeries& s = m_document->series();
-    auto trail = [&](const QVector<double>& t, const QVector<double>& x, const QVector<double>& y,
-                     QPointF end, const QPen& pen) {
-        QPolygonF line;
-        for (int i = 0; i < t.size() && t[i] <= m_time; ++i)
-            line << toPixel({x[i], y[i]});
-        line << toPixel(end);
-        // a frame repaints a small area: only the segments near it are stroked
-        strokePolylineWithin(p, line, pen, area);
-    };
+std::vector<SceneCanvas::Trail> SceneCanvas::trails(const MotionSample& now) const {
+    // the curves flattened at this scale, each up to now (docs/architecture.md, ui/: the desktop
+    // application, Canvas): the controlled body runs along the path, up to its arc length
+    const CanvasCurves& c = curves();
     QColor free = m_style.free();
     free.setAlpha(m_style.highContrast ? 255 : 150);
-    double w = m_style.trailWidth;
-    trail(s.freeT, s.freeX, s.freeY, {now.free.x, now.free.y},
-          m_style.pen(free, std::max(0.75 * w, 1.5), Qt::DashLine));
-    trail(s.t, s.x, s.y, {now.x, now.y}, m_style.pen(m_style.controlled().darker(150), w));
+    const double w = m_style.trailWidth;
+    std::vector<Trail> out;
+    out.push_back({&c.free(),
+                   m_time,
+                   {now.free.x, now.free.y},
+                   false,
+                   m_style.pen(free, std::max(0.75 * w, 1.5), Qt::DashLine)});
+    out.push_back(
+        {&c.path(), now.s, {now.x, now.y}, true, m_style.pen(m_style.controlled().darker(150), w)});
     if (m_showVakonomic)
-        trail(s.vakT, s.vakX, s.vakY, {now.vak.x, now.vak.y},
-              m_style.pen(m_style.vakonomic(), std::max(0.75 * w, 1.5), Qt::DashDotLine));
+        out.push_back({&c.vakonomic(),
+                       m_time,
+                       {now.vak.x, now.vak.y},
+                       false,
+                       m_style.pen(m_style.vakonomic(), std::max(0.75 * w, 1.5), Qt::DashDotLine)});
+    return out;
+}
+
+void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now, const QRegion& area) const {
+    const QTransform world = worldTransform();
+    for (const Trail& trail : trails(now)) {
+        const FlatCurve& curve = *trail.curve;
+        QPolygonF line;
+        const std::size_t n = curve.countUpTo(trail.limit);
+        line.reserve(qsizetype(n) + 1);
+        for (std::size_t i = 0; i < n; ++i)
+            line << world.map(curve.points[i]);
+        line << world.map(trail.end);
+        // a frame repaints a small area: only the segments near it are stroked
+        strokePolylineWithin(p, line, trail.pen, area);
+    }
 }
 
 std::vector<QRectF> SceneCanvas::trailEndsBounds(const MotionSample& now, double from) const {
     const QTransform world = worldTransform();
     std::vector<QRectF> boxes;
     const double pad = 2 * std::max(m_style.trailWidth, 1.5) * m_style.lineScale + 3;
-    const PlotSeries& s = m_document->series();
-    auto trail = [&](const QVector<double>& t, const QVector<double>& x, const QVector<double>& y,
-                     double endX, double endY) {
+    // the controlled trail's parameter is the arc length: where the body was at `from`
+    const double since = std::min(from, m_time);
+    const double sinceS = since < m_time ? m_document->solution()->at(since).s : now.s;
+    for (const Trail& trail : trails(now)) {
+        const FlatCurve& curve = *trail.curve;
         QRectF box;
-        auto point = [&](double px, double py) {
-            QPointF c = world.map(QPointF(px, py));
+        auto point = [&](QPointF q) {
+            QPointF c = world.map(q);
             QRectF r(c.x() - pad, c.y() - pad, 2 * pad, 2 * pad);
             box = box.isNull() ? r : box.united(r);
         };
-        auto after = std::upper_bound(t.begin(), t.end(), std::min(from, m_time));
-        for (auto i = std::max<qsizetype>(after - t.begin() - 1, 0);
-             i < std::min({t.size(), x.size(), y.size()}) && t[i] <= m_time; ++i)
-            point(x[i], y[i]);
-        point(endX, endY);
+        const std::size_t first = curve.countUpTo(trail.byArcLength ? sinceS : since);
+        const std::size_t last = curve.countUpTo(trail.limit);
+        for (std::size_t i = first > 0 ? first - 1 : 0; i < last; ++i)
+            point(curve.points[i]);
+        point(trail.end);
         boxes.push_back(box);
-    };
-    trail(s.t, s.x, s.y, now.x, now.y);
-    trail(s.freeT, s.freeX, s.freeY, now.free.x, now.free.y);
-    if (m_showVakonomic)
-        trail(s.vakT, s.vakX, s.vakY, now.vak.x, now.vak.y);
+    }
     return boxes;
 }
 
@@ -181,7 +196,9 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
     if (solution) {
         p.save();
         p.setClipRect(drawingArea());
-        paintPinnedRuns(p, *PinSet::of(m_document), worldTransform(), m_time, QPointF(10, 42));
+        curves(); // at this scale, for the pins too
+        paintPinnedRuns(p, *PinSet::of(m_document), m_curves, worldTransform(), m_time,
+                        QPointF(10, 42));
         const SystemSpec& spec = solution->scene().system;
         const QTransform world = worldTransform();
         // the translucent ghost on top, so that both stay visible where they overlap

@@ -53,6 +53,7 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
         installPlotExportMenu(
             plot, [i] { return plotFileStem(kKinds[i]); },
             [this](const QString& error) { emit exportFailed(error); });
+        installFitAllAction(plot);
     }
     connect(document, &SceneDocument::solutionChanged, this, &PlotsPanel::refresh);
 }

@@ -92,3 +92,72 @@ TEST(GalleryScenes, LongHorizonStaysFiniteAndOnTheEnergyLevel) {
         EXPECT_NE(std::fpclassify(m.free.phidot), FP_SUBNORMAL);
     }
 }
+
+namespace {
+
+// the distance from (x, y) to y = -sin x, by a scan and golden refinement near x
+double distanceToSinusoid(double x, double y) {
+    double best = 1e300, at = x;
+    for (double u = x - 6; u <= x + 6; u += 1e-3) {
+        const double d = std::hypot(x - u, y + std::sin(u));
+        if (d < best) {
+            best = d;
+            at = u;
+        }
+    }
+    double lo = at - 1e-3, hi = at + 1e-3;
+    const auto d = [&](double u) { return std::hypot(x - u, y + std::sin(u)); };
+    for (int i = 0; i < 100; ++i) {
+        const double c = lo + (hi - lo) / 3, e = hi - (hi - lo) / 3;
+        (d(c) < d(e) ? hi : lo) = d(c) < d(e) ? e : c;
+    }
+    return d(0.5 * (lo + hi));
+}
+
+} // namespace
+
+// docs/physics.md §9: the push leaves the open loop's chi off by push_psi for ever, so it drifts;
+// the feedback brings the body back
+TEST(GalleryScenes, PushedOffThePathOpenLoopDriftsFeedbackReturns) {
+    const Solution s = Solution::compute(galleryEntry("pushed-off-path").scene);
+    const MotionSample end = s.at(s.tEnd());
+    EXPECT_GT(distanceToSinusoid(end.pert.x, end.pert.y), 2.0);
+    EXPECT_LT(std::fabs(end.fb.error), 1e-3);
+    // before the end (beyond it the frame continues along the osculating line, not the sinusoid)
+    const MotionSample before = s.at(0.9 * s.tEnd());
+    EXPECT_NEAR(distanceToSinusoid(before.fb.x, before.fb.y), std::fabs(before.fb.error), 1e-9);
+    EXPECT_NEAR(s.at(2.9).fb.error, 0, 1e-12); // nothing before the push at t = 3
+}
+
+// a controller b below the plant's scales the body's turning, the feedforward included: the error
+// never settles on the sinusoid, while the right b corrects it
+TEST(GalleryScenes, WrongControllerBNeverSettles) {
+    Scene scene = galleryEntry("wrong-controller-b").scene;
+    const Solution wrong = Solution::compute(scene);
+    double late = 0;
+    for (const MotionSample& m : wrong.sample(401))
+        if (m.t > 0.75 * wrong.tEnd())
+            late = std::max(late, std::fabs(m.fb.error));
+    EXPECT_GT(late, 0.1);
+    scene.perturbation->controllerB.reset();
+    EXPECT_LT(std::fabs(Solution::compute(scene).at(wrong.tEnd()).fb.error), 1e-3);
+}
+
+// the |Psidot| bound makes the triple pole overshoot; a little more rate and it is lost
+TEST(GalleryScenes, AggressiveFeedbackOvershootsAndAtP3IsLost) {
+    Scene scene = galleryEntry("aggressive-feedback").scene;
+    const Solution s = Solution::compute(scene);
+    double lowest = 0;
+    for (const MotionSample& m : s.sample(801))
+        lowest = std::min(lowest, m.fb.error);
+    EXPECT_LT(lowest, -0.15);
+    EXPECT_LT(std::fabs(s.at(s.tEnd()).fb.error), 1e-6);
+    scene.perturbation->feedbackRate = 3;
+    try {
+        Solution::compute(scene);
+        ADD_FAILURE() << "P = 3 with |Psidot| <= 0.4 was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("leaves the chained form's domain"), std::string::npos)
+            << e.what();
+    }
+}

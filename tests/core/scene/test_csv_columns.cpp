@@ -83,22 +83,55 @@ TEST(CsvColumns, IndexFindsEveryColumnByItsName) {
 }
 
 TEST(CsvColumns, TheHeaderAndEveryRowAreTheTable) {
-    const Solution solution = Solution::compute(presetScene("sinusoid"));
-    const std::vector<MotionSample> samples = solution.sample(7);
-    const std::vector<std::string> csv = lines(formatCsv(samples));
-    ASSERT_EQ(csv.size(), samples.size() + 1);
-    const auto columns = csvColumns();
-    const std::vector<std::string> header = split(csv[0]);
-    ASSERT_EQ(header.size(), columns.size()) << csv[0];
-    for (std::size_t i = 0; i < columns.size(); ++i)
-        EXPECT_EQ(header[i], columns[i].name);
-    // shortest round-trip digits: each field reads back as the accessor's value exactly
-    for (std::size_t r = 0; r < samples.size(); ++r) {
-        const std::vector<std::string> fields = split(csv[r + 1]);
-        ASSERT_EQ(fields.size(), columns.size()) << csv[r + 1];
+    Scene perturbed = presetScene("sinusoid");
+    perturbed.perturbation = Perturbation{};
+    perturbed.perturbation->dy = 0.1;
+    for (const Scene& scene : {presetScene("sinusoid"), perturbed}) {
+        const Solution solution = Solution::compute(scene);
+        const std::vector<MotionSample> samples = solution.sample(7);
+        const std::vector<std::string> csv = lines(formatCsv(samples));
+        ASSERT_EQ(csv.size(), samples.size() + 1);
+        const auto columns = csvColumnsWritten(scene.perturbation.has_value());
+        const std::vector<std::string> header = split(csv[0]);
+        ASSERT_EQ(header.size(), columns.size()) << csv[0];
         for (std::size_t i = 0; i < columns.size(); ++i)
-            EXPECT_EQ(std::strtod(fields[i].c_str(), nullptr), columns[i].value(samples[r]))
-                << columns[i].name << " at t = " << samples[r].t;
+            EXPECT_EQ(header[i], columns[i].name);
+        // shortest round-trip digits: each field reads back as the accessor's value exactly
+        for (std::size_t r = 0; r < samples.size(); ++r) {
+            const std::vector<std::string> fields = split(csv[r + 1]);
+            ASSERT_EQ(fields.size(), columns.size()) << csv[r + 1];
+            for (std::size_t i = 0; i < columns.size(); ++i)
+                EXPECT_EQ(std::strtod(fields[i].c_str(), nullptr), columns[i].value(samples[r]))
+                    << columns[i].name << " at t = " << samples[r].t;
+        }
+    }
+}
+
+// docs/physics.md §9: the perturbed bodies' columns come after today's, and only when the scene
+// has a perturbation; without one the header is the 27 columns it was, and the shared columns of a
+// perturbed scene are the unperturbed scene's, byte for byte
+TEST(CsvColumns, PerturbedColumnsOnlyWithAPerturbation) {
+    const std::string today =
+        "t,s,x,y,phi,psi,chi,lambda,energy,free_x,free_y,free_phi,free_sdot,free_phidot,"
+        "free_energy,sdot,phidot,psidot,force_axial,force_lateral,control_couple,vak_x,vak_y,"
+        "vak_phi,vak_sdot,vak_phidot,vak_lambda";
+    const std::string added = ",pert_x,pert_y,pert_phi,pert_sdot,pert_phidot,fb_x,fb_y,fb_phi,"
+                              "fb_sdot,fb_phidot,fb_lambda,fb_error";
+    Scene scene = presetScene("circle");
+    const std::vector<std::string> plain = lines(formatCsv(Solution::compute(scene).sample(9)));
+    EXPECT_EQ(plain[0], today);
+    EXPECT_EQ(csvColumnsWritten(false).size(), 27u);
+    scene.perturbation = Perturbation{};
+    scene.perturbation->dpsi = 0.1;
+    const std::vector<std::string> withBodies =
+        lines(formatCsv(Solution::compute(scene).sample(9)));
+    EXPECT_EQ(withBodies[0], today + added);
+    ASSERT_EQ(withBodies.size(), plain.size());
+    for (std::size_t r = 1; r < plain.size(); ++r) {
+        std::string prefix = withBodies[r];
+        for (int i = 0; i < 12; ++i)
+            prefix.resize(prefix.rfind(','));
+        EXPECT_EQ(prefix, plain[r]) << "row " << r;
     }
 }
 

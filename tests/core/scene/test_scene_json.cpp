@@ -196,3 +196,59 @@ TEST(PinnedRuns, LabelNamesWhatDiffers) {
     EXPECT_EQ(back.system, current.system);
     EXPECT_TRUE(back.pins.empty());
 }
+
+// docs/physics.md §9: the optional "perturbation" object
+TEST(SceneJson, PerturbationRoundTripsAndOldFilesLoadWithout) {
+    Scene s = presetScene("circle");
+    const std::string old = sceneToJson(s);
+    EXPECT_EQ(old.find("perturbation"), std::string::npos);
+    EXPECT_EQ(sceneFromJson(old).perturbation, std::nullopt);
+    Perturbation p;
+    p.dy = 0.3;
+    p.dphi = -0.1;
+    p.dpsi = 0.05;
+    p.tPush = 4;
+    p.pushPsi = 0.2;
+    p.pushDy = -0.05;
+    p.feedbackRate = 2.5;
+    p.feedbackLimit = 0.4;
+    p.controllerB = 0.7;
+    s.perturbation = p;
+    EXPECT_EQ(sceneFromJson(sceneToJson(s)), s);
+    s.perturbation = Perturbation{};
+    s.perturbation->dy = 1e-5;
+    EXPECT_EQ(sceneFromJson(sceneToJson(s)), s);
+}
+
+TEST(SceneJson, BadPerturbationsNameTheirField) {
+    std::string base = sceneToJson(presetScene("line"));
+    base.resize(base.rfind('}'));
+    const auto with = [&](const std::string& p) { return base + ", \"perturbation\": " + p + "}"; };
+    EXPECT_NE(
+        errorOf(with("{\"dy\": \"1\"}")).find("scene file /perturbation/dy: must be a number"),
+        std::string::npos)
+        << errorOf(with("{\"dy\": \"1\"}"));
+    EXPECT_NE(errorOf(with("[1]")).find("scene file /perturbation: must be an object"),
+              std::string::npos);
+    EXPECT_NE(errorOf(with("{\"dz\": 1}")).find("scene file /perturbation: unknown field 'dz'"),
+              std::string::npos)
+        << errorOf(with("{\"dz\": 1}"));
+    EXPECT_NE(errorOf(with("{\"feedback_rate\": 0}"))
+                  .find("scene file /perturbation/feedback_rate: must be > 0 1/m, got 0"),
+              std::string::npos)
+        << errorOf(with("{\"feedback_rate\": 0}"));
+    EXPECT_NE(errorOf(with("{\"feedback_limit\": -1}")).find("/perturbation/feedback_limit"),
+              std::string::npos);
+    EXPECT_NE(errorOf(with("{\"controller_b\": 0}")).find("/perturbation/controller_b"),
+              std::string::npos);
+    EXPECT_NE(errorOf(with("{\"dphi\": 2}")).find("/perturbation/dphi: must be less than pi/2"),
+              std::string::npos);
+    EXPECT_NE(errorOf(with("{\"t_push\": -1, \"push_psi\": 0.1}")).find("/perturbation/t_push"),
+              std::string::npos);
+    EXPECT_NE(errorOf(with("{\"push_dy\": 0.1}"))
+                  .find("/perturbation/push_dy: a push needs its time t_push"),
+              std::string::npos)
+        << errorOf(with("{\"push_dy\": 0.1}"));
+    EXPECT_NE(errorOf(with("{\"t_push\": 1}")).find("/perturbation/t_push: needs a push"),
+              std::string::npos);
+}

@@ -363,7 +363,7 @@ TEST_P(SystemsColumnsReference, EverySummaryFieldAndColumn) {
     for (const Row& r : reference.rows) {
         ASSERT_TRUE(std::getline(csv, line));
         const std::vector<double> fields = csvFields(line);
-        ASSERT_EQ(fields.size(), csvColumns().size()) << line;
+        ASSERT_EQ(fields.size(), csvColumnsWritten(false).size()) << line;
         for (std::size_t k = 0; k < kReferenceColumns.size(); ++k) {
             const std::optional<std::size_t> c = csvColumnIndex(kReferenceColumns[k]);
             ASSERT_TRUE(c) << kReferenceColumns[k];

@@ -158,6 +158,48 @@ BENCHMARK_CAPTURE(BM_RebuildTimeLaw, sinusoid, std::string("sinusoid"))
 BENCHMARK_CAPTURE(BM_RebuildTimeLaw, line, std::string("line"))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_RebuildTimeLaw, circle, std::string("circle"))->Unit(benchmark::kMicrosecond);
 
+// a parameter change with the perturbed bodies on (docs/physics.md §9): Solution::compute on the
+// tabulated path, both bodies integrated by rk8pd; arg 0 is the same scene without a perturbation
+Scene perturbedScene(const std::string& name) {
+    Scene s = presetScene(name == "long_circle" ? "circle" : name);
+    if (name == "long_circle")
+        s.path.to = 30;
+    s.perturbation = Perturbation{};
+    s.perturbation->dy = 0.3;
+    return s;
+}
+void BM_RecomputePerturbed(benchmark::State& state, std::string name) {
+    Scene s = perturbedScene(name);
+    if (state.range(0) == 0)
+        s.perturbation.reset();
+    auto path = buildPath(s.path);
+    long rhs = 0;
+    for (auto _ : state) {
+        s.system.params["b"] = 1 + 1e-9 * static_cast<double>(state.iterations() % 2);
+        const Solution sol = Solution::compute(s, path);
+        if (sol.perturbed())
+            rhs = sol.openLoop()->work().rhsEvals + sol.feedback()->work().rhsEvals;
+        benchmark::DoNotOptimize(sol.duration());
+    }
+    state.counters["rhs_evals"] = static_cast<double>(rhs);
+}
+BENCHMARK_CAPTURE(BM_RecomputePerturbed, line, std::string("line"))
+    ->Arg(1)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_RecomputePerturbed, circle, std::string("circle"))
+    ->Arg(1)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_RecomputePerturbed, long_circle, std::string("long_circle"))
+    ->Arg(1)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_RecomputePerturbed, sinusoid, std::string("sinusoid"))
+    ->Arg(1)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond);
+
 // the free motion's parameter-dependent part (FreeMotion over the catenary's 10 s)
 void BM_RebuildFreeMotion(benchmark::State& state) {
     const MethodCase& c = catenary();

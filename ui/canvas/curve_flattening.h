@@ -1,0 +1,57 @@
+#pragma once
+#include "scene/solution.h"
+
+#include <QPointF>
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace chaplygin::ui {
+
+/// A curve flattened for the screen: world points [m] in order with the parameter at each (arc
+/// length or time, non-decreasing) and, for a path, the curvature there.
+struct FlatCurve {
+    std::vector<double> param;
+    std::vector<QPointF> points;
+    std::vector<double> kappa; ///< a path's only
+    /// How many points have param <= limit.
+    std::size_t countUpTo(double limit) const;
+};
+
+/// Appends f on (a, b] to out: the chord [a, b] is halved while the curve's midpoint lies more
+/// than tolerance [m] from the chord's midpoint, to at most maxDepth halvings.
+void flattenInto(FlatCurve& out, const std::function<QPointF(double)>& f, double a, double b,
+                 QPointF fa, QPointF fb, double tolerance, int maxDepth = 16);
+
+/// The path's curve pieces from their interpolants (the same evaluation as the body's pose),
+/// seeded at the panel ends; param is the arc length from the path's start. A pivot is one point.
+FlatCurve flattenPath(const Path& path, double tolerance);
+
+/// f over [0, tEnd] seeded at `seeds` evenly spaced times; param is the time.
+FlatCurve flattenInTime(const std::function<QPointF(double)>& f, double tEnd, double tolerance,
+                        int seeds = 400);
+
+/// Every curve the canvas draws, flattened to kTolerancePx device pixels at one scale (docs/
+/// architecture.md, ui/: the desktop application, Canvas): made anew when the solution or the
+/// scale changes, and for each pinned run on first use at that scale.
+class CanvasCurves {
+  public:
+    static constexpr double kTolerancePx = 0.25;
+    /// devicePxPerMetre: the canvas's scale times its device pixel ratio.
+    void update(const std::shared_ptr<const Solution>& solution, double devicePxPerMetre);
+    const FlatCurve& path() const { return m_path; }
+    const FlatCurve& free() const { return m_free; }
+    const FlatCurve& vakonomic() const { return m_vak; }
+    /// A pinned run's path, flattened at the current scale.
+    const FlatCurve& pinnedPath(const std::shared_ptr<const Solution>& run);
+
+  private:
+    std::shared_ptr<const Solution> m_solution;
+    double m_scale = 0;
+    FlatCurve m_path, m_free, m_vak;
+    std::map<const Solution*, std::pair<std::shared_ptr<const Solution>, FlatCurve>> m_pins;
+};
+
+} // namespace chaplygin::ui
