@@ -21,7 +21,7 @@ import sys
 
 SCAN_DIRS = ("core", "ui", "app", "tests", "resources", "scripts")
 EXTENSIONS = (".cpp", ".h", ".md", ".txt", ".json", ".ts", ".py", ".sh", ".cmake", ".in")
-# tests/ui/test_help.cpp asks the help window for a document that does not exist
+# tests/ui/shell/test_help.cpp asks the help window for a document that does not exist
 DELIBERATELY_MISSING = {"no-such.md"}
 
 HEADING = re.compile(r"^(#{1,6})[ \t]+(.*?)[ \t]*#*[ \t]*$")

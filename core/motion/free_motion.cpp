@@ -269,6 +269,11 @@ FreeState FreeMotion::at(double t) const {
     if (!interpolated)
         velocities(t, &st.sdot, &st.phidot, &st.phi);
     st.energy = 0.5 * m_sys.mass * (st.sdot * st.sdot + m_sys.b * m_sys.b * st.phidot * st.phidot);
+    st.psi = std::atan2(st.sdot, m_sys.b * st.phidot);
+    // backing up on a right turn Psi leaves (pi/2, pi) above pi, continuously (docs/physics.md §4)
+    if (std::signbit(st.phidot) && st.psi < 0)
+        st.psi += 2 * std::numbers::pi;
+    st.chi = st.psi - (m_sys.a / m_sys.b) * st.phi;
     return st;
 }
 

@@ -18,6 +18,10 @@ struct FreeInitial {
 struct FreeState {
     double x = 0, y = 0, phi = 0, sdot = 0, phidot = 0;
     double energy = 0; ///< T = (m/2)(sdot^2 + b^2 phidot^2) [J]
+    /// The free body's control angle and chi (docs/physics.md §4): (sdot, b phidot) =
+    /// V (sin psi, cos psi), psi in (-pi/2, pi/2) turning left and (pi/2, 3pi/2) turning right,
+    /// continuous; chi = psi - (a/b) phi, constant since its lambda is 0.
+    double psi = 0, chi = 0;
 };
 
 /// The free (Lagrange-d'Alembert / Neimark-Fufaev) sleigh, paper (D12)-(D15):

@@ -1,5 +1,5 @@
 #pragma once
-#include "plots/plot_series.h"
+#include "document/plot_series.h"
 #include "scene/scene.h"
 #include "scene/solution.h"
 

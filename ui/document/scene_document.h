@@ -1,6 +1,6 @@
 #pragma once
 #include "document/autosave.h"
-#include "plots/plot_series.h"
+#include "document/plot_series.h"
 #include "scene/scene.h"
 #include "scene/solution.h"
 

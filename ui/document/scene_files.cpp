@@ -2,7 +2,7 @@
 
 #include "common/atomic_file.h"
 #include "common/input_error.h"
-#include "plots/plot_series.h"
+#include "document/plot_series.h"
 #include "scene/csv_writer.h"
 #include "scene/scene_json.h"
 

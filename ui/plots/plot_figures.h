@@ -1,6 +1,6 @@
 #pragma once
 #include "canvas/canvas_style.h"
-#include "plots/plot_series.h"
+#include "document/plot_series.h"
 
 #include <QString>
 

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <complex>
+#include <numbers>
 
 using namespace chaplygin;
 
@@ -125,6 +126,78 @@ TEST(FreeMotion, StartsFromTheControlledState) {
     EXPECT_NEAR(start.free.sdot, start.control.sdot, 1e-15);
     EXPECT_NEAR(start.free.phidot, start.control.phidot, 1e-15);
     EXPECT_NEAR(start.free.energy, start.control.energy, 1e-15);
+}
+
+// The free body's Psi and chi (docs/physics.md §4) against their definitions, computed here from
+// its own sdot, phidot, phi and from the path it starts on: (sdot, b phidot) = V (sin Psi, cos
+// Psi), Psi(0) = atan2(1, b kappa0) of the control law, chi = Psi - (a/b) phi, constant (lambda =
+// 0); and Psi against the closed form tan Psi = sigma sinh(kt + c), with V, k, c from the start.
+TEST(FreeMotion, ControlAngleAndChiFollowTheirDefinitions) {
+    Solution sol = Solution::compute(presetScene("catenary"));
+    const DerivedSystem& sys = sol.system();
+    MotionSample start = sol.at(0);
+    const FreeState& f0 = start.free;
+    double psi0 = std::atan2(1.0, sys.b * start.kappa);
+    double chi0 = psi0 - sys.a / sys.b * start.phi;
+    EXPECT_NEAR(f0.psi, psi0, 1e-14);
+    EXPECT_NEAR(f0.psi, start.control.psi, 1e-14);
+    EXPECT_NEAR(f0.chi, chi0, 1e-14);
+    EXPECT_NEAR(f0.chi, start.control.chi, 1e-14);
+
+    double v = std::hypot(f0.sdot, sys.b * f0.phidot), k = sys.a * v / (sys.b * sys.b);
+    double c = std::asinh(f0.sdot / (sys.b * std::fabs(f0.phidot)));
+    double sigma = f0.phidot > 0 ? 1 : -1;
+    ASSERT_LT(sigma, 0); // the catenary turns clockwise: Psi in (pi/2, pi)
+    ASSERT_GT(sol.tEnd(), 4);
+    for (int i = 0; i <= 200; ++i) {
+        double t = sol.tEnd() * i / 200;
+        FreeState f = sol.freeAt(t);
+        EXPECT_NEAR(v * std::sin(f.psi), f.sdot, 1e-14 * v) << "t = " << t;
+        EXPECT_NEAR(v * std::cos(f.psi), sys.b * f.phidot, 1e-14 * v) << "t = " << t;
+        EXPECT_NEAR(f.chi, f.psi - sys.a / sys.b * f.phi, 1e-14) << "t = " << t;
+        EXPECT_NEAR(f.chi, chi0, 1e-12) << "t = " << t;
+        double gd = 2 * std::atan(std::tanh(0.5 * (k * t + c)));
+        EXPECT_NEAR(f.psi, sigma > 0 ? gd : std::numbers::pi - gd, 1e-13) << "t = " << t;
+    }
+}
+
+// Where sdot changes sign (a < 0, or a start backing up), Psi follows the closed form's branch,
+// gd(kt + c) turning left and pi - gd(kt + c) turning right, without a jump, and chi stays
+// constant.
+TEST(FreeMotion, ControlAngleContinuousWhileBackingUp) {
+    struct Case {
+        DerivedSystem sys;
+        FreeInitial init;
+    };
+    const Case cases[] = {
+        {{1.0, -0.4, 0.9}, {1, 1, 0.2, 0.5, -0.8}},  // right turn, ends backing up
+        {{1.0, -0.4, 0.9}, {1, 1, 0.2, 0.5, 0.8}},   // left turn, ends backing up
+        {{2.0, 0.3, 0.7}, {0, 0, -1.0, -0.4, -1.3}}, // right turn, starts backing up
+    };
+    for (const Case& k : cases) {
+        const DerivedSystem& sys = k.sys;
+        const FreeInitial& i0 = k.init;
+        FreeMotion free(sys, i0, 40);
+        double v = std::hypot(i0.sdot, sys.b * i0.phidot), rate = sys.a * v / (sys.b * sys.b);
+        double c = std::asinh(i0.sdot / (sys.b * std::fabs(i0.phidot)));
+        double sigma = i0.phidot > 0 ? 1 : -1;
+        auto psi = [&](double t) {
+            double gd = 2 * std::atan(std::tanh(0.5 * (rate * t + c)));
+            return sigma > 0 ? gd : std::numbers::pi - gd;
+        };
+        double chi0 = psi(0) - sys.a / sys.b * i0.phi;
+        ASSERT_LT(free.at(0).sdot * free.at(40).sdot, 0) << "sdot changes sign";
+        double before = free.at(0).psi;
+        for (int j = 0; j <= 400; ++j) {
+            double t = 40.0 * j / 400;
+            FreeState f = free.at(t);
+            EXPECT_NEAR(f.psi, psi(t), 1e-12) << "t = " << t;
+            EXPECT_NEAR(v * std::sin(f.psi), f.sdot, 1e-14 * v) << "t = " << t;
+            EXPECT_NEAR(f.chi, chi0, 1e-11) << "t = " << t;
+            EXPECT_LT(std::fabs(f.psi - before), 0.2) << "t = " << t;
+            before = f.psi;
+        }
+    }
 }
 
 // The two ill-conditioned cases, tiny offset (b/a = 1e9) and tiny initial curvature (kappa0 = 1e-7

@@ -1,7 +1,8 @@
-#include "plots/plot_series.h"
+#include "document/plot_series.h"
 
 #include <QCoreApplication>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -22,7 +23,6 @@ PlotSeries collectSeries(const Solution& solution, int freeSamples, int exactSam
         p.lambda << m.control.lambda;
         p.energy << m.control.energy;
     }
-    const DerivedSystem& sys = solution.system();
     freeSamples = std::max(freeSamples, 2);
     for (int i = 0; i < freeSamples; ++i) {
         double t = p.tEnd * i / (freeSamples - 1);
@@ -30,10 +30,8 @@ PlotSeries collectSeries(const Solution& solution, int freeSamples, int exactSam
         p.freeT << t;
         p.freeX << f.x;
         p.freeY << f.y;
-        // the free sleigh's control angle: (sdot, b phidot) = V (sin Psi, cos Psi)
-        double psi = std::atan2(f.sdot, sys.b * f.phidot);
-        p.freePsi << psi;
-        p.freeChi << psi - (sys.a / sys.b) * f.phi;
+        p.freePsi << f.psi;
+        p.freeChi << f.chi;
         p.freeEnergy << f.energy;
         VakonomicState v = solution.vakonomicAt(t);
         p.vakT << t;
