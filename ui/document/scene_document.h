@@ -24,8 +24,8 @@ namespace chaplygin::ui {
 
 /// The open scene and its latest valid Solution, shared by every view, and everything that
 /// changes it: the undo stack and its edits, loading and saving, the modified state, the recent
-/// files and the autosaved copy (docs/architecture.md, The flow of a scene). Scene changes are
-/// coalesced: setScene() only marks the document dirty, and one recompute runs with the latest
+/// files and the autosaved copy (docs/architecture.md, ui/: the desktop application). Scene changes
+/// are coalesced: setScene() only marks the document dirty, and one recompute runs with the latest
 /// scene on the next turn of the event loop, at most one per 16 ms frame while a slider moves. A
 /// scene that fails leaves the last valid Solution in place and reports the InputError.
 class SceneDocument : public QObject {
