@@ -303,10 +303,6 @@
         <translation>Exportar este gráfico…</translation>
     </message>
     <message>
-        <source>Fit all curves</source>
-        <translation>Enquadrar todas as curvas</translation>
-    </message>
-    <message>
         <source>Export the plot</source>
         <translation>Exportar o gráfico</translation>
     </message>

@@ -53,11 +53,10 @@ void addPinnedSeries(QCustomPlot& plot, PlotKind kind, PinSet& pins) {
         QColor c = PinSet::color(i);
         c.setAlpha(170);
         g->setPen(QPen(c, 1.5));
-        g->setProperty("chaplyginControlled", true); // a controlled run: it sets the range
+        g->rescaleAxes(true);
         if (legend)
             g->addToLegend(legend);
     }
-    fitTimeAxes(*rect);
     // the legend under a plot wraps into rows of three so that every name stays readable
     if (legend && legend->fillOrder() == QCPLegend::foColumnsFirst) {
         legend->setProperty("maxColumns", 3);

@@ -4,7 +4,6 @@
 #include "common/input_error.h"
 #include "document/file_dialogs.h"
 #include "plots/plot_export.h"
-#include "plots/plot_figures.h"
 
 #include <QFileInfo>
 #include <QMenu>
@@ -34,26 +33,6 @@ void exportPlotFile(QCustomPlot& plot, const QString& path) {
 
 QMenu* plotExportMenu(QCustomPlot* plot) {
     return plot->findChild<QMenu*>(QStringLiteral("plotExportMenu"));
-}
-
-QAction* fitAllAction(QCustomPlot* plot) {
-    QMenu* menu = plotExportMenu(plot);
-    return menu ? menu->findChild<QAction*>(QStringLiteral("fitAllCurves")) : nullptr;
-}
-
-void installFitAllAction(QCustomPlot* plot) {
-    QMenu* menu = plotExportMenu(plot);
-    if (!menu)
-        return;
-    QAction* action = menu->addAction(QObject::tr("Fit all curves"));
-    action->setObjectName(QStringLiteral("fitAllCurves"));
-    action->setCheckable(true);
-    QObject::connect(action, &QAction::toggled, plot, [plot](bool on) {
-        plot->setProperty("chaplyginFitAll", on);
-        if (plot->axisRectCount() > 0)
-            fitTimeAxes(*plot->axisRect());
-        plot->replot();
-    });
 }
 
 void installPlotExportMenu(QCustomPlot* plot, std::function<QString()> stem,

@@ -4,7 +4,6 @@
 #include <functional>
 
 class QCustomPlot;
-class QAction;
 class QMenu;
 
 namespace chaplygin::ui {
@@ -18,12 +17,6 @@ void exportPlotFile(QCustomPlot& plot, const QString& path);
 /// onError receives the message when the export fails.
 void installPlotExportMenu(QCustomPlot* plot, std::function<QString()> stem,
                            std::function<void(const QString&)> onError);
-
-/// Adds "Fit all curves" to the plot's context menu (after installPlotExportMenu): checked, the
-/// value axis holds every curve, not only the controlled ones (fitTimeAxes).
-void installFitAllAction(QCustomPlot* plot);
-/// That action (for tests), or null.
-QAction* fitAllAction(QCustomPlot* plot);
 
 /// The context menu installPlotExportMenu shows (for tests).
 QMenu* plotExportMenu(QCustomPlot* plot);

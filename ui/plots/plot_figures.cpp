@@ -27,7 +27,6 @@ QCPGraph* addGraph(QCPAxisRect* rect, const QVector<double>& x, const QVector<do
     g->setData(x, y, true);
     g->setName(name);
     g->setPen(QPen(color, 1.5 * t_look.lineScale, style));
-    g->setProperty("chaplyginControlled", color == kControlled && style == Qt::SolidLine);
     return g;
 }
 
@@ -135,7 +134,7 @@ void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSer
     default:
         break;
     }
-    fitTimeAxes(*rect);
+    rescale(rect);
     legendIn(rect, plot);
 }
 
@@ -213,42 +212,6 @@ void paperFigure(QCustomPlot& plot, const PlotSeries& s) {
 }
 
 } // namespace
-
-void fitTimeAxes(QCPAxisRect& rect) {
-    QCPAxis* key = rect.axis(QCPAxis::atBottom);
-    QCPAxis* value = rect.axis(QCPAxis::atLeft);
-    const bool fitAll = rect.parentPlot()->property("chaplyginFitAll").toBool();
-    double keyLo = INFINITY, keyHi = -INFINITY;
-    double lo = INFINITY, hi = -INFINITY, allLo = INFINITY, allHi = -INFINITY;
-    for (QCPAbstractPlottable* p : rect.plottables()) {
-        auto* g = qobject_cast<QCPGraph*>(p);
-        if (!g)
-            continue;
-        const bool controlled = g->property("chaplyginControlled").toBool();
-        for (const QCPGraphData& d : *g->data()) {
-            if (!std::isfinite(d.key) || !std::isfinite(d.value))
-                continue;
-            keyLo = std::min(keyLo, d.key);
-            keyHi = std::max(keyHi, d.key);
-            allLo = std::min(allLo, d.value);
-            allHi = std::max(allHi, d.value);
-            if (controlled) {
-                lo = std::min(lo, d.value);
-                hi = std::max(hi, d.value);
-            }
-        }
-    }
-    key->setRange(paddedRange(keyLo, keyHi));
-    if (fitAll || !(lo <= hi)) {
-        value->setRange(paddedRange(allLo, allHi));
-        return;
-    }
-    // the controlled range, or the band paddedRange gives a flat one
-    const double size = std::max(hi - lo, 0.5 * paddedRange(lo, hi).size());
-    const double lower = std::min(lo - 0.2 * size, std::max(allLo, lo - size));
-    const double upper = std::max(hi + 0.2 * size, std::min(allHi, hi + size));
-    value->setRange(lower, upper);
-}
 
 QCPRange paddedRange(double lower, double upper) {
     if (!std::isfinite(lower) || !std::isfinite(upper) || lower > upper)

@@ -27,12 +27,6 @@ void drawPlot(QCustomPlot& plot, PlotKind kind, const PlotSeries& series);
 /// The axis range drawn for data in [lower, upper]: 5 % margins; a series flat to rounding
 /// (relative spread <= 1e-6) gets a band of +-10 % around its value instead.
 QCPRange paddedRange(double lower, double upper);
-/// The value axis of a time plot follows its controlled curves (graphs with the property
-/// "chaplyginControlled": the controlled body and the pinned runs), padded by 20 %; the other
-/// curves widen it to at most three times the controlled range and are clipped at the frame
-/// (docs/architecture.md, ui/: the desktop application, Plots). With the plot's property
-/// "chaplyginFitAll" every finite value is in view. The key axis holds every curve.
-void fitTimeAxes(QCPAxisRect& rect);
 /// Sets the axis ranges of rect so that one metre is as long on x as on y and data stays whole.
 void fitEqualAspect(QCPAxisRect& rect, const QRectF& data);
 /// The font and line scale and the palette drawPlot uses for this plot from now on.

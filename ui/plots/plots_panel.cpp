@@ -53,7 +53,6 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
         installPlotExportMenu(
             plot, [i] { return plotFileStem(kKinds[i]); },
             [this](const QString& error) { emit exportFailed(error); });
-        installFitAllAction(plot);
     }
     m_errorPlot = new FlatPlot;
     m_errorPlot->setObjectName(plotFileStem(PlotKind::TrackingError));

@@ -4,19 +4,13 @@
 #include "canvas/canvas_style.h"
 #include "canvas/scene_canvas.h"
 #include "document/scene_document.h"
-#include "plots/plot_context_menu.h"
-#include "plots/plot_figures.h"
-#include "plots/plots_panel.h"
 #include "shell/playback.h"
 #include "window_fixture.h"
 
-#include <QAction>
 #include <QImage>
 #include <QtTest>
-#include <qcustomplot.h>
 
 #include <algorithm>
-
 #include <cmath>
 #include <numbers>
 
@@ -32,37 +26,7 @@ class TestPicture : public QObject, private test::WindowFixture {
     void cleanup() { closeWindow(); }
 
     void zoomedCircleOnItsExactPath();
-    void plotsScaledForTheControlledBody();
 };
-
-namespace {
-
-// the value axis holds [lo, hi] padded, and is no more than three times (plus the pad) as wide
-void checkFollows(const QCPRange& axis, const QVector<double>& controlled, const char* what) {
-    const auto [lo, hi] = std::minmax_element(controlled.begin(), controlled.end());
-    const double size = *hi - *lo;
-    QVERIFY2(size > 0, what);
-    QVERIFY2(axis.lower <= *lo - 0.19 * size && axis.upper >= *hi + 0.19 * size,
-             qPrintable(QStringLiteral("%1: axis [%2, %3], controlled [%4, %5]")
-                            .arg(what)
-                            .arg(axis.lower)
-                            .arg(axis.upper)
-                            .arg(*lo)
-                            .arg(*hi)));
-    QVERIFY2(axis.size() <= 3.01 * size,
-             qPrintable(QStringLiteral("%1: axis [%2, %3] swamps the controlled [%4, %5]")
-                            .arg(what)
-                            .arg(axis.lower)
-                            .arg(axis.upper)
-                            .arg(*lo)
-                            .arg(*hi)));
-}
-
-double minOf(const QVector<double>& v) {
-    return *std::min_element(v.begin(), v.end());
-}
-
-} // namespace
 
 void TestPicture::zoomedCircleOnItsExactPath() {
     choosePreset("circle");
@@ -88,9 +52,10 @@ void TestPicture::zoomedCircleOnItsExactPath() {
         const int hi = std::max({c.red(), c.green(), c.blue()});
         return lo >= 130 && hi <= 248 && !(hi - lo < 6 && std::abs(hi - 232) <= 4);
     };
+    // a sixth of the view holds an arc of the circle: sampled densely enough for 100 points on it
     int checked = 0;
-    for (int k = 0; k < 400; ++k) {
-        const double u = 2 * std::numbers::pi * k / 400;
+    for (int k = 0; k < 8000; ++k) {
+        const double u = 2 * std::numbers::pi * k / 8000;
         const QPointF q = map.map(QPointF(2 * std::cos(u), 2 * std::sin(u)));
         // the start marker and the bodies at the start cover the band
         if (!area.contains(q) || QLineF(q, start).length() < 24)
@@ -106,34 +71,7 @@ void TestPicture::zoomedCircleOnItsExactPath() {
                                 .arg(q.x())
                                 .arg(q.y())));
     }
-    QVERIFY2(checked > 60, qPrintable(QString::number(checked)));
-}
-
-void TestPicture::plotsScaledForTheControlledBody() {
-    // on the sinusoid the free Psi runs to -8 rad: the axes follow the controlled Psi and lambda
-    choosePreset("sinusoid");
-    PlotsPanel* plots = m_window->plotsPanel();
-    plots->replotNow();
-    const PlotSeries& s = m_window->document()->series();
-    QCustomPlot* psi = plots->plot(0);
-    QCustomPlot* lambda = plots->plot(2);
-    checkFollows(psi->yAxis->range(), s.psi, "psi");
-    checkFollows(lambda->yAxis->range(), s.lambda, "lambda");
-    QVERIFY(minOf(s.freePsi) < psi->yAxis->range().lower); // the free curve is clipped
-    // "Fit all curves" brings the free curve back into view
-    QAction* fitAll = fitAllAction(psi);
-    QVERIFY(fitAll);
-    fitAll->setChecked(true);
-    QVERIFY(psi->yAxis->range().lower <= minOf(s.freePsi));
-    QVERIFY(psi->yAxis->range().lower <= minOf(s.vakPsi));
-    fitAll->setChecked(false);
-    checkFollows(psi->yAxis->range(), s.psi, "psi again");
-    // the exported figures (--plots) are drawn by the same drawPlot, with the same rule
-    QCustomPlot exported;
-    exported.resize(900, 600);
-    const PlotSeries exact = collectSeries(*m_window->document()->solution(), 400, 400);
-    drawPlot(exported, PlotKind::Psi, exact);
-    checkFollows(exported.axisRect()->axis(QCPAxis::atLeft)->range(), exact.psi, "exported psi");
+    QVERIFY2(checked > 100, qPrintable(QString::number(checked)));
 }
 
 QTEST_MAIN(TestPicture)
