@@ -100,15 +100,19 @@ FlatCurve flattenInTime(const std::function<QPointF(double)>& f, double tEnd, do
 
 void CanvasCurves::update(const std::shared_ptr<const Solution>& solution,
                           double devicePxPerMetre) {
-    if (solution == m_solution && devicePxPerMetre == m_scale)
+    // flattened for the next power of two of the scale: never coarser than asked for, and made
+    // anew only when a zoom passes a power of two, not at every wheel step
+    const double scale =
+        devicePxPerMetre > 0 ? std::exp2(std::ceil(std::log2(devicePxPerMetre))) : 0;
+    if (solution == m_solution && scale == m_scale)
         return;
     m_solution = solution;
-    m_scale = devicePxPerMetre;
+    m_scale = scale;
     m_pins.clear();
     m_path = m_free = m_vak = m_openLoop = m_closedLoop = {};
     if (!solution || !(devicePxPerMetre > 0))
         return;
-    const double tolerance = kTolerancePx / devicePxPerMetre;
+    const double tolerance = kTolerancePx / scale;
     m_path = flattenPath(*solution->path(), tolerance);
     const Solution& s = *solution;
     m_free = flattenInTime(
