@@ -127,14 +127,18 @@ void CanvasCurves::update(const std::shared_ptr<const Solution>& solution,
             return QPointF(v.x, v.y);
         },
         s.tEnd(), tolerance);
-    // the pushed bodies (docs/physics.md §9), when the scene has a perturbation
+    // the pushed bodies (docs/physics.md §9), when the scene has a perturbation: each state is an
+    // integration from the nearest stored step, so they are sampled at 400 times, not subdivided
     auto pushed = [&](const PerturbedMotion* body) {
-        return flattenInTime(
-            [body](double t) {
-                const PerturbedState b = body->at(t);
-                return QPointF(b.x, b.y);
-            },
-            s.tEnd(), tolerance);
+        FlatCurve out;
+        constexpr int kSamples = 400;
+        for (int i = 0; i < kSamples; ++i) {
+            const double t = s.tEnd() * i / (kSamples - 1);
+            const PerturbedState b = body->at(t);
+            out.param.push_back(t);
+            out.points.emplace_back(b.x, b.y);
+        }
+        return out;
     };
     if (s.perturbed()) {
         m_openLoop = pushed(s.openLoop());
