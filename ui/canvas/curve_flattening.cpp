@@ -5,6 +5,12 @@
 
 namespace chaplygin::ui {
 
+namespace {
+// a chord halved at most this often: 2^10 points per panel or seed interval, enough for 0.25 px
+// at every zoom a lecture uses, and bounded when the view is zoomed far into one spot
+constexpr int kMaxHalvings = 10;
+} // namespace
+
 std::size_t FlatCurve::countUpTo(double limit) const {
     return std::size_t(std::upper_bound(param.begin(), param.end(), limit) - param.begin());
 }
@@ -71,7 +77,7 @@ FlatCurve flattenPath(const Path& path, double tolerance) {
             // within panel k by xi in [-1, 1]: the body's pose is read the same way
             auto eval = [&](double xi) { return sample(table.interpolatedAt(int(k), xi)); };
             subdivide(out, eval, true, -1, 1, sample(nodes[k]), sample(nodes[k + 1]), tolerance,
-                      16);
+                      kMaxHalvings);
         }
     }
     // arc length through a piece's interpolants: kept non-decreasing for countUpTo

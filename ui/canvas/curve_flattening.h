@@ -23,7 +23,7 @@ struct FlatCurve {
 /// Appends f on (a, b] to out: the chord [a, b] is halved while the curve's midpoint lies more
 /// than tolerance [m] from the chord's midpoint, to at most maxDepth halvings.
 void flattenInto(FlatCurve& out, const std::function<QPointF(double)>& f, double a, double b,
-                 QPointF fa, QPointF fb, double tolerance, int maxDepth = 16);
+                 QPointF fa, QPointF fb, double tolerance, int maxDepth = 10);
 
 /// The path's curve pieces from their interpolants (the same evaluation as the body's pose),
 /// seeded at the panel ends; param is the arc length from the path's start. A pivot is one point.
