@@ -21,6 +21,7 @@ from pathlib import Path
 
 SOURCE = Path(__file__).resolve().parent.parent
 RECIPES = SOURCE / "docs" / "images" / "recipes.txt"
+HELP_RESOURCES = SOURCE / "resources" / "help" / "chaplygin_help.qrc"
 DOCUMENTS = [SOURCE / "README.md", *sorted((SOURCE / "docs").glob("*.md"))]
 
 
@@ -73,6 +74,13 @@ def check():
         for option, value in zip(recipe.options, recipe.options[1:]):
             if option == "--scene" and not (SOURCE / value).is_file():
                 problems.append(f"recipes.txt:{recipe.line}: scene file {value} does not exist")
+    # the help window shows docs/*.md with their pictures compiled in
+    compiled = set(re.findall(r'alias="images/([\w.-]+\.png)"', HELP_RESOURCES.read_text()))
+    for name, where in sorted(shown.items()):
+        if name not in compiled and any(w.startswith("docs/") for w in where):
+            problems.append(f"{name} (shown in {', '.join(where)}) is not in {HELP_RESOURCES.name}")
+    for name in sorted(compiled - set(shown)):
+        problems.append(f"{HELP_RESOURCES.name} compiles in {name}, which no document shows")
     unused = {p.name for p in (SOURCE / "docs" / "images").glob("*.png")} - made
     for name in sorted(unused):
         problems.append(f"docs/images/{name} is made by no recipe")
