@@ -208,6 +208,17 @@ PerturbedState PerturbedMotion::at(double t) const {
     return m_problem->state(t, y.data());
 }
 
+std::vector<TrailKnot> PerturbedMotion::trailKnots() const {
+    std::vector<TrailKnot> out;
+    for (const Segment& seg : m_segments)
+        for (std::size_t i = 0; i < seg.steps.t.size(); ++i) {
+            const OdeValue& y = seg.steps.y[i];
+            const OdeValue& f = seg.steps.f[i];
+            out.push_back({seg.steps.t[i], y[kX], y[kY], f[kX], f[kY]});
+        }
+    return out;
+}
+
 std::string PerturbedMotion::model() const {
     const PerturbationSpec& s = m_problem->spec();
     std::string out = "GSL rk8pd at tolerance " + formatNumber(kPerturbedTolerance) +

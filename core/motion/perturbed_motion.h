@@ -49,6 +49,13 @@ struct PerturbedState {
     double pathS = 0;  ///< feedback body: that point's arc length s_p [m]
 };
 
+/// The perturbed body's knife point and its velocity at one accepted step of the integration.
+struct TrailKnot {
+    double t = 0;          ///< [s]
+    double x = 0, y = 0;   ///< [m]
+    double vx = 0, vy = 0; ///< [m/s]
+};
+
 /// A body of the control-input system x, y, phi, Psi in constant-energy mode
 /// (docs/physics.md §9): sdot = v_T sin Psi, b phidot = v_T cos Psi,
 /// Psidot = lambda/(m b) + (a/b) phidot, started from the controlled state moved by the
@@ -69,6 +76,9 @@ class PerturbedMotion {
     std::string model() const;
     /// Accepted steps and right-hand-side calls of the integration.
     const OdeWork& work() const { return m_work; }
+    /// The position and velocity at every accepted step, in time order (a push's instant twice,
+    /// before and after it): knots for a cubic Hermite drawing of the body's path.
+    std::vector<TrailKnot> trailKnots() const;
 
     class Problem;
 

@@ -104,6 +104,34 @@ FlatCurve flattenInTime(const std::function<QPointF(double)>& f, double tEnd, do
     return out;
 }
 
+FlatCurve flattenThroughKnots(const std::vector<TrailKnot>& knots, double tEnd, double tolerance) {
+    FlatCurve out;
+    if (knots.empty())
+        return out;
+    out.param.push_back(knots.front().t);
+    out.points.emplace_back(knots.front().x, knots.front().y);
+    for (std::size_t k = 0; k + 1 < knots.size() && knots[k].t < tEnd; ++k) {
+        const TrailKnot& a = knots[k];
+        const TrailKnot& b = knots[k + 1];
+        const double h = b.t - a.t;
+        if (!(h > 0)) { // a push: the body jumps at that instant
+            out.param.push_back(b.t);
+            out.points.emplace_back(b.x, b.y);
+            continue;
+        }
+        // cubic Hermite in tau = (t - a.t)/h on [0, 1]
+        auto hermite = [&](double t) {
+            const double tau = (t - a.t) / h, t2 = tau * tau, t3 = t2 * tau;
+            const double h00 = 2 * t3 - 3 * t2 + 1, h10 = t3 - 2 * t2 + tau;
+            const double h01 = -2 * t3 + 3 * t2, h11 = t3 - t2;
+            return QPointF(h00 * a.x + h10 * h * a.vx + h01 * b.x + h11 * h * b.vx,
+                           h00 * a.y + h10 * h * a.vy + h01 * b.y + h11 * h * b.vy);
+        };
+        flattenInto(out, hermite, a.t, b.t, {a.x, a.y}, {b.x, b.y}, tolerance);
+    }
+    return out;
+}
+
 void CanvasCurves::update(const std::shared_ptr<const Solution>& solution,
                           double devicePxPerMetre) {
     // flattened for the next power of two of the scale: never coarser than asked for, and made
@@ -133,18 +161,11 @@ void CanvasCurves::update(const std::shared_ptr<const Solution>& solution,
             return QPointF(v.x, v.y);
         },
         s.tEnd(), tolerance);
-    // the pushed bodies (docs/physics.md §9), when the scene has a perturbation: each state is an
-    // integration from the nearest stored step, so they are sampled at 400 times, not subdivided
+    // the pushed bodies (docs/physics.md §9), when the scene has a perturbation: a state between
+    // the integrator's steps costs an integration step, so they are drawn through their accepted
+    // steps, by the cubic Hermite interpolant of the position and velocity there
     auto pushed = [&](const PerturbedMotion* body) {
-        FlatCurve out;
-        constexpr int kSamples = 400;
-        for (int i = 0; i < kSamples; ++i) {
-            const double t = s.tEnd() * i / (kSamples - 1);
-            const PerturbedState b = body->at(t);
-            out.param.push_back(t);
-            out.points.emplace_back(b.x, b.y);
-        }
-        return out;
+        return flattenThroughKnots(body->trailKnots(), s.tEnd(), tolerance);
     };
     if (s.perturbed()) {
         m_openLoop = pushed(s.openLoop());

@@ -33,6 +33,10 @@ FlatCurve flattenPath(const Path& path, double tolerance);
 FlatCurve flattenInTime(const std::function<QPointF(double)>& f, double tEnd, double tolerance,
                         int seeds = 400);
 
+/// A body's path through its integrator's accepted steps up to tEnd, by the cubic Hermite
+/// interpolant of the position and velocity at each (a step of zero length is a jump).
+FlatCurve flattenThroughKnots(const std::vector<TrailKnot>& knots, double tEnd, double tolerance);
+
 /// Every curve the canvas draws, flattened to kTolerancePx device pixels at one scale (docs/
 /// architecture.md, ui/: the desktop application, Canvas): made anew when the solution or the
 /// scale changes, and for each pinned run on first use at that scale.

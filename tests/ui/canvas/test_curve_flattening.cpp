@@ -111,6 +111,7 @@ class CurveFlatteningTest : public QObject {
     void drawnPathWithinQuarterPixelOfExactPath();
     void knifePointOnDrawnPathAtEveryFrame();
     void trailsWithinQuarterPixelOfTheirMotion();
+    void pushedTrailsWithinQuarterPixelOfTheirMotion();
 };
 
 void CurveFlatteningTest::drawnPathWithinQuarterPixelOfExactPath() {
@@ -184,6 +185,55 @@ void CurveFlatteningTest::trailsWithinQuarterPixelOfTheirMotion() {
                      qPrintable(QString("%1: free trail %2 px off").arg(p.name).arg(freeOff)));
             QVERIFY2(vakOff <= CanvasCurves::kTolerancePx,
                      qPrintable(QString("%1: vakonomic trail %2 px off").arg(p.name).arg(vakOff)));
+        }
+    }
+}
+
+void CurveFlatteningTest::pushedTrailsWithinQuarterPixelOfTheirMotion() {
+    // the open- and closed-loop bodies of the gallery's pushed scene against their states at
+    // dense times (each an integration step from the last accepted one, docs/physics.md §9)
+    Scene scene;
+    for (const SceneResource& r : sceneResources())
+        if (r.path == "gallery/pushed-off-path.json")
+            scene = sceneFromJson(std::string(r.text));
+    QVERIFY(scene.perturbation.has_value());
+    auto solution = std::make_shared<const Solution>(Solution::compute(scene));
+    QVERIFY(solution->perturbed());
+    for (const PerturbedMotion* body : {solution->openLoop(), solution->feedback()}) {
+        // dense times, and the push's instant from both sides
+        std::vector<double> times;
+        const int count = 20000;
+        for (int i = 0; i <= count; ++i)
+            times.push_back(solution->tEnd() * i / count);
+        const double tPush = scene.perturbation->tPush.value();
+        times.insert(times.end(), {tPush * (1 - 1e-12), tPush * (1 + 1e-12)});
+        std::sort(times.begin(), times.end());
+        Polyline exact;
+        for (double t : times) {
+            const PerturbedState b = body->at(t);
+            exact.push_back({b.x, b.y});
+        }
+        for (double scale : {20.0, 160.0, 1000.0}) {
+            CanvasCurves curves;
+            curves.update(solution, scale);
+            const FlatCurve& drawn =
+                body == solution->openLoop() ? curves.openLoop() : curves.closedLoop();
+            // the drawn line between two points at the same time is the push's jump: its ends
+            // are checked, not the line between them
+            double drawnOff = largestDistance(drawn.points, exact, 0, 0.1 / scale);
+            for (std::size_t i = 0; i + 1 < drawn.points.size(); ++i) {
+                if (!(drawn.param[i + 1] > drawn.param[i]))
+                    continue;
+                const Polyline middle{0.5 * (drawn.points[i] + drawn.points[i + 1])};
+                const double d = largestDistance(middle, exact, 0, 0.1 / scale);
+                drawnOff = std::max(drawnOff, d);
+            }
+            const double exactOff = largestDistance(exact, drawn.points, 0, 0.1 / scale);
+            qInfo("%s at %g px/m: %zu points, drawn to exact %.3f px, exact to drawn %.3f px",
+                  body == solution->openLoop() ? "open loop" : "feedback", scale,
+                  drawn.points.size(), drawnOff * scale, exactOff * scale);
+            QVERIFY(drawnOff * scale <= CanvasCurves::kTolerancePx);
+            QVERIFY(exactOff * scale <= CanvasCurves::kTolerancePx);
         }
     }
 }
