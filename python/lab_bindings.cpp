@@ -81,8 +81,8 @@ py::dict workPrecision(const Scene& scene, int outputs,
     out["error"] = columnOf<double>(rows, [](const Row& r) { return r.error; });
     out["seconds"] = columnOf<double>(rows, [](const Row& r) { return r.seconds; });
     out["rhs_evals"] = columnOf<long>(rows, [](const Row& r) { return r.rhsEvals; });
-    out["energy_drift"] = columnOf<double>(rows, [](const Row& r) { return r.energyDrift; });
     out["chosen"] = columnOf<bool>(rows, [](const Row& r) { return r.chosen; });
+    out["energy_drift"] = columnOf<double>(rows, [](const Row& r) { return r.energyDrift; });
     return out;
 }
 
@@ -110,8 +110,8 @@ void bindLab(py::module_& m) {
              py::arg("max_solve_seconds") = 0.25,
              "Every method of the registry over its tolerances or step counts, timed and "
              "compared with the reference (docs/numerics.md §2): a dict of arrays problem, "
-             "method, tolerance (or the step h [s]), error [m], seconds, rhs_evals, "
-             "energy_drift, chosen. Takes seconds.");
+             "method, tolerance (or the step h [s]), error [m], seconds, rhs_evals, chosen "
+             "(the CSV's columns) and energy_drift. Takes seconds.");
     m.def(
         "gallery_entries",
         [] {

@@ -62,11 +62,14 @@ selectedColumns(const Solution& solution, const std::optional<std::vector<std::s
     return out;
 }
 
-void checkTimes(const double* t, py::ssize_t n) {
+// times within the horizon [0, t_end], the span the CSV's rows cover
+void checkTimes(const Solution& solution, const double* t, py::ssize_t n) {
+    const double horizon = solution.tEnd();
     for (py::ssize_t i = 0; i < n; ++i)
-        if (!std::isfinite(t[i]) || t[i] < 0)
-            throw InputError("t", "times must be finite and >= 0 s, got " + formatNumber(t[i]) +
-                                      " at index " + std::to_string(i));
+        if (!(t[i] >= 0 && t[i] <= horizon))
+            throw InputError("t", formatNumber(t[i]) + " s at index " + std::to_string(i) +
+                                      " is outside [0, " + formatNumber(horizon) +
+                                      "], the scene's horizon t_end");
 }
 
 std::vector<py::ssize_t> shapeOf(const TimesArray& times) {
@@ -143,7 +146,7 @@ py::dict sample(const SolutionHandle& self, const TimesArray& times,
     const std::vector<const CsvColumn*> columns = selectedColumns(solution, names);
     const py::ssize_t n = times.size();
     const double* t = times.data();
-    checkTimes(t, n);
+    checkTimes(solution, t, n);
     const unsigned workers = threadCount(threads, n);
     py::dict out;
     std::vector<double*> targets;
@@ -164,7 +167,7 @@ py::dict trackingErrors(const SolutionHandle& self, const TimesArray& times) {
     if (!solution.perturbed())
         throw InputError("tracking_errors", "the scene has no perturbation");
     const py::ssize_t n = times.size();
-    checkTimes(times.data(), n);
+    checkTimes(solution, times.data(), n);
     const std::vector<double> t(times.data(), times.data() + n);
     std::vector<TrackingError> errors;
     {
@@ -273,7 +276,8 @@ void bindSolution(py::module_& m) {
         .def("sample", &sample, py::arg("t"), py::arg("columns") = py::none(),
              py::arg("threads") = py::none(),
              "sample(t, columns=None, threads=None): the state at the times t [s] (a number, a "
-             "list or an array), as a dict of float64 arrays of t's shape keyed by the CSV's "
+             "list or an array, each in [0, t_end]), as a dict of float64 arrays of t's shape "
+             "keyed by the CSV's "
              "column names (every column the CSV writes, or those named: only their bodies are "
              "computed). Runs in C++ without the GIL, on up to one thread per core for long "
              "arrays (threads=1: this thread only); the values do not depend on the threads.")

@@ -99,9 +99,11 @@ def test_scene_files_name_the_json_path(cl, tmp_path):
 
 def test_sampling(cl):
     solution = cl.Scene.preset("line").solve()
-    raises(cl, "t", ["finite and >= 0", "-1", "index 1"], lambda: solution.sample([0, -1]))
-    raises(cl, "t", ["finite and >= 0", "index 2"], lambda: solution.sample([0, 1, np.nan]))
-    raises(cl, "t", ["finite and >= 0"], lambda: solution.sample(np.inf))
+    horizon = f"is outside [0, {solution.t_end!r}], the scene's horizon t_end"
+    raises(cl, "t", ["-1 s at index 1", horizon], lambda: solution.sample([0, -1]))
+    raises(cl, "t", ["nan s at index 2", horizon], lambda: solution.sample([0, 1, np.nan]))
+    raises(cl, "t", ["inf s at index 0", horizon], lambda: solution.sample(np.inf))
+    raises(cl, "t", ["9 s at index 1", horizon], lambda: solution.sample([8.9, 9.0]))
     raises(cl, "columns", ["unknown column 'z'", "t, s, x"],
            lambda: solution.sample([0], columns=["x", "z"]))
     raises(cl, "columns", ["no perturbation"], lambda: solution.sample([0], columns=["fb_x"]))
