@@ -114,3 +114,15 @@ def test_a_perturbation_with_feedback(cl):
 def test_version(cl):
     assert cl.__version__.count(".") == 2
     assert isinstance(cl.InputError("x"), ValueError)
+
+
+def test_the_readmes_example_runs(cl, capsys):
+    text = (SOURCE_DIR / "README.md").read_text()
+    section = text[text.index("## From Python"):]
+    start = section.index("```python\n") + len("```python\n")
+    block = section[start:section.index("\n```", start)]
+    assert len(block.splitlines()) == 5
+    exec(compile(block, "README.md, From Python", "exec"), {})
+    duration, peak, unit = capsys.readouterr().out.split(maxsplit=2)
+    assert float(duration) == pytest.approx(cl.Scene.preset("sinusoid").solve().duration)
+    assert float(peak) > 0 and unit.strip() == "kg m/s"
