@@ -126,3 +126,16 @@ def test_the_readmes_example_runs(cl, capsys):
     duration, peak, unit = capsys.readouterr().out.split(maxsplit=2)
     assert float(duration) == pytest.approx(cl.Scene.preset("sinusoid").solve().duration)
     assert float(peak) > 0 and unit.strip() == "kg m/s"
+
+
+def test_every_gallery_scene_solves_or_is_refused_as_the_program_says(cl):
+    for e in cl.gallery_entries():
+        scene = cl.Scene.gallery(e["name"])
+        if e["rejected"]:
+            with pytest.raises(cl.InputError) as error:
+                scene.solve()
+            assert e["message"] in str(error.value), e["name"]
+        else:
+            solution = scene.solve()
+            values = solution.sample(np.linspace(0, solution.t_end, 101))
+            assert all(np.all(np.isfinite(a)) for a in values.values()), e["name"]
