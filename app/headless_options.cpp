@@ -57,27 +57,6 @@ std::vector<std::pair<double, double>> parsePoints(const std::string& text) {
     return pts;
 }
 
-void parsePathExpression(const std::string& text, PathSource& path) {
-    // "y=EXPR" (graph) or "x=EXPR;y=EXPR" (parametric)
-    auto parts = split(text, ';');
-    auto rhs = [&](const std::string& part, const char* name) {
-        std::string t = trim(part);
-        if (t.size() < 2 || t[0] != name[0] || trim(t.substr(1)).rfind('=', 0) != 0)
-            throw InputError("--path", std::string("expected ") + name + "=EXPR, got '" + t + "'");
-        return trim(trim(t.substr(1)).substr(1));
-    };
-    if (parts.size() == 1) {
-        path.kind = PathKind::Graph;
-        path.y = rhs(parts[0], "y");
-    } else if (parts.size() == 2) {
-        path.kind = PathKind::Parametric;
-        path.xOfU = rhs(parts[0], "x");
-        path.yOfU = rhs(parts[1], "y");
-    } else {
-        throw InputError("--path", "use \"y=EXPR\" or \"x=EXPR;y=EXPR\"");
-    }
-}
-
 } // namespace
 
 double parseNumber(const std::string& text, const std::string& where) {
@@ -135,7 +114,7 @@ Scene baseScene(const OptionValues& given) {
     } else if (scenePath) {
         s = loadSceneFile(*scenePath);
     } else if (pathExpr) {
-        parsePathExpression(*pathExpr, s.path);
+        setPathExpressions(s.path, *pathExpr, "--path");
         if (s.path.kind == PathKind::Graph) {
             if (!xRange)
                 throw InputError("--x-range", "a graph path y=EXPR needs --x-range X0,X1");

@@ -194,4 +194,35 @@ std::string cornerModeName(CornerMode mode) {
     return mode == CornerMode::Pivot ? "pivot" : "smooth";
 }
 
+namespace {
+
+std::string trimmed(const std::string& s) {
+    auto b = s.find_first_not_of(" \t");
+    auto e = s.find_last_not_of(" \t");
+    return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+} // namespace
+
+void setPathExpressions(PathSource& path, const std::string& text, const std::string& where) {
+    const auto semicolon = text.find(';');
+    const bool parametric = semicolon != std::string::npos;
+    if (parametric && text.find(';', semicolon + 1) != std::string::npos)
+        throw InputError(where, "use \"y=EXPR\" or \"x=EXPR;y=EXPR\"");
+    auto rhs = [&](const std::string& part, char name) {
+        const std::string t = trimmed(part);
+        if (t.size() < 2 || t[0] != name || trimmed(t.substr(1)).rfind('=', 0) != 0)
+            throw InputError(where, std::string("expected ") + name + "=EXPR, got '" + t + "'");
+        return trimmed(trimmed(t.substr(1)).substr(1));
+    };
+    if (parametric) {
+        path.kind = PathKind::Parametric;
+        path.xOfU = rhs(text.substr(0, semicolon), 'x');
+        path.yOfU = rhs(text.substr(semicolon + 1), 'y');
+    } else {
+        path.kind = PathKind::Graph;
+        path.y = rhs(text, 'y');
+    }
+}
+
 } // namespace chaplygin

@@ -28,4 +28,9 @@ struct PathSource {
 CornerMode cornerModeFromName(const std::string& name);
 std::string cornerModeName(CornerMode mode);
 
+/// Sets the path's kind and expressions from the text the command line and the Python module
+/// take: "y=EXPR" (a graph y(x)) or "x=EXPR;y=EXPR" (a parametric curve x(u), y(u)); the range
+/// and the polyline are left as they are. Throws InputError(where) for any other text.
+void setPathExpressions(PathSource& path, const std::string& text, const std::string& where);
+
 } // namespace chaplygin

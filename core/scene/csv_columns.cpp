@@ -79,6 +79,21 @@ std::span<const CsvColumn> csvColumnsWritten(bool perturbed) {
                      : std::span<const CsvColumn>(kColumns, unperturbedCount());
 }
 
+MotionParts csvColumnParts(const CsvColumn& column) {
+    const std::string_view name = column.name;
+    const auto prefixed = [name](std::string_view prefix) { return name.starts_with(prefix); };
+    MotionParts parts{false, false, false, false};
+    if (prefixed("free_"))
+        parts.free = true;
+    else if (prefixed("vak_"))
+        parts.vakonomic = true;
+    else if (prefixed("pert_") || prefixed("fb_"))
+        parts.perturbed = true;
+    else if (name != "t")
+        parts.controlled = true;
+    return parts;
+}
+
 std::optional<std::size_t> csvColumnIndex(std::string_view name) {
     const auto* it = std::find_if(std::begin(kColumns), std::end(kColumns),
                                   [name](const CsvColumn& c) { return c.name == name; });

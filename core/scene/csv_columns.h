@@ -25,6 +25,11 @@ std::span<const CsvColumn> csvColumns();
 /// perturbed bodies' columns (the last ones) are left out.
 std::span<const CsvColumn> csvColumnsWritten(bool perturbed);
 
+/// The bodies a column is read from, by its name's prefix (free_, vak_, pert_ or fb_; t from
+/// none; the rest from the controlled body): Solution::at(t, parts) with the union of these
+/// gives the same values in these columns as the whole state.
+MotionParts csvColumnParts(const CsvColumn& column);
+
 /// The position of the column called NAME in csvColumns(), or nothing.
 std::optional<std::size_t> csvColumnIndex(std::string_view name);
 

@@ -258,12 +258,16 @@ std::vector<TrackingError> Solution::trackingErrors(const std::vector<double>& t
     return out;
 }
 
-MotionSample Solution::at(double t) const {
+MotionSample Solution::at(double t, const MotionParts& parts) const {
     MotionSample m;
-    controlledAt(t, m);
-    m.free = m_free.at(t);
-    m.vak = m_vak.at(t);
-    if (m_open) {
+    m.t = t;
+    if (parts.controlled)
+        controlledAt(t, m);
+    if (parts.free)
+        m.free = m_free.at(t);
+    if (parts.vakonomic)
+        m.vak = m_vak.at(t);
+    if (m_open && parts.perturbed) {
         m.perturbed = true;
         m.pert = m_open->at(t);
         m.fb = m_feedback->at(t);

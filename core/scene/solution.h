@@ -27,6 +27,15 @@ struct MotionSample {
     PerturbedState fb;      ///< perturbed body under the feedback (closed loop)
 };
 
+/// The bodies Solution::at(t, parts) computes; the others keep MotionSample's defaults. A caller
+/// that reads a few columns (csvColumnParts) pays only for their bodies.
+struct MotionParts {
+    bool controlled = true; ///< s, x, y, phi, kappa and the control state
+    bool free = true;       ///< the free body
+    bool vakonomic = true;  ///< the genuine vakonomic body
+    bool perturbed = true;  ///< the two perturbed bodies, when the scene has a perturbation
+};
+
 /// The perturbed bodies' distance from the path and heading error at t (docs/physics.md §9),
 /// each against its closest path point; NaN where that point is not found.
 struct TrackingError {
@@ -71,7 +80,9 @@ class Solution {
     double duration() const { return m_timeLaw.duration(); } ///< time to traverse the path [s]
     double tEnd() const { return m_tEnd; }                   ///< horizon [s]
 
-    MotionSample at(double t) const;
+    MotionSample at(double t) const { return at(t, MotionParts{}); }
+    /// Only the parts asked for (t always).
+    MotionSample at(double t, const MotionParts& parts) const;
     /// The free motion alone at t (cheaper than at(t) when the controlled state is not needed).
     FreeState freeAt(double t) const { return m_free.at(t); }
     /// The genuine vakonomic body alone at t.

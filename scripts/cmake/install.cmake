@@ -25,9 +25,12 @@ add_custom_target(chaplygin_changelog ALL DEPENDS ${changelog})
 install(FILES ${changelog} resources/debian/copyright DESTINATION ${CMAKE_INSTALL_DOCDIR})
 
 install(FILES README.md docs/architecture.md docs/numerics.md docs/physics.md docs/robustness.md
-              docs/user-guide.md
+              docs/user-guide.md docs/python.md
         DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY docs/images DESTINATION ${CMAKE_INSTALL_DOCDIR})
+if(CHAPLYGIN_PYTHON)
+  install(FILES docs/notebooks/tour.ipynb DESTINATION ${CMAKE_INSTALL_DOCDIR}/notebooks)
+endif()
 
 set(CPACK_PACKAGE_NAME chaplygin-lab)
 set(CPACK_PACKAGE_VENDOR "The Chaplygin Lab maintainers")
@@ -47,6 +50,12 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 # Depends from the libraries the program links (Qt 6, GSL, muparser, GiNaC), via dpkg-shlibdeps
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+# the Python module (python/CMakeLists.txt) is an extension of the python3 it was built for: that
+# minor version, and NumPy for its arrays (Debian's python policy for extension modules)
+if(CHAPLYGIN_PYTHON)
+  set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3 (>= ${CHAPLYGIN_PYTHON_VERSION}~), \
+python3 (<< ${CHAPLYGIN_PYTHON_NEXT_VERSION}), python3-numpy")
+endif()
 # GIF and MP4 export run the ffmpeg program
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS ffmpeg)
 set(CPACK_STRIP_FILES ON)

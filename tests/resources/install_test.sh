@@ -83,4 +83,14 @@ grep -qx "chaplygin-lab [0-9.]*" flag.txt || fail "--version printed: $(cat flag
 "$usr/bin/chaplygin-lab" --screenshot pt.png --preset circle --size 800x600 --language pt_BR
 [ -s en.png ] && [ -s pt.png ] || fail "no screenshots"
 ! cmp -s en.png pt.png || fail "the pt_BR screenshot is the English one"
+# the Python module (CHAPLYGIN_PYTHON): in lib/python3/dist-packages, and it imports and solves
+# from there with Debian's python3 (docs/python.md)
+if [ "$(sed -n 's/^CHAPLYGIN_PYTHON:BOOL=//p' "$build/CMakeCache.txt")" = ON ]; then
+  site=$usr/lib/python3/dist-packages
+  ls "$site"/chaplygin_lab.cpython-*.so >/dev/null 2>&1 || fail "no lib/python3/dist-packages/chaplygin_lab"
+  x=$(cd "$work" && PYTHONPATH=$site /usr/bin/python3 -c \
+    "import chaplygin_lab as cl; s = cl.Scene.preset('catenary').solve(); print(s.sample([0, 1, 2])['x'])" 2>&1) \
+    || fail "the installed Python module: $x"
+  echo "installed module: x = $x"
+fi
 echo "installed layout and headless run OK"

@@ -7,7 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <set>
@@ -135,6 +137,33 @@ TEST(CsvColumns, PerturbedColumnsOnlyWithAPerturbation) {
     }
 }
 
+// a sample of a few columns (the Python module's sample(t, columns)) computes only their bodies:
+// each column read from Solution::at(t, csvColumnParts(column)) is the whole state's, bit for bit,
+// and a part the column does not name is left out
+TEST(CsvColumns, EachColumnNeedsOnlyItsPartsOfTheState) {
+    Scene scene = presetScene("catenary");
+    scene.perturbation = Perturbation{};
+    scene.perturbation->dy = 0.05;
+    const Solution solution = Solution::compute(scene);
+    int skipped = 0;
+    for (const CsvColumn& column : csvColumns()) {
+        const MotionParts parts = csvColumnParts(column);
+        const int named = parts.controlled + parts.free + parts.vakonomic + parts.perturbed;
+        EXPECT_EQ(named, column.name == "t" ? 0 : 1) << column.name;
+        EXPECT_EQ(parts.perturbed, column.perturbed) << column.name;
+        for (double t : {0.0, 0.7, 2.9, solution.tEnd()}) {
+            const double whole = column.value(solution.at(t));
+            const double part = column.value(solution.at(t, parts));
+            EXPECT_EQ(std::bit_cast<std::uint64_t>(part), std::bit_cast<std::uint64_t>(whole))
+                << column.name << " at t = " << t;
+            const MotionParts others{!parts.controlled, !parts.free, !parts.vakonomic,
+                                     !parts.perturbed};
+            skipped += column.value(solution.at(t, others)) != whole;
+        }
+    }
+    EXPECT_GT(skipped, 100) << "the other parts were computed too";
+}
+
 TEST(CsvColumns, AValueThatIsNotFiniteNamesItsColumn) {
     MotionSample sample;
     sample.t = 2.5;
@@ -149,7 +178,7 @@ TEST(CsvColumns, AValueThatIsNotFiniteNamesItsColumn) {
     }
 }
 
-// README.md, Headless examples: its table of the CSV's columns is the table, row for row
+// README.md, Columns of the CSV: its table of the CSV's columns is the table, row for row
 TEST(CsvColumns, TheReadmeListsEveryColumn) {
     const std::string readme = sourceFile("README.md");
     const std::vector<std::string> want = lines(markdownTable());
