@@ -110,6 +110,11 @@ FlatCurve flattenThroughKnots(const std::vector<TrailKnot>& knots, double tEnd, 
         return out;
     out.param.push_back(knots.front().t);
     out.points.emplace_back(knots.front().x, knots.front().y);
+    // no more points than a trail flattened in time at its most (400 seeds, kMaxHalvings each),
+    // however many steps the integration took
+    const double intervals = double(knots.size());
+    const int maxDepth = std::clamp(
+        int(std::floor(std::log2(400.0 * (1 << kMaxHalvings) / intervals))), 1, kMaxHalvings);
     for (std::size_t k = 0; k + 1 < knots.size() && knots[k].t < tEnd; ++k) {
         const TrailKnot& a = knots[k];
         const TrailKnot& b = knots[k + 1];
@@ -127,7 +132,7 @@ FlatCurve flattenThroughKnots(const std::vector<TrailKnot>& knots, double tEnd, 
             return QPointF(h00 * a.x + h10 * h * a.vx + h01 * b.x + h11 * h * b.vx,
                            h00 * a.y + h10 * h * a.vy + h01 * b.y + h11 * h * b.vy);
         };
-        flattenInto(out, hermite, a.t, b.t, {a.x, a.y}, {b.x, b.y}, tolerance);
+        flattenInto(out, hermite, a.t, b.t, {a.x, a.y}, {b.x, b.y}, tolerance, maxDepth);
     }
     return out;
 }
