@@ -2,6 +2,7 @@
 // settings and the typed ranges belong to their own path, exports propose folders that exist and
 // say where the files went, and the Accuracy dock's t is the canvas's.
 #include "canvas/scene_canvas.h"
+#include "canvas/vector_layer.h"
 #include "document/file_dialogs.h"
 #include "document/math_text.h"
 #include "panels/accuracy_readout.h"
@@ -79,6 +80,8 @@ class TestRoughEdges : public QObject, public test::WindowFixture {
     void animationDialogProposesAFileInAFolderThatExists();
     void accuracyTimeIsTheCanvasTimeEveryFrame();
     void galleryNoteDotsSetInAFaceThatPlacesThem();
+    void vectorLabelsApartOnTheSmallCarriage();
+    void scaleBarTextsGetTheirWidth();
     void helpMenuOpensTheExplanationWithItsDrawing();
     void explanationAtStartUntilDismissed();
 
@@ -325,6 +328,49 @@ void TestRoughEdges::accuracyTimeIsTheCanvasTimeEveryFrame() {
     }
     QVERIFY(m_window->canvas()->time() > 0.6);
     QCOMPARE(layouts.count, 0); // a new time lays out nothing
+}
+
+void TestRoughEdges::vectorLabelsApartOnTheSmallCarriage() {
+    // the carriage on the catenary with every arrow: at t = 2 s the heads of v_P and v_C, N and
+    // the couple's arc end meet within a label's size
+    Scene scene = presetScene("catenary");
+    scene.preset.clear();
+    scene.system = {
+        SystemKind::Carriage,
+        {{"R", 0.3}, {"a", 0.4}, {"m", 0.5}, {"I1", 0.02}, {"I2", 0.01}, {"M", 3.0}, {"I", 0.2}}};
+    for (int i = 0; i < kVectorKinds; ++i)
+        (scene.vectors.*vectorToggle(VectorKind(i))).shown = true;
+    m_window->loadScene(scene);
+    m_window->playback()->seek(2);
+    m_window->canvas()->repaint();
+    const std::vector<QRectF>& labels = m_window->canvas()->vectorLayer().labelBoxes();
+    QVERIFY2(labels.size() >= 4, qPrintable(QString::number(labels.size()))); // f_s may be short
+    for (std::size_t i = 0; i < labels.size(); ++i)
+        for (std::size_t j = i + 1; j < labels.size(); ++j)
+            QVERIFY2(!labels[i].intersects(labels[j]),
+                     qPrintable(QStringLiteral("labels %1 and %2 overlap").arg(i).arg(j)));
+}
+
+void TestRoughEdges::scaleBarTextsGetTheirWidth() {
+    // the couple's "τ: 0.1 N m = 103°" is wider than the old fixed 104 px column in a
+    // presentation's font: the column is as wide as its widest text
+    VectorOverlay overlay;
+    for (int i = 0; i < kVectorKinds; ++i)
+        (overlay.*vectorToggle(VectorKind(i))).shown = true;
+    VectorScales scales;
+    scales.fill(1.0);
+    QFont big;
+    big.setPointSizeF(17);
+    const int width = scaleBarsTextWidth(big, overlay, scales, 50);
+    const QFontMetrics metrics(big);
+    const double value = roundValue((M_PI / 2) / 1.0);
+    const QString tau = vectorSymbol(VectorKind::ControlCouple) +
+                        QStringLiteral(": %1 %2 = %3\u00b0")
+                            .arg(value)
+                            .arg(vectorUnit(VectorKind::ControlCouple))
+                            .arg(std::min(value * 180 / M_PI, 340.0), 0, 'f', 0);
+    QVERIFY2(width >= metrics.horizontalAdvance(tau), qPrintable(tau));
+    QVERIFY(width > 104);
 }
 
 void TestRoughEdges::galleryNoteDotsSetInAFaceThatPlacesThem() {
