@@ -102,7 +102,7 @@ void BodyDiagram::paintEvent(QPaintEvent*) {
     p.setPen(QPen(QColor(120, 60, 160), 1.5, Qt::DashDotLine));
     p.drawPath(vak);
     p.setPen(QColor(110, 50, 150));
-    p.drawText(knife + QPointF(-95, -125), tr("vakonomic body"));
+    p.drawText(knife + QPointF(30, -136), tr("vakonomic body"));
 
     // the body: knife at P, centre of mass C ahead of it at distance a
     p.setPen(QPen(ink, 1.5));
@@ -141,7 +141,7 @@ void BodyDiagram::paintEvent(QPaintEvent*) {
     p.setFont(font);
 
     // the energy triangle: ṡ = v_T sin Ψ, bφ̇ = v_T cos Ψ
-    const QPointF o(300, 225);
+    const QPointF o(25, 160); // the upper left corner, clear of the path and the bodies
     const double w = 110, h = 70;
     p.setPen(QPen(ink, 1.5));
     p.drawLine(o, o + QPointF(w, 0));
@@ -156,7 +156,7 @@ void BodyDiagram::paintEvent(QPaintEvent*) {
     p.drawText(o + QPointF(w / 2 - 12, 18), QStringLiteral("b\u03c6\u0307"));
     p.setFont(font);
     p.drawText(o + QPointF(w + 5, -h / 2 + 4), QStringLiteral("\u1e61"));
-    p.drawText(o + QPointF(w / 2 - 40, -h / 2 - 8), QStringLiteral("v_T"));
+    p.drawText(o + QPointF(w / 2 - 34, -h / 2 - 6), QStringLiteral("v_T"));
 }
 
 IntroductionWindow::IntroductionWindow(bool useSettings, QWidget* parent) : QDialog(parent) {
