@@ -1565,6 +1565,14 @@ O que os estudantes devem observar…</translation>
         <source>The range of x [m] (graph) or of u (parametric), traversed from the first to the second; Enter applies the path</source>
         <translation>O intervalo de x [m] (gráfico) ou de u (paramétrico), percorrido do primeiro ao segundo valor; Enter aplica o caminho</translation>
     </message>
+    <message>
+        <source>smooth (spline)</source>
+        <translation>suave (spline)</translation>
+    </message>
+    <message>
+        <source>pivot (turn in place)</source>
+        <translation>pivô (giro no lugar)</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::PerturbationPanel</name>

@@ -96,8 +96,11 @@ PathPanel::PathPanel(QWidget* parent)
     m_draw->setToolTip(
         tr("Press and drag on the canvas to draw a new path; it is sampled and smoothed"));
     m_corners = new QComboBox;
-    m_corners->addItem(tr("smooth (spline through the points)"), int(CornerMode::Smooth));
-    m_corners->addItem(tr("pivot (straight segments, turn in place)"), int(CornerMode::Pivot));
+    // short names, so that a 1024 px window shows them whole; the whole story in the tooltips
+    m_corners->addItem(tr("smooth (spline)"), int(CornerMode::Smooth));
+    m_corners->setItemData(0, tr("smooth (spline through the points)"), Qt::ToolTipRole);
+    m_corners->addItem(tr("pivot (turn in place)"), int(CornerMode::Pivot));
+    m_corners->setItemData(1, tr("pivot (straight segments, turn in place)"), Qt::ToolTipRole);
     m_corners->setToolTip(tr("How a drawn path's corners are followed"));
     auto* drawRow = new QHBoxLayout; // one row: the dock fits a 1280 x 800 screen unscrolled
     drawRow->addWidget(m_draw);

@@ -25,6 +25,8 @@
 #include <QRadioButton>
 #include <QSet>
 #include <QStatusBar>
+#include <QStyle>
+#include <QStyleOptionComboBox>
 #include <QToolButton>
 #include <QUndoStack>
 
@@ -75,6 +77,7 @@ class TestRoughEdges : public QObject, public test::WindowFixture {
     void newDrawingStartsWithTheDefaultsAfterAGalleryScene();
     void userCornerChoiceCarriesToTheNextDrawing();
     void graphAndParametricKeepTheirOwnRanges();
+    void cornerChoicesReadWholeAt1024();
     void dialogsProposeAFolderThatExists();
     void exportsSayWhereTheFilesWent();
     void animationDialogProposesAFileInAFolderThatExists();
@@ -226,6 +229,27 @@ void TestRoughEdges::graphAndParametricKeepTheirOwnRanges() {
     QTRY_COMPARE(m_window->document()->scene().path.kind, PathKind::Graph);
     QCOMPARE(m_window->document()->scene().path.to, 5.0);
     QCOMPARE(m_window->document()->scene().path.from, graphFrom);
+}
+
+void TestRoughEdges::cornerChoicesReadWholeAt1024() {
+    m_window->resize(1024, 768);
+    m_window->balanceDocks();
+    m_window->pathPanel()->window()->show();
+    QTest::qWait(100);
+    QComboBox* corners = m_window->pathPanel()->cornersBox();
+    QStyleOptionComboBox option;
+    option.initFrom(corners);
+    option.editable = false;
+    const QRect field = corners->style()->subControlRect(QStyle::CC_ComboBox, &option,
+                                                         QStyle::SC_ComboBoxEditField, corners);
+    for (int i = 0; i < corners->count(); ++i) {
+        QVERIFY2(
+            corners->fontMetrics().horizontalAdvance(corners->itemText(i)) <= field.width(),
+            qPrintable(QStringLiteral("%1 in %2 px").arg(corners->itemText(i)).arg(field.width())));
+        // the whole explanation is the item's tooltip
+        QVERIFY(corners->itemData(i, Qt::ToolTipRole).toString().size() >
+                corners->itemText(i).size());
+    }
 }
 
 void TestRoughEdges::dialogsProposeAFolderThatExists() {
