@@ -9,6 +9,7 @@
 #include "panels/path_panel.h"
 #include "shell/animation_dialog.h"
 #include "shell/export_report.h"
+#include "shell/help_window.h"
 #include "shell/introduction_window.h"
 #include "shell/playback.h"
 #include "window_fixture.h"
@@ -27,6 +28,9 @@
 #include <QStatusBar>
 #include <QStyle>
 #include <QStyleOptionComboBox>
+#include <QTextBrowser>
+#include <QTextCursor>
+#include <QTextDocument>
 #include <QToolButton>
 #include <QUndoStack>
 
@@ -83,6 +87,7 @@ class TestRoughEdges : public QObject, public test::WindowFixture {
     void animationDialogProposesAFileInAFolderThatExists();
     void accuracyTimeIsTheCanvasTimeEveryFrame();
     void galleryNoteDotsSetInAFaceThatPlacesThem();
+    void helpDotsSetInAFaceThatPlacesThem();
     void vectorLabelsApartOnTheSmallCarriage();
     void scaleBarTextsGetTheirWidth();
     void helpMenuOpensTheExplanationWithItsDrawing();
@@ -409,6 +414,21 @@ void TestRoughEdges::galleryNoteDotsSetInAFaceThatPlacesThem() {
     QVERIFY(withDottedSymbolFont(QStringLiteral("a \u03c7\u0307 b")) ==
             QStringLiteral(
                 "a <span style=\"font-family: 'DejaVu Serif', serif\">\u03c7\u0307</span> b"));
+}
+
+void TestRoughEdges::helpDotsSetInAFaceThatPlacesThem() {
+    HelpWindow* help = m_window->showHelp(QStringLiteral("physics.md"));
+    QTextDocument* doc = help->findChild<QTextBrowser*>()->document();
+    QTextCursor found = doc->find(QStringLiteral("\u03c6\u0307"));
+    QVERIFY(!found.isNull());
+    QVERIFY2(
+        found.charFormat().fontFamilies().toStringList().contains(QStringLiteral("DejaVu Serif")),
+        qPrintable(found.charFormat().fontFamilies().toStringList().join(u',')));
+    // a letter without a dot keeps the document's face
+    QTextCursor plain = doc->find(QStringLiteral("Kinetic energy"));
+    QVERIFY(!plain.isNull());
+    QVERIFY(
+        !plain.charFormat().fontFamilies().toStringList().contains(QStringLiteral("DejaVu Serif")));
 }
 
 void TestRoughEdges::helpMenuOpensTheExplanationWithItsDrawing() {
