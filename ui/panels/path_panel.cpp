@@ -197,6 +197,7 @@ void PathPanel::setScene(const Scene& scene) {
     int preset = m_preset->findText(QString::fromStdString(scene.preset));
     m_preset->setCurrentIndex(preset > 0 ? preset : 0);
     m_presetInfo->setText(QString::fromStdString(presetDescription(scene.preset)));
+    m_presetInfo->setVisible(!m_presetInfo->text().isEmpty()); // no empty line under the box
     showDrawSettings();
     if (p.kind != PathKind::Polyline) {
         const bool graph = p.kind == PathKind::Graph;

@@ -70,7 +70,13 @@ class TestRoughEdges : public QObject, public test::WindowFixture {
     Q_OBJECT
   private slots:
     void initTestCase() { startSuite("ui_rough_edges_tests"); }
-    void init() { openWindow(); }
+    void init() {
+        // settings of each function's own: ctest runs the functions in parallel processes,
+        // and these tests write and read the settings
+        QCoreApplication::setApplicationName(QStringLiteral("ui_rough_edges_tests_") +
+                                             QString::fromLatin1(QTest::currentTestFunction()));
+        openWindow();
+    }
     void cleanup() {
         ExportReport::setOpenUrlHook({});
         closeWindow();
@@ -471,7 +477,7 @@ void TestRoughEdges::helpMenuOpensTheExplanationWithItsDrawing() {
 
 void TestRoughEdges::explanationAtStartUntilDismissed() {
     m_window.reset();
-    QSettings().clear(); // the test's own settings: a first start
+    QSettings().clear(); // a first start
     QVERIFY(IntroductionWindow::dueAtStart(QSettings()));
     {
         MainWindow window(true);
