@@ -339,7 +339,10 @@ int runDesktop(int argc, char** argv) {
     if (options.presentation)
         window.presentation()->setActive(true);
     // an earlier run that ended abnormally left an unsaved scene: offer it back
-    QTimer::singleShot(0, &window, [&window] { window.offerRestore(); });
+    QTimer::singleShot(0, &window, [&window] {
+        window.offerRestore();
+        window.offerIntroduction(); // the first start explains what the window shows
+    });
     return app.exec();
 }
 

@@ -143,6 +143,101 @@
     </message>
 </context>
 <context>
+    <name>MethodNames</name>
+    <message>
+        <source>Exact formula (the app&apos;s)</source>
+        <translation>Fórmula exata (a do aplicativo)</translation>
+    </message>
+    <message>
+        <source>Quadrature along the path (the app&apos;s)</source>
+        <translation>Quadratura ao longo do caminho (a do aplicativo)</translation>
+    </message>
+    <message>
+        <source>Adaptive quadrature (GSL)</source>
+        <translation>Quadratura adaptativa (GSL)</translation>
+    </message>
+    <message>
+        <source>Runge–Kutta 4 (GSL)</source>
+        <translation>Runge–Kutta 4 (GSL)</translation>
+    </message>
+    <message>
+        <source>Runge–Kutta Cash–Karp (GSL)</source>
+        <translation>Runge–Kutta Cash–Karp (GSL)</translation>
+    </message>
+    <message>
+        <source>Multistep Adams (GSL)</source>
+        <translation>Adams de passo múltiplo (GSL)</translation>
+    </message>
+    <message>
+        <source>Multistep BDF (GSL)</source>
+        <translation>BDF de passo múltiplo (GSL)</translation>
+    </message>
+    <message>
+        <source>Classical Runge–Kutta 4</source>
+        <translation>Runge–Kutta 4 clássico</translation>
+    </message>
+    <message>
+        <source>Runge–Kutta 4, energy kept</source>
+        <translation>Runge–Kutta 4, energia mantida</translation>
+    </message>
+    <message>
+        <source>Paper&apos;s open loop, Runge–Kutta 8 (GSL)</source>
+        <translation>Malha aberta do artigo, Runge–Kutta 8 (GSL)</translation>
+    </message>
+    <message>
+        <source>Paper&apos;s open loop, Runge–Kutta 4</source>
+        <translation>Malha aberta do artigo, Runge–Kutta 4</translation>
+    </message>
+    <message>
+        <source>Time along the path: exact formula</source>
+        <translation>Tempo ao longo do caminho: fórmula exata</translation>
+    </message>
+    <message>
+        <source>Time along the path: quadrature</source>
+        <translation>Tempo ao longo do caminho: quadratura</translation>
+    </message>
+    <message>
+        <source>; ghost and vakonomic body: formulas, no time stepping</source>
+        <translation>; fantasma e corpo vakonômico: fórmulas, sem passos no tempo</translation>
+    </message>
+    <message>
+        <source>; pushed bodies: Runge–Kutta 8 integration</source>
+        <translation>; corpos empurrados: integração Runge–Kutta 8</translation>
+    </message>
+    <message>
+        <source>path: %1
+time law: %2
+s(t): %3
+control: %4
+free velocities: %5
+free position: %6
+vakonomic body: %7</source>
+        <translation>caminho: %1
+lei horária: %2
+s(t): %3
+controle: %4
+velocidades livres: %5
+posição livre: %6
+corpo vakonômico: %7</translation>
+    </message>
+    <message>
+        <source>
+open loop: %1
+feedback: %2</source>
+        <translation>
+malha aberta: %1
+realimentação: %2</translation>
+    </message>
+    <message>
+        <source>Runge–Kutta–Fehlberg 4(5) (GSL)</source>
+        <translation>Runge–Kutta–Fehlberg 4(5) (GSL)</translation>
+    </message>
+    <message>
+        <source>Runge–Kutta Prince–Dormand 8 (GSL)</source>
+        <translation>Runge–Kutta Prince–Dormand 8 (GSL)</translation>
+    </message>
+</context>
+<context>
     <name>PlotFigures</name>
     <message>
         <source>controlled Ψ</source>
@@ -434,24 +529,12 @@
         <translation>T varia por construção no modo de velocidade constante</translation>
     </message>
     <message>
-        <source>path: %1
-time law: %2
-s(t): %3
-control: %4
-free velocities: %5
-free position: %6</source>
-        <translation>caminho: %1
-lei horária: %2
-s(t): %3
-controle: %4
-velocidades livres: %5
-posição livre: %6</translation>
+        <source>Details</source>
+        <translation>Detalhes</translation>
     </message>
     <message>
-        <source>
-vakonomic body: %1</source>
-        <translation>
-corpo vakonômico: %1</translation>
+        <source>The models and numerical methods in technical terms</source>
+        <translation>Os modelos e os métodos numéricos em termos técnicos</translation>
     </message>
 </context>
 <context>
@@ -509,8 +592,31 @@ corpo vakonômico: %1</translation>
         <translation>Velocidade</translation>
     </message>
     <message>
-        <source>GIF (*.gif);;MP4 video (*.mp4);;PNG frames into a folder (*)</source>
-        <translation>GIF (*.gif);;Vídeo MP4 (*.mp4);;Quadros PNG em uma pasta (*)</translation>
+        <source>MP4 video (*.mp4);;GIF (*.gif);;PNG frames into a folder (*)</source>
+        <translation>Vídeo MP4 (*.mp4);;GIF (*.gif);;Quadros PNG numa pasta (*)</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::BodyDiagram</name>
+    <message>
+        <source>Drawing of the body on its path with the angles Ψ, φ and χ</source>
+        <translation>Desenho do corpo no seu caminho com os ângulos Ψ, φ e χ</translation>
+    </message>
+    <message>
+        <source>path</source>
+        <translation>caminho</translation>
+    </message>
+    <message>
+        <source>ghost: no control</source>
+        <translation>fantasma: sem controle</translation>
+    </message>
+    <message>
+        <source>vakonomic body</source>
+        <translation>corpo vakonômico</translation>
+    </message>
+    <message>
+        <source>control: χ = Ψ − (a/b)φ,</source>
+        <translation>controle: χ = Ψ − (a/b)φ,</translation>
     </message>
 </context>
 <context>
@@ -623,6 +729,21 @@ corpo vakonômico: %1</translation>
     </message>
 </context>
 <context>
+    <name>chaplygin::ui::ExportReport</name>
+    <message>
+        <source>Open folder</source>
+        <translation>Abrir pasta</translation>
+    </message>
+    <message>
+        <source>Show the written files in the file manager</source>
+        <translation>Mostrar os arquivos gravados no gerenciador de arquivos</translation>
+    </message>
+    <message>
+        <source>Dismiss</source>
+        <translation>Dispensar</translation>
+    </message>
+</context>
+<context>
     <name>chaplygin::ui::GalleryMenu</name>
     <message>
         <source>&amp;Gallery</source>
@@ -645,8 +766,8 @@ corpo vakonômico: %1</translation>
         <translation>Uma cúspide: o trenó anda de ré</translation>
     </message>
     <message>
-        <source>Very high curvature, b kappa = 1000</source>
-        <translation>Curvatura muito alta, b kappa = 1000</translation>
+        <source>Very high curvature, bκ = 1000</source>
+        <translation>Curvatura muito alta, bκ = 1000</translation>
     </message>
     <message>
         <source>A long horizon: t = 5000 s</source>
@@ -698,6 +819,21 @@ corpo vakonômico: %1</translation>
     <message>
         <source>Help text</source>
         <translation>Texto de ajuda</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::IntroductionWindow</name>
+    <message>
+        <source>What am I looking at?</source>
+        <translation>O que estou vendo?</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;A &lt;b&gt;body&lt;/b&gt; (a sleigh, a rolling disk or a two-wheeled carriage) rests on a knife edge at &lt;b&gt;P&lt;/b&gt;: P moves only along the body&apos;s heading φ, never sideways. A control inside the body steers it so that P follows the &lt;b&gt;path&lt;/b&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Ψ&lt;/b&gt;, the control angle, splits the body&apos;s energy between driving and turning: ṡ = v&lt;sub&gt;T&lt;/sub&gt; sin Ψ and bφ̇ = v&lt;sub&gt;T&lt;/sub&gt; cos Ψ (the triangle). On a straight path Ψ = π/2; the path&apos;s curvature κ fixes it, tan Ψ = 1/(bκ).&lt;/p&gt;&lt;p&gt;&lt;b&gt;χ&lt;/b&gt; = Ψ − (a/b)φ is the angle the control turns, and &lt;b&gt;λ&lt;/b&gt; = m b χ̇ is how hard it turns it: a push λφ̇ along the heading and a couple −λṡ, which at constant energy do no work.&lt;/p&gt;&lt;p&gt;The &lt;b&gt;ghost&lt;/b&gt; is the same body from the same start with no control (λ = 0): its turning dies away, the knife lets it go only straight on, and it leaves the path. The &lt;b&gt;vakonomic body&lt;/b&gt; obeys the other mechanics the paper discusses: its λ follows an equation of its own, only its start can be chosen, and it cannot keep to the path either.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Um &lt;b&gt;corpo&lt;/b&gt; (um trenó, um disco que rola ou um carrinho de duas rodas) apoia-se numa lâmina em &lt;b&gt;P&lt;/b&gt;: P só se move na direção do corpo φ, nunca de lado. Um controle dentro do corpo o dirige de modo que P siga o &lt;b&gt;caminho&lt;/b&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Ψ&lt;/b&gt;, o ângulo de controle, reparte a energia do corpo entre avançar e girar: ṡ = v&lt;sub&gt;T&lt;/sub&gt; sen Ψ e bφ̇ = v&lt;sub&gt;T&lt;/sub&gt; cos Ψ (o triângulo). Num caminho reto Ψ = π/2; a curvatura κ do caminho o fixa, tan Ψ = 1/(bκ).&lt;/p&gt;&lt;p&gt;&lt;b&gt;χ&lt;/b&gt; = Ψ − (a/b)φ é o ângulo que o controle gira, e &lt;b&gt;λ&lt;/b&gt; = m b χ̇ é a força com que o gira: um empurrão λφ̇ na direção do corpo e um binário −λṡ, que a energia constante não realizam trabalho.&lt;/p&gt;&lt;p&gt;O &lt;b&gt;fantasma&lt;/b&gt; é o mesmo corpo, do mesmo início, sem controle (λ = 0): seu giro se extingue, a lâmina só o deixa seguir em frente, e ele sai do caminho. O &lt;b&gt;corpo vakonômico&lt;/b&gt; obedece à outra mecânica que o artigo discute: seu λ segue uma equação própria, só o seu início pode ser escolhido, e ele também não consegue se manter no caminho.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Don&apos;t show this at start</source>
+        <translation>Não mostrar ao iniciar</translation>
     </message>
 </context>
 <context>
@@ -954,14 +1090,6 @@ corpo vakonômico: %1</translation>
         <translation>Exportar ani&amp;mação…</translation>
     </message>
     <message>
-        <source>path: %1; time law: %2; free motion: %3, %4</source>
-        <translation>caminho: %1; lei horária: %2; movimento livre: %3, %4</translation>
-    </message>
-    <message>
-        <source>Wrote %1</source>
-        <translation>%1 gravado</translation>
-    </message>
-    <message>
         <source>Animation export cancelled</source>
         <translation>Exportação da animação cancelada</translation>
     </message>
@@ -1048,6 +1176,18 @@ corpo vakonômico: %1</translation>
     <message>
         <source>With a perturbation: the body the feedback steers back to the path</source>
         <translation>Com perturbação: o corpo que a realimentação traz de volta ao caminho</translation>
+    </message>
+    <message>
+        <source>&amp;What am I looking at?</source>
+        <translation>O &amp;que estou vendo?</translation>
+    </message>
+    <message>
+        <source>Frames written to %1</source>
+        <translation>Quadros gravados em %1</translation>
+    </message>
+    <message>
+        <source>Animation written to %1</source>
+        <translation>Animação gravada em %1</translation>
     </message>
 </context>
 <context>
@@ -1424,6 +1564,14 @@ O que os estudantes devem observar…</translation>
     <message>
         <source>The range of x [m] (graph) or of u (parametric), traversed from the first to the second; Enter applies the path</source>
         <translation>O intervalo de x [m] (gráfico) ou de u (paramétrico), percorrido do primeiro ao segundo valor; Enter aplica o caminho</translation>
+    </message>
+    <message>
+        <source>smooth (spline)</source>
+        <translation>suave (spline)</translation>
+    </message>
+    <message>
+        <source>pivot (turn in place)</source>
+        <translation>pivô (giro no lugar)</translation>
     </message>
 </context>
 <context>

@@ -35,6 +35,9 @@ export QT_QPA_PLATFORM=xcb
 # a new user: no settings
 export HOME=$work/home XDG_CONFIG_HOME=$work/home/.config XDG_RUNTIME_DIR=$work/run
 mkdir -p "$HOME" "$XDG_RUNTIME_DIR" && chmod 700 "$XDG_RUNTIME_DIR"
+# the first start's "What am I looking at?" window is dismissed, so that it takes no keys or clicks
+mkdir -p "$XDG_CONFIG_HOME/ChaplyginLab"
+printf '[help]\nintroductionDismissed=true\n' >"$XDG_CONFIG_HOME/ChaplyginLab/Chaplygin Lab.conf"
 
 shot() { import -window root "$work/$1.png" || fail "no screenshot $1"; }
 # pixels that differ between two screenshots inside WxH+X+Y

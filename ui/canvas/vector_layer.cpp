@@ -2,6 +2,8 @@
 
 #include "canvas/body_painter.h"
 
+#include <QPainter>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -21,9 +23,9 @@ QPointF scaleBarsCorner(const QRectF& area) {
 }
 
 // a box around the scale bars stacked up from corner: a row of 18 px each, its bar at most
-// 110 + 2 x 80 px left of the corner (paintScaleBars)
-QRect scaleBarsBox(QPointF corner, int rows) {
-    return QRectF(corner - QPointF(320, 18.0 * rows + 12), corner + QPointF(12, 12))
+// 6 + 2 x 80 px left of the texts' column (paintScaleBars)
+QRect scaleBarsBox(QPointF corner, int rows, int textWidth) {
+    return QRectF(corner - QPointF(textWidth + 200, 18.0 * rows + 12), corner + QPointF(12, 12))
         .toAlignedRect();
 }
 
@@ -95,11 +97,16 @@ void VectorLayer::paint(QPainter& p, const std::shared_ptr<const Solution>& solu
                         const QRegion& repainted) {
     m_controlled = {};
     m_free = {};
+    m_labels.clear();
     VectorScales k{};
     if (!shapes(solution, overlay, now, world, m_free, m_controlled, k))
         return;
+    m_labels.clear();
     paintVectorShapes(p, m_free, false);
-    paintVectorShapes(p, m_controlled, true);
+    paintVectorShapes(p, m_controlled, true, &m_labels);
+    QFont barsFont = p.font();
+    barsFont.setPointSizeF(8.5);
+    m_barsText = scaleBarsTextWidth(barsFont, overlay, k, pixelsPerMetre);
     // the scale bars stay put: a frame that repaints what moves need not draw them
     if (repainted.intersects(scaleBarsBounds(overlay, area)))
         paintScaleBars(p, overlay, k, pixelsPerMetre, scaleBarsCorner(area));
@@ -109,7 +116,7 @@ QRect VectorLayer::scaleBarsBounds(const VectorOverlay& overlay, const QRectF& a
     int rows = 0;
     for (int i = 0; i < kVectorKinds; ++i)
         rows += (overlay.*vectorToggle(VectorKind(i))).shown ? 1 : 0;
-    return rows > 0 ? scaleBarsBox(scaleBarsCorner(area), rows) : QRect();
+    return rows > 0 ? scaleBarsBox(scaleBarsCorner(area), rows, m_barsText) : QRect();
 }
 
 QRectF VectorLayer::bounds(const std::shared_ptr<const Solution>& solution,

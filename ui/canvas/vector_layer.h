@@ -6,6 +6,7 @@
 #include <QRegion>
 
 #include <memory>
+#include <vector>
 
 namespace chaplygin::ui {
 
@@ -35,6 +36,8 @@ class VectorLayer {
     /// The shapes of the last paint (empty when nothing is shown).
     const VectorShapes& controlledShapes() const { return m_controlled; }
     const VectorShapes& freeShapes() const { return m_free; }
+    /// The boxes [px] of the controlled body's labels as the last paint placed them.
+    const std::vector<QRectF>& labelBoxes() const { return m_labels; }
 
   private:
     /// The shapes of the free and the controlled body; false when no arrow is shown.
@@ -45,6 +48,8 @@ class VectorLayer {
     mutable std::shared_ptr<const Solution> m_solution; // the one m_auto was computed for
     mutable VectorScales m_auto{};
     VectorShapes m_controlled, m_free;
+    std::vector<QRectF> m_labels;
+    int m_barsText = 104; // the scale bars' text column [px] (scaleBarsTextWidth)
 };
 
 } // namespace chaplygin::ui

@@ -171,7 +171,68 @@ VectorShapes vectorShapes(const DerivedSystem& system, const BodyState& body,
     return out;
 }
 
-void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels) {
+namespace {
+
+// "v_P: 2 m/s", "τ: 0.1 N m = 103°": a scale bar's words
+QString scaleBarText(VectorKind kind, double k, double pixelsPerMetre) {
+    if (kind == VectorKind::ControlCouple) {
+        double value = roundValue((std::numbers::pi / 2) / k);
+        double span = std::min(value * k * kDeg, kMaxSpanDeg);
+        return vectorSymbol(kind) + QStringLiteral(": %1 %2 = %3\u00b0")
+                                        .arg(value)
+                                        .arg(vectorUnit(kind))
+                                        .arg(span, 0, 'f', 0);
+    }
+    double value = roundValue(80 / (k * pixelsPerMetre));
+    return vectorSymbol(kind) + QStringLiteral(": %1 %2").arg(value).arg(vectorUnit(kind));
+}
+
+// text at its natural place unless an earlier label holds it: then the first free place of
+// rings around it (a label's height apart), within the margin VectorLayer::bounds allows
+void placeLabel(QPainter& p, QPointF natural, const QString& text, std::vector<QRectF>& placed) {
+    const QFontMetricsF metrics(p.font());
+    const QRectF box = metrics.boundingRect(text).translated(natural).adjusted(-1, -1, 1, 1);
+    const double step = metrics.height();
+    QPointF best;
+    for (int ring = 0; ring <= 2; ++ring) {
+        bool found = false;
+        const int tries = ring == 0 ? 1 : 8;
+        for (int k = 0; k < tries && !found; ++k) {
+            const double angle = k * std::numbers::pi / 4;
+            const QPointF shift = ring * step * QPointF(std::cos(angle), std::sin(angle));
+            const QRectF at = box.translated(shift);
+            found = std::none_of(placed.begin(), placed.end(),
+                                 [&](const QRectF& r) { return r.intersects(at); });
+            if (found)
+                best = shift;
+        }
+        if (found)
+            break;
+    }
+    placed.push_back(box.translated(best));
+    p.drawText(natural + best, text);
+}
+
+} // namespace
+
+int scaleBarsTextWidth(const QFont& font, const VectorOverlay& overlay, const VectorScales& scales,
+                       double pixelsPerMetre) {
+    const QFontMetrics metrics(font);
+    int widest = 104;
+    for (int i = 0; i < kVectorKinds; ++i) {
+        auto kind = VectorKind(i);
+        if ((overlay.*vectorToggle(kind)).shown)
+            widest = std::max(widest, metrics.horizontalAdvance(scaleBarText(
+                                          kind, scales[std::size_t(i)], pixelsPerMetre)) +
+                                          4);
+    }
+    return widest;
+}
+
+void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels,
+                       std::vector<QRectF>* placed) {
+    std::vector<QRectF> own;
+    std::vector<QRectF>& taken = placed ? *placed : own;
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
     QFont f = p.font();
@@ -206,7 +267,7 @@ void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels) {
         arrowHead(p, tip + 0.5 * kHeadPx * tangent, tangent, ink);
         if (labels) {
             p.setPen(ink);
-            p.drawText(tip + QPointF(6, -6), vectorSymbol(VectorKind::ControlCouple));
+            placeLabel(p, tip + QPointF(6, -6), vectorSymbol(VectorKind::ControlCouple), taken);
         }
     }
     for (const ArrowShape& a : shapes.arrows) {
@@ -222,7 +283,7 @@ void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels) {
         arrowHead(p, a.head, d, ink);
         if (labels) {
             p.setPen(ink);
-            p.drawText(a.head + d * (6 / len) + QPointF(-6, 5), vectorSymbol(a.kind));
+            placeLabel(p, a.head + d * (6 / len) + QPointF(-6, 5), vectorSymbol(a.kind), taken);
         }
     }
     p.restore();
@@ -235,6 +296,8 @@ void paintScaleBars(QPainter& p, const VectorOverlay& overlay, const VectorScale
     QFont f = p.font();
     f.setPointSizeF(8.5);
     p.setFont(f);
+    // the texts in one column as wide as the widest; the bars left of it
+    const double textWidth = scaleBarsTextWidth(f, overlay, scales, pixelsPerMetre);
     QPointF row = bottomRight;
     for (int i = kVectorKinds - 1; i >= 0; --i) {
         auto kind = VectorKind(i);
@@ -242,31 +305,25 @@ void paintScaleBars(QPainter& p, const VectorOverlay& overlay, const VectorScale
             continue;
         double k = scales[std::size_t(i)];
         QColor ink = vectorColor(kind);
-        QString text;
         p.setPen(pen(ink, 2.5, false));
         p.setBrush(Qt::NoBrush);
         if (kind == VectorKind::ControlCouple) {
             // an arc of radius 9 px: a round couple turning it by about a quarter
             double value = roundValue((std::numbers::pi / 2) / k);
             double span = std::min(value * k * kDeg, kMaxSpanDeg);
-            QPointF c = row + QPointF(-150, -5);
+            QPointF c = row + QPointF(-textWidth - 46, -5);
             p.drawArc(QRectF(c.x() - 9, c.y() - 9, 18, 18), 180 * 16, int(-span * 16));
-            text = QStringLiteral("%1 %2 = %3\u00b0")
-                       .arg(value)
-                       .arg(vectorUnit(kind))
-                       .arg(span, 0, 'f', 0);
         } else {
             double value = roundValue(80 / (k * pixelsPerMetre));
             double len = value * k * pixelsPerMetre;
-            QPointF right = row + QPointF(-110, -5), left = right - QPointF(len, 0);
+            QPointF right = row + QPointF(-textWidth - 6, -5), left = right - QPointF(len, 0);
             p.drawLine(left, right);
             p.drawLine(left + QPointF(0, -3), left + QPointF(0, 3));
             p.drawLine(right + QPointF(0, -3), right + QPointF(0, 3));
-            text = QStringLiteral("%1 %2").arg(value).arg(vectorUnit(kind));
         }
         p.setPen(Qt::black);
-        p.drawText(QRectF(row.x() - 104, row.y() - 14, 104, 16), Qt::AlignLeft | Qt::AlignVCenter,
-                   vectorSymbol(kind) + QStringLiteral(": ") + text);
+        p.drawText(QRectF(row.x() - textWidth, row.y() - 14, textWidth, 16),
+                   Qt::AlignLeft | Qt::AlignVCenter, scaleBarText(kind, k, pixelsPerMetre));
         row -= QPointF(0, 18);
     }
     p.restore();

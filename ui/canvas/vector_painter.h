@@ -3,7 +3,9 @@
 #include "scene/scene.h"
 
 #include <QColor>
+#include <QFont>
 #include <QPointF>
+#include <QRectF>
 #include <QString>
 #include <QTransform>
 
@@ -59,8 +61,16 @@ VectorShapes vectorShapes(const DerivedSystem& system, const BodyState& body,
                           const VectorOverlay& overlay, const VectorScales& scales,
                           const QTransform& world, double coupleRadius, bool ghost);
 
-/// Draws shapes; labels names the controlled body's arrows.
-void paintVectorShapes(QPainter& painter, const VectorShapes& shapes, bool labels);
+/// Draws shapes; labels names the controlled body's arrows. Each label goes at its arrowhead,
+/// or, where that box is taken by an earlier label (placed, which it extends), at the nearest
+/// free place around the head: on a small body the names do not pile up.
+void paintVectorShapes(QPainter& painter, const VectorShapes& shapes, bool labels,
+                       std::vector<QRectF>* placed = nullptr);
+
+/// The width [px] the scale bars' texts take in font, the widest of them (at least 104 px):
+/// the bars stand left of it, so no text is cut.
+int scaleBarsTextWidth(const QFont& font, const VectorOverlay& overlay, const VectorScales& scales,
+                       double pixelsPerMetre);
 
 /// A scale bar for each shown quantity (a round value in physical units), stacked upwards from
 /// bottomRight; pixelsPerMetre is the canvas's zoom.

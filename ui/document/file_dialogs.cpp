@@ -80,11 +80,15 @@ QString sceneFileStem(const Scene& scene, const QString& fileName) {
 
 QString lastFolder(const QString& purpose) {
     QSettings settings;
-    QString dir = settings.value(QStringLiteral("dialogs/") + purpose).toString();
+    const QString dir = settings.value(QStringLiteral("dialogs/") + purpose).toString();
     if (!dir.isEmpty() && QFileInfo(dir).isDir())
         return dir;
-    QString docs = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    return docs.isEmpty() ? QDir::homePath() : docs;
+    // a folder moved or deleted since is never proposed: the last one used for anything instead
+    const QString last = settings.value(QStringLiteral("dialogs/last")).toString();
+    if (!dir.isEmpty() && !last.isEmpty() && QFileInfo(last).isDir())
+        return last;
+    const QString docs = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    return !docs.isEmpty() && QFileInfo(docs).isDir() ? docs : QDir::homePath();
 }
 
 void rememberFolder(const QString& purpose, const QString& fileOrFolder) {
@@ -92,7 +96,9 @@ void rememberFolder(const QString& purpose, const QString& fileOrFolder) {
         return;
     QFileInfo info(fileOrFolder);
     QString dir = info.isDir() ? info.absoluteFilePath() : info.absolutePath();
-    QSettings().setValue(QStringLiteral("dialogs/") + purpose, dir);
+    QSettings settings;
+    settings.setValue(QStringLiteral("dialogs/") + purpose, dir);
+    settings.setValue(QStringLiteral("dialogs/last"), dir);
 }
 
 void setDialogHook(DialogHook h) {

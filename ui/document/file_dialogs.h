@@ -10,7 +10,7 @@ class QWidget;
 namespace chaplygin::ui {
 
 /// File dialogs that propose a name, add the chosen filter's extension and remember the last
-/// folder per purpose ("scene", "csv", "plots", "plot").
+/// folder per purpose ("scene", "csv", "plots", "plot", "animation").
 
 /// path with the first extension of selectedFilter ("Scenes (*.json)") appended when its suffix
 /// matches none of the filter's patterns; unchanged for "All files (*)" or an empty path.
@@ -20,7 +20,8 @@ QString withFilterExtension(const QString& path, const QString& selectedFilter);
 /// ("graph-sin", "parametric", "drawn"); letters, digits, '-' and '_' only.
 QString sceneFileStem(const Scene& scene, const QString& fileName = {});
 
-/// The folder last used for purpose (QSettings "dialogs/<purpose>"), or the documents folder.
+/// A folder that exists: the one last used for purpose (QSettings "dialogs/<purpose>"); when that
+/// one is gone, the last one used for any purpose; else the documents folder, else home.
 QString lastFolder(const QString& purpose);
 void rememberFolder(const QString& purpose, const QString& fileOrFolder);
 

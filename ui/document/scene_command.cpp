@@ -11,17 +11,27 @@ SceneCommand::SceneCommand(const QString& text, Scene before, Scene after, Apply
     setText(text);
 }
 
+void SceneCommand::setFileNames(QString before, QString after, SetFileName setFileName) {
+    m_fileBefore = std::move(before);
+    m_fileAfter = std::move(after);
+    m_setFileName = std::move(setFileName);
+}
+
 void SceneCommand::undo() {
     m_apply(m_before);
+    if (m_setFileName)
+        m_setFileName(m_fileBefore);
 }
 
 void SceneCommand::redo() {
     m_apply(m_after);
+    if (m_setFileName)
+        m_setFileName(m_fileAfter);
 }
 
 bool SceneCommand::mergeWith(const QUndoCommand* other) {
     const auto* o = dynamic_cast<const SceneCommand*>(other);
-    if (!o || o->m_mergeKey != m_mergeKey)
+    if (!o || o->m_mergeKey != m_mergeKey || m_setFileName || o->m_setFileName)
         return false;
     m_after = o->m_after;
     return true;

@@ -10,12 +10,16 @@ namespace chaplygin::ui {
 
 /// One undoable scene change (a path or a parameter): it stores the scene before and after and
 /// applies either through a callback. Consecutive edits with the same non-empty merge key (one
-/// slider drag) merge into one step.
+/// slider drag) merge into one step. A step that loads a known scene (a preset, a gallery scene)
+/// also changes the document's file name, and gives the old one back when undone.
 class SceneCommand : public QUndoCommand {
   public:
     using Apply = std::function<void(const Scene&)>;
     SceneCommand(const QString& text, Scene before, Scene after, Apply apply,
                  QString mergeKey = {});
+    using SetFileName = std::function<void(const QString&)>;
+    /// The step also sets the file name: after on redo, before on undo.
+    void setFileNames(QString before, QString after, SetFileName setFileName);
 
     void undo() override;
     void redo() override;
@@ -26,6 +30,8 @@ class SceneCommand : public QUndoCommand {
     Scene m_before, m_after;
     Apply m_apply;
     QString m_mergeKey;
+    QString m_fileBefore, m_fileAfter;
+    SetFileName m_setFileName;
 };
 
 } // namespace chaplygin::ui

@@ -50,6 +50,11 @@ class SceneDocument : public QObject {
     /// edits with the same non-empty mergeKey merge into one step (one slider drag). A scene
     /// equal to the current one is no step.
     void edit(const Scene& scene, const QString& description, const QString& mergeKey = {});
+    /// A preset or a gallery scene as one undo step that is no modification: the document is
+    /// then that known scene, untitled, and clean if it was clean before; unsaved changes made
+    /// before it stay a step back, and the document stays modified. Undo gives the scene and the
+    /// file name back. A scene equal to the current one is no step.
+    void loadKnown(const Scene& scene, const QString& description);
     /// A change of the system's parameters: checked first (deriveSystem), so that an impossible
     /// value is refused with its message (returned) and never becomes an undo step.
     QString editParameters(const Scene& scene, const QString& description,

@@ -35,6 +35,18 @@ void SceneDocument::edit(const Scene& scene, const QString& description, const Q
         description, m_scene, scene, [this](const Scene& s) { apply(s); }, mergeKey));
 }
 
+void SceneDocument::loadKnown(const Scene& scene, const QString& description) {
+    if (m_applied && scene == m_scene)
+        return;
+    const bool wasClean = m_undo->isClean();
+    auto* step =
+        new SceneCommand(description, m_scene, scene, [this](const Scene& s) { apply(s); });
+    step->setFileNames(m_fileName, {}, [this](const QString& name) { setFileName(name); });
+    m_undo->push(step);
+    if (wasClean)
+        m_undo->setClean();
+}
+
 QString SceneDocument::editParameters(const Scene& scene, const QString& description,
                                       const QString& mergeKey) {
     try {

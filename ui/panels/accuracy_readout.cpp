@@ -1,11 +1,15 @@
 #include "panels/accuracy_readout.h"
 
+#include "document/math_text.h"
+#include "document/method_names.h"
 #include "document/scene_document.h"
 #include "scene/paper_closed_form.h"
 
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QResizeEvent>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -37,6 +41,10 @@ QString metres(double v) {
     return QStringLiteral("%1 m").arg(v, 0, 'e', 1);
 }
 
+QString formatTime(double t) {
+    return QStringLiteral("%1 s").arg(t, 0, 'f', 3);
+}
+
 QString relative(double v) {
     return QString::number(v, 'e', 1);
 }
@@ -59,7 +67,9 @@ AccuracyReadout::AccuracyReadout(SceneDocument* document, QWidget* parent)
     m_note->setFrameShape(QFrame::StyledPanel);
     m_note->setMargin(4);
     m_note->hide();
-    m_time = valueLabel();
+    m_time = new QLabel;
+    m_time->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_time->setObjectName(QStringLiteral("accuracyTime"));
     m_tracking = valueLabel();
     m_tracking->setToolTip(
         tr("Distance of the controlled knife point P from the prescribed path's "
@@ -69,10 +79,23 @@ AccuracyReadout::AccuracyReadout(SceneDocument* document, QWidget* parent)
                            "constant energy)"));
     m_controlledDrift = valueLabel();
     m_freeDrift = valueLabel();
+    m_plainModels = valueLabel();
     m_models = valueLabel();
     QFont small = m_models->font();
     small.setPointSizeF(small.pointSizeF() * 0.9);
     m_models->setFont(small);
+    m_models->hide();
+    m_details = new QToolButton;
+    m_details->setText(tr("Details"));
+    m_details->setCheckable(true);
+    m_details->setAutoRaise(true);
+    m_details->setArrowType(Qt::RightArrow);
+    m_details->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_details->setToolTip(tr("The models and numerical methods in technical terms"));
+    connect(m_details, &QToolButton::toggled, this, [this](bool on) {
+        m_details->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
+        m_models->setVisible(on);
+    });
 
     auto* form = new QFormLayout;
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
@@ -83,11 +106,16 @@ AccuracyReadout::AccuracyReadout(SceneDocument* document, QWidget* parent)
     form->addRow(tr("free energy drift"), m_freeDrift);
 
     auto* models = new QLabel(tr("<b>Models and methods</b>"));
+    auto* header = new QHBoxLayout;
+    header->addWidget(models);
+    header->addWidget(m_details);
+    header->addStretch(1);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 6);
     layout->addWidget(m_note);
     layout->addLayout(form);
-    layout->addWidget(models);
+    layout->addLayout(header);
+    layout->addWidget(m_plainModels);
     layout->addWidget(m_models);
     layout->addStretch(1);
 
@@ -95,6 +123,7 @@ AccuracyReadout::AccuracyReadout(SceneDocument* document, QWidget* parent)
     m_refresh.setInterval(kRefreshMs);
     connect(&m_refresh, &QTimer::timeout, this, &AccuracyReadout::refresh);
     connect(m_document, &SceneDocument::solutionChanged, this, &AccuracyReadout::onSolutionChanged);
+    fixTimeSize();
     if (m_document->solution())
         onSolutionChanged();
 }
@@ -107,10 +136,36 @@ QString AccuracyReadout::modelsText() const {
     return m_models->text();
 }
 
+QString AccuracyReadout::plainModelsText() const {
+    return m_plainModels->text();
+}
+
+QString AccuracyReadout::timeText() const {
+    return m_time->text();
+}
+
 void AccuracyReadout::setTime(double t) {
     m_t = t;
+    // the canvas's time, this frame: only the numbers wait for the meter's pace
+    const auto& solution = m_document->solution();
+    m_time->setText(formatTime(solution ? std::clamp(t, 0.0, solution->tEnd()) : t));
     if (!m_refresh.isActive())
         m_refresh.start();
+}
+
+void AccuracyReadout::fixTimeSize() {
+    // room for the longest horizon's times (a 5000 s gallery scene) in the current font
+    const QFontMetrics metrics(m_time->font());
+    const int margins = m_time->contentsMargins().left() + m_time->contentsMargins().right();
+    m_time->setFixedSize(metrics.horizontalAdvance(formatTime(88888.888)) + margins + 2,
+                         metrics.height() + m_time->contentsMargins().top() +
+                             m_time->contentsMargins().bottom());
+}
+
+void AccuracyReadout::changeEvent(QEvent* event) {
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange || event->type() == QEvent::StyleChange)
+        fixTimeSize();
 }
 
 void AccuracyReadout::setNote(const QString& title, const QString& text, bool warning) {
@@ -122,7 +177,8 @@ void AccuracyReadout::setNote(const QString& title, const QString& text, bool wa
     m_note->setStyleSheet(warning ? QStringLiteral("QLabel { color: #a40000; }") : QString());
     QString body = text.toHtmlEscaped();
     body.replace(QLatin1Char('\n'), QStringLiteral("<br>"));
-    m_note->setText(QStringLiteral("<b>%1</b><br>%2").arg(title.toHtmlEscaped(), body));
+    m_note->setText(
+        withDottedSymbolFont(QStringLiteral("<b>%1</b><br>%2").arg(title.toHtmlEscaped(), body)));
     m_note->show();
 }
 
@@ -132,14 +188,8 @@ void AccuracyReadout::onSolutionChanged() {
         return;
     m_controlledT0 = solution->at(0).control.energy;
     m_freeT0 = solution->freeAt(0).energy;
-    const ModelReport& m = solution->models();
-    m_models->setText(
-        tr("path: %1\ntime law: %2\ns(t): %3\ncontrol: %4\n"
-           "free velocities: %5\nfree position: %6")
-            .arg(QString::fromStdString(m.path), QString::fromStdString(m.timeLaw),
-                 QString::fromStdString(m.inversion), QString::fromStdString(m.control),
-                 QString::fromStdString(m.freeVelocity), QString::fromStdString(m.freePosition)) +
-        tr("\nvakonomic body: %1").arg(QString::fromStdString(m.vakonomic)));
+    m_plainModels->setText(plainModelSummary(*solution));
+    m_models->setText(technicalModels(*solution));
     refresh();
 }
 
@@ -162,7 +212,7 @@ void AccuracyReadout::refresh() {
         v.freeDrift = std::fabs(m.free.energy - m_freeT0) / m_freeT0;
     m_values = v;
 
-    m_time->setText(QStringLiteral("%1 s").arg(v.t, 0, 'f', 3));
+    m_time->setText(formatTime(v.t));
     m_tracking->setText(metres(v.trackingResidual));
     m_paper->setText(v.paperError ? tr("%1 (paper %2)").arg(metres(*v.paperError), v.paperEquations)
                                   : tr("no closed form for this scene"));

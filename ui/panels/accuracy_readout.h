@@ -6,6 +6,7 @@
 #include <optional>
 
 class QLabel;
+class QToolButton;
 
 namespace chaplygin::ui {
 
@@ -25,7 +26,8 @@ struct AccuracyValues {
 /// controlled body's distance from the prescribed path at the same arc length, its error
 /// against the paper's closed form where one exists, the energy drift of the controlled and
 /// the free motion, the models and methods in use, and a note (a gallery scene's explanation).
-/// Time changes are coalesced to one update per display frame.
+/// The t shown is the canvas's, set every frame; the numbers beside it change at a meter's pace.
+/// The models are named in plain words, their technical description behind "Details".
 class AccuracyReadout : public QWidget {
     Q_OBJECT
   public:
@@ -34,10 +36,16 @@ class AccuracyReadout : public QWidget {
     const AccuracyValues& values() const { return m_values; }
     /// The shown text of the note (empty when there is none).
     QString noteText() const;
+    /// The technical description of the models (behind "Details").
     QString modelsText() const;
+    /// The plain one-line summary shown on screen.
+    QString plainModelsText() const;
+    /// The shown time, e.g. "2.760 s".
+    QString timeText() const;
+    QToolButton* detailsButton() const { return m_details; }
 
   public slots:
-    /// Marks the time for an update on the next frame (latest value wins).
+    /// Shows t at once and marks the numbers for an update (latest value wins).
     void setTime(double t);
     /// Updates now at the last time set.
     void refresh();
@@ -46,9 +54,12 @@ class AccuracyReadout : public QWidget {
 
   protected:
     void resizeEvent(QResizeEvent* event) override;
+    void changeEvent(QEvent* event) override;
 
   private:
     void onSolutionChanged();
+    /// The time label keeps one size, so that a new time lays out nothing.
+    void fixTimeSize();
 
     SceneDocument* m_document;
     QLabel* m_note;
@@ -57,6 +68,8 @@ class AccuracyReadout : public QWidget {
     QLabel* m_paper;
     QLabel* m_controlledDrift;
     QLabel* m_freeDrift;
+    QLabel* m_plainModels;
+    QToolButton* m_details;
     QLabel* m_models;
     QTimer m_refresh;
     double m_t = 0;

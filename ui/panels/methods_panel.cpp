@@ -2,6 +2,7 @@
 
 #include "common/input_error.h"
 #include "document/job_runner.h"
+#include "document/method_names.h"
 #include "document/scene_document.h"
 #include "plots/plot_context_menu.h"
 #include "plots/work_precision_plot.h"
@@ -241,11 +242,11 @@ void MethodsPanel::showReport(const WorkPrecisionReport& report) {
         m_table->insertRow(row);
         const bool front = onParetoFront(report.rows, i);
         const QStringList cells = {QString::fromStdString(motionProblemName(r.problem)),
-                                   QString::fromStdString(r.method) + settingText(r),
-                                   number(r.error), number(r.seconds),
-                                   front ? tr("yes") : tr("no")};
+                                   plainMethodName(r.method) + settingText(r), number(r.error),
+                                   number(r.seconds), front ? tr("yes") : tr("no")};
         for (int c = 0; c < cells.size(); ++c)
             m_table->setItem(row, c, new QTableWidgetItem(cells[c]));
+        m_table->item(row, 1)->setToolTip(QString::fromStdString(r.method)); // the registry's id
     }
     m_references->setText(
         tr("<b>References</b><br>controlled: %1<br>free: %2")

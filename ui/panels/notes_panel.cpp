@@ -1,5 +1,7 @@
 #include "panels/notes_panel.h"
 
+#include "document/math_text.h"
+
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPlainTextEdit>
@@ -62,8 +64,10 @@ void NotesPanel::render() {
     if (text.trimmed().isEmpty())
         m_view->setHtml(tr("<p style='color:#777'>No note for this scene. Click <b>Edit</b> to "
                            "write one; it is saved with the scene.</p>"));
-    else
+    else {
         m_view->setMarkdown(text);
+        setDottedSymbolFont(*m_view->document()); // φ̇ with its dot on the φ
+    }
 }
 
 void NotesPanel::setFontScale(double scale) {

@@ -20,9 +20,13 @@ namespace chaplygin::ui {
 namespace {
 // strokes are sampled every 10 px: 3 spacings irons out a shaky hand and keeps the shape
 constexpr double kDrawnSmoothing = 3.0;
+// a parametric curve's first range: one turn of the tooltip's 2 cos u, 2 sin u
+constexpr double kTurn = 6.283185307179586;
 } // namespace
 
-PathPanel::PathPanel(QWidget* parent) : QWidget(parent) {
+PathPanel::PathPanel(QWidget* parent)
+    : QWidget(parent), m_newCorners(CornerMode::Smooth), m_newSmoothing(kDrawnSmoothing),
+      m_graphRange(PathSource().from, PathSource().to), m_uRange(0.0, kTurn) {
     auto* layout = new QVBoxLayout(this);
 
     auto* presetBox = new QGroupBox(tr("Preset (the paper's examples)"));
@@ -92,8 +96,11 @@ PathPanel::PathPanel(QWidget* parent) : QWidget(parent) {
     m_draw->setToolTip(
         tr("Press and drag on the canvas to draw a new path; it is sampled and smoothed"));
     m_corners = new QComboBox;
-    m_corners->addItem(tr("smooth (spline through the points)"), int(CornerMode::Smooth));
-    m_corners->addItem(tr("pivot (straight segments, turn in place)"), int(CornerMode::Pivot));
+    // short names, so that a 1024 px window shows them whole; the whole story in the tooltips
+    m_corners->addItem(tr("smooth (spline)"), int(CornerMode::Smooth));
+    m_corners->setItemData(0, tr("smooth (spline through the points)"), Qt::ToolTipRole);
+    m_corners->addItem(tr("pivot (turn in place)"), int(CornerMode::Pivot));
+    m_corners->setItemData(1, tr("pivot (straight segments, turn in place)"), Qt::ToolTipRole);
     m_corners->setToolTip(tr("How a drawn path's corners are followed"));
     auto* drawRow = new QHBoxLayout; // one row: the dock fits a 1280 x 800 screen unscrolled
     drawRow->addWidget(m_draw);
@@ -125,21 +132,37 @@ PathPanel::PathPanel(QWidget* parent) : QWidget(parent) {
     for (QLineEdit* e : {m_y, m_xu, m_yu})
         connect(e, &QLineEdit::returnPressed, this, &PathPanel::applyTyped);
     connect(m_apply, &QPushButton::clicked, this, &PathPanel::applyTyped);
-    connect(m_draw, &QPushButton::toggled, this, &PathPanel::drawModeToggled);
+    connect(m_draw, &QPushButton::toggled, this, [this](bool on) {
+        m_drawing = on;
+        showDrawSettings();
+        emit drawModeToggled(on);
+    });
+    // the user's choice is the next drawing's, and also changes the drawn path on show
     auto optionsChanged = [this] {
+        if (m_showing)
+            return;
+        m_newCorners = static_cast<CornerMode>(m_corners->currentData().toInt());
+        m_newSmoothing = m_smoothing->value();
         const PathSource& p = m_scene.path;
-        if (p.kind == PathKind::Polyline &&
-            (drawCorners() != p.corners || drawSmoothing() != p.smoothing))
-            emit drawOptionsChanged(drawCorners(), drawSmoothing());
+        if (!m_drawing && p.kind == PathKind::Polyline &&
+            (m_newCorners != p.corners || m_newSmoothing != p.smoothing))
+            emit drawOptionsChanged(m_newCorners, m_newSmoothing);
     };
-    connect(m_corners, &QComboBox::activated, this, optionsChanged);
+    connect(m_corners, &QComboBox::currentIndexChanged, this, optionsChanged);
     connect(m_smoothing, &QDoubleSpinBox::valueChanged, this, optionsChanged);
     m_graph->setChecked(true);
+    m_from->setValue(m_graphRange.first);
+    m_to->setValue(m_graphRange.second);
     updateKind();
 }
 
-CornerMode PathPanel::drawCorners() const {
-    return static_cast<CornerMode>(m_corners->currentData().toInt());
+void PathPanel::showDrawSettings() {
+    const PathSource& p = m_scene.path;
+    const bool shown = !m_drawing && p.kind == PathKind::Polyline;
+    m_showing = true;
+    m_corners->setCurrentIndex(m_corners->findData(int(shown ? p.corners : m_newCorners)));
+    m_smoothing->setValue(shown ? p.smoothing : m_newSmoothing);
+    m_showing = false;
 }
 
 void PathPanel::keyPressEvent(QKeyEvent* e) {
@@ -154,12 +177,14 @@ void PathPanel::keyPressEvent(QKeyEvent* e) {
     QWidget::keyPressEvent(e);
 }
 
-double PathPanel::drawSmoothing() const {
-    return m_smoothing->value();
-}
-
 void PathPanel::updateKind() {
     bool graph = m_graph->isChecked();
+    if (graph != m_rangeIsGraph) { // each kind's range comes back with it
+        rangeOf(m_rangeIsGraph) = {m_from->value(), m_to->value()};
+        m_rangeIsGraph = graph;
+        m_from->setValue(rangeOf(graph).first);
+        m_to->setValue(rangeOf(graph).second);
+    }
     m_y->setEnabled(graph);
     m_xu->setEnabled(!graph);
     m_yu->setEnabled(!graph);
@@ -172,8 +197,12 @@ void PathPanel::setScene(const Scene& scene) {
     int preset = m_preset->findText(QString::fromStdString(scene.preset));
     m_preset->setCurrentIndex(preset > 0 ? preset : 0);
     m_presetInfo->setText(QString::fromStdString(presetDescription(scene.preset)));
+    m_presetInfo->setVisible(!m_presetInfo->text().isEmpty()); // no empty line under the box
+    showDrawSettings();
     if (p.kind != PathKind::Polyline) {
-        (p.kind == PathKind::Graph ? m_graph : m_parametric)->setChecked(true);
+        const bool graph = p.kind == PathKind::Graph;
+        rangeOf(graph) = {p.from, p.to};
+        (graph ? m_graph : m_parametric)->setChecked(true);
         m_y->setText(QString::fromStdString(p.y));
         m_xu->setText(QString::fromStdString(p.xOfU));
         m_yu->setText(QString::fromStdString(p.yOfU));
@@ -181,10 +210,6 @@ void PathPanel::setScene(const Scene& scene) {
         m_to->setValue(p.to);
         m_polylineInfo->clear();
     } else {
-        m_corners->setCurrentIndex(m_corners->findData(int(p.corners)));
-        m_smoothing->blockSignals(true);
-        m_smoothing->setValue(p.smoothing);
-        m_smoothing->blockSignals(false);
         m_polylineInfo->setText(
             tr("Current path: %1 drawn points, %2 corners")
                 .arg(p.points.size())

@@ -3,6 +3,8 @@
 
 #include <QWidget>
 
+#include <utility>
+
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -14,7 +16,9 @@ namespace chaplygin::ui {
 
 /// The path editor: the paper's presets, a typed graph y(x) or parametric x(u), y(u) with its
 /// range (errors inline; the last valid path stays), and freehand drawing on the canvas with
-/// pivot or smooth corners.
+/// pivot or smooth corners. The graph and the parametric path keep a range each. The corner
+/// settings belong to the drawn path they show: a loaded scene's drawn path shows its own, and a
+/// new drawing starts with the user's own choice (smooth, 3 spacings until one is made).
 class PathPanel : public QWidget {
     Q_OBJECT
   public:
@@ -25,9 +29,11 @@ class PathPanel : public QWidget {
     /// Shows an error under the expressions (empty clears it).
     void showError(const QString& message);
     QString errorText() const;
-    CornerMode drawCorners() const;
-    /// Spline bandwidth for smooth drawn paths, in point spacings (0 interpolates).
-    double drawSmoothing() const;
+    /// The corners a new drawing gets.
+    CornerMode drawCorners() const { return m_newCorners; }
+    /// Spline bandwidth for a new smooth drawing, in point spacings (0 interpolates).
+    double drawSmoothing() const { return m_newSmoothing; }
+    QDoubleSpinBox* smoothingSpin() const { return m_smoothing; }
 
     QLineEdit* graphEdit() const { return m_y; }
     QLineEdit* xOfUEdit() const { return m_xu; }
@@ -35,6 +41,7 @@ class PathPanel : public QWidget {
     QDoubleSpinBox* fromSpin() const { return m_from; }
     QDoubleSpinBox* toSpin() const { return m_to; }
     QRadioButton* parametricButton() const { return m_parametric; }
+    QRadioButton* graphButton() const { return m_graph; }
     QPushButton* applyButton() const { return m_apply; }
     QPushButton* drawButton() const { return m_draw; }
     QComboBox* presetBox() const { return m_preset; }
@@ -54,6 +61,10 @@ class PathPanel : public QWidget {
   private:
     void applyTyped();
     void updateKind();
+    /// The corner widgets show the current drawn path's settings, or in draw mode (and for a
+    /// path that is not drawn) those of the next drawing.
+    void showDrawSettings();
+    std::pair<double, double>& rangeOf(bool graph) { return graph ? m_graphRange : m_uRange; }
 
     Scene m_scene;
     QComboBox* m_preset;
@@ -72,6 +83,12 @@ class PathPanel : public QWidget {
     QComboBox* m_corners;
     QDoubleSpinBox* m_smoothing;
     QLabel* m_polylineInfo;
+    bool m_drawing = false;
+    bool m_showing = false; // the widgets are being set to show settings, not changed by the user
+    CornerMode m_newCorners;
+    double m_newSmoothing;
+    bool m_rangeIsGraph = true; // which kind's range the spin boxes show
+    std::pair<double, double> m_graphRange, m_uRange;
 };
 
 } // namespace chaplygin::ui

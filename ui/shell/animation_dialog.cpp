@@ -2,12 +2,13 @@
 
 #include "common/atomic_file.h"
 #include "common/input_error.h"
+#include "document/file_dialogs.h"
 
 #include <QCheckBox>
 #include <QCoreApplication>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
-#include <QFileDialog>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -80,9 +81,11 @@ AnimationSettings AnimationDialog::settings() const {
 }
 
 void AnimationDialog::browse() {
-    QString path = QFileDialog::getSaveFileName(
-        this, tr("Export animation"), m_file->text(),
-        tr("GIF (*.gif);;MP4 video (*.mp4);;PNG frames into a folder (*)"));
+    const QFileInfo current(m_file->text().trimmed());
+    QString path = chooseSaveFile(
+        this, tr("Export animation"), QStringLiteral("animation"),
+        current.completeBaseName().isEmpty() ? QStringLiteral("clip") : current.completeBaseName(),
+        tr("MP4 video (*.mp4);;GIF (*.gif);;PNG frames into a folder (*)"));
     if (!path.isEmpty())
         m_file->setText(path);
 }

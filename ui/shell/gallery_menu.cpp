@@ -11,7 +11,7 @@ namespace {
     QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu",
                       "A corner in constant-energy mode: pivot in place"),
     QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu", "A cusp: the sleigh backs up"),
-    QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu", "Very high curvature, b kappa = 1000"),
+    QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu", "Very high curvature, b\u03ba = 1000"),
     QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu", "A long horizon: t = 5000 s"),
     QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu",
                       "Open-loop integration of (36)-(37) drifts off the path"),

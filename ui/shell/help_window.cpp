@@ -1,5 +1,7 @@
 #include "shell/help_window.h"
 
+#include "document/math_text.h"
+
 #include <QAbstractTextDocumentLayout>
 #include <QFile>
 #include <QHBoxLayout>
@@ -65,6 +67,7 @@ HelpWindow::HelpWindow(QWidget* parent) : QWidget(parent, Qt::Window) {
     });
     // links between the documents ("physics.md#...") stay in the window
     connect(m_browser, &QTextBrowser::sourceChanged, this, [this](const QUrl& url) {
+        setDottedSymbolFont(*m_browser->document()); // φ̇ with its dot on the φ
         m_current = url.fileName();
         int row = documents().indexOf(m_current);
         if (row >= 0 && m_list->currentRow() != row)

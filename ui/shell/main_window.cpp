@@ -4,6 +4,7 @@
 #include "common/atomic_file.h"
 #include "common/input_error.h"
 #include "document/file_dialogs.h"
+#include "document/method_names.h"
 #include "document/pin_set.h"
 #include "document/scene_command.h"
 #include "document/scene_document.h"
@@ -22,8 +23,10 @@
 #include "shell/body_display_menu.h"
 #include "shell/dock_layout.h"
 #include "shell/elided_label.h"
+#include "shell/export_report.h"
 #include "shell/gallery_menu.h"
 #include "shell/instruments.h"
+#include "shell/introduction_window.h"
 #include "shell/language_menu.h"
 #include "shell/perturbation_controls.h"
 #include "shell/playback.h"
@@ -35,6 +38,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -70,6 +74,7 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     addToolBar(Qt::BottomToolBarArea, m_timeline);
     m_status = new ElidedLabel;
     statusBar()->addWidget(m_status, 1);
+    m_exportReport = new ExportReport(statusBar());
     m_presentation = new PresentationMode(
         this, m_canvas, m_plots,
         {m_docks.path, m_docks.parameters, m_docks.methods, m_docks.sweep, m_docks.accuracy},
@@ -263,12 +268,33 @@ void MainWindow::buildMenus() {
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&Help for this part of the window"), QKeySequence::HelpContents, this,
                     &MainWindow::showContextHelp);
+    help->addAction(tr("&What am I looking at?"), this, &MainWindow::showIntroduction);
     help->addAction(tr("&User guide"), this, [this] { showHelp(QStringLiteral("user-guide.md")); });
     help->addAction(tr("&Physics notes"), this, [this] { showHelp(QStringLiteral("physics.md")); });
     help->addAction(tr("&Numerical methods"), this,
                     [this] { showHelp(QStringLiteral("numerics.md")); });
     help->addAction(tr("&About Chaplygin Lab"), this,
                     [this] { QMessageBox::about(this, tr("About Chaplygin Lab"), aboutText()); });
+}
+
+IntroductionWindow* MainWindow::showIntroduction() {
+    if (!m_intro)
+        m_intro = new IntroductionWindow(m_useSettings, this);
+    m_intro->show();
+    m_intro->raise();
+    m_intro->activateWindow();
+    return m_intro;
+}
+
+IntroductionWindow* MainWindow::introduction() const {
+    return m_intro;
+}
+
+bool MainWindow::offerIntroduction() {
+    if (!m_useSettings || !IntroductionWindow::dueAtStart(QSettings()))
+        return false;
+    showIntroduction();
+    return true;
 }
 
 void MainWindow::setUserStyle(const CanvasStyle& style) {
@@ -326,7 +352,7 @@ void MainWindow::choosePreset(const QString& name) {
     try {
         Scene next = presetScene(name.toStdString());
         m_document->pathFor(next.path);
-        editScene(next, tr("Preset %1").arg(name));
+        m_document->loadKnown(next, tr("Preset %1").arg(name));
         m_document->flush();
         startNewScene();
         m_canvas->fitScene();
@@ -364,11 +390,7 @@ void MainWindow::onSolutionChanged() {
     m_timeline->sync();
     m_canvas->setTime(m_playback->time());
     m_plots->setTime(m_playback->time());
-    const ModelReport& m = solution->models();
-    m_status->setFullText(
-        tr("path: %1; time law: %2; free motion: %3, %4")
-            .arg(QString::fromStdString(m.path), QString::fromStdString(m.timeLaw),
-                 QString::fromStdString(m.freeVelocity), QString::fromStdString(m.freePosition)));
+    m_status->setFullText(plainModelSummary(*solution)); // the technical words: Accuracy ▸ Details
     if (m_noteScene && m_document->scene() != *m_noteScene) {
         m_noteScene.reset();
         m_accuracy->setNote({}, {});
@@ -402,7 +424,7 @@ bool MainWindow::loadGalleryEntry(const QString& name) {
     m_noteScene = entry.scene;
     m_accuracy->setNote(title, explanation);
     statusBar()->clearMessage(); // an earlier refusal no longer applies
-    editScene(entry.scene, tr("Gallery: %1").arg(title));
+    m_document->loadKnown(entry.scene, tr("Gallery: %1").arg(title));
     m_document->flush();
     startNewScene();
     m_canvas->fitScene();
@@ -471,7 +493,7 @@ bool MainWindow::exportPlotsTo(const QString& dir, const QStringList& formats) {
         showFileError(QString::fromStdString(e.what()));
         return false;
     }
-    statusBar()->showMessage(tr("Plots written to %1").arg(dir), 4000);
+    m_exportReport->report(tr("Plots written to %1").arg(QDir::toNativeSeparators(dir)), dir);
     return true;
 }
 
@@ -483,7 +505,8 @@ bool MainWindow::exportCsvTo(const QString& path) {
         showFileError(QString::fromStdString(e.what()));
         return false;
     }
-    statusBar()->showMessage(tr("CSV written to %1").arg(path), 4000);
+    m_exportReport->report(tr("CSV written to %1").arg(QDir::toNativeSeparators(path)),
+                           QFileInfo(path).absolutePath());
     return true;
 }
 
@@ -527,16 +550,33 @@ void MainWindow::showSweepDock() {
 void MainWindow::exportAnimationDialog() {
     AnimationSettings initial;
     initial.speedFactor = m_playback->speedFactor();
+    // a file in a folder that exists, never one relative to wherever the program was started
+    const QString clip =
+        sceneFileStem(m_document->scene(), m_document->fileName()) +
+        (findFfmpeg().isEmpty() ? QStringLiteral("-frames/") : QStringLiteral(".mp4"));
+    initial.file = QDir(lastFolder(QStringLiteral("animation"))).filePath(clip);
     AnimationDialog dialog(initial, this);
-    if (dialog.exec() == QDialog::Accepted)
-        exportAnimationTo(dialog.settings());
+    if (dialog.exec() != QDialog::Accepted)
+        return;
+    AnimationSettings chosen = dialog.settings();
+    if (QFileInfo(chosen.file).isRelative()) // a typed name goes beside the proposed one
+        chosen.file = QDir(lastFolder(QStringLiteral("animation"))).filePath(chosen.file);
+    exportAnimationTo(chosen);
 }
 
 bool MainWindow::exportAnimationTo(const AnimationSettings& settings) {
     QString error;
     m_lastFileError.clear();
     if (exportAnimationWithProgress(this, m_document, settings, &error)) {
-        statusBar()->showMessage(tr("Wrote %1").arg(settings.file), 5000);
+        const QFileInfo written(settings.file);
+        const bool frames = animationFormatOf(settings.file) == AnimationFormat::PngFrames;
+        const QString folder = frames ? QDir(settings.file).absolutePath() : written.absolutePath();
+        rememberFolder(QStringLiteral("animation"), folder);
+        m_exportReport->report(
+            frames ? tr("Frames written to %1").arg(QDir::toNativeSeparators(folder))
+                   : tr("Animation written to %1")
+                         .arg(QDir::toNativeSeparators(written.absoluteFilePath())),
+            folder);
         return true;
     }
     if (error.isEmpty())

@@ -4,6 +4,7 @@
 #include "shell/dock_layout.h"
 
 #include <QMainWindow>
+#include <QPointer>
 
 #include <functional>
 #include <optional>
@@ -20,7 +21,9 @@ class AccuracyReadout;
 class BodyDisplayMenu;
 struct CanvasStyle;
 class ElidedLabel;
+class ExportReport;
 class HelpWindow;
+class IntroductionWindow;
 class PresentationMode;
 class MethodsPanel;
 class ParametersPanel;
@@ -94,12 +97,20 @@ class MainWindow : public QMainWindow {
     PresentationMode* presentation() const { return m_presentation; }
     BodyDisplayMenu* bodyDisplayMenu() const { return m_bodyMenu; }
     ElidedLabel* statusLabel() const { return m_status; }
+    /// What the last export wrote, and where (the status bar's "Open folder").
+    ExportReport* exportReport() const { return m_exportReport; }
     QAction* redoAction() const { return m_redoAction; }
     /// Whether a new scene (preset, gallery, typed or drawn path) starts playing at t = 0
     /// (QSettings "animation/playNewScenes"); otherwise it waits, paused, at t = 0.
     QAction* playNewScenesAction() const { return m_playNewScenes; }
     /// The help window (created on first use), showing document at section.
     HelpWindow* showHelp(const QString& document = {}, const QString& section = {});
+    /// Help > What am I looking at?: the explanation window (created on first use).
+    IntroductionWindow* showIntroduction();
+    /// At start: the explanation, unless dismissed ("Don't show this at start"); never for a
+    /// window without user settings (tests, screenshots). Returns whether it was shown.
+    bool offerIntroduction();
+    IntroductionWindow* introduction() const;
     /// F1: the help section about the widget that has the focus.
     void showContextHelp();
     /// Loads the paper's preset number index (0 ... 3; keys 1 ... 4).
@@ -160,9 +171,11 @@ class MainWindow : public QMainWindow {
     QMenu* m_recentMenu = nullptr;
     QAction* m_followAction = nullptr;
     ElidedLabel* m_status;
+    ExportReport* m_exportReport;
     PresentationMode* m_presentation = nullptr;
     BodyDisplayMenu* m_bodyMenu = nullptr;
     HelpWindow* m_help = nullptr;
+    QPointer<IntroductionWindow> m_intro;
     QAction* m_redoAction = nullptr;
     QAction* m_playNewScenes = nullptr;
     int m_galleryIndex = -1;
