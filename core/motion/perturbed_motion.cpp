@@ -29,12 +29,6 @@ namespace {
 
 enum Index { kX, kY, kPhi, kPsi, kU };
 
-// the feedback law at one state (docs/physics.md §9)
-struct FeedbackValues {
-    PathProjection projection;
-    double theta = 0, psidot = 0, sdotPath = 0;
-};
-
 } // namespace
 
 class PerturbedMotion::Problem final : public OdeProblem {
@@ -57,51 +51,64 @@ class PerturbedMotion::Problem final : public OdeProblem {
             f[kPsi] = m_nominal->at(t).lambda / (m_sys.mass * b) + a / b * phidot;
             return;
         }
-        const FeedbackValues v = feedback(y);
-        f[kPsi] = v.psidot;
-        f[kU] = v.sdotPath / v.projection.point.speed;
+        const FeedbackLawValues v = feedback(y);
+        f[kPsi] = psidot(v);
+        f[kU] = v.sdotPath / v.closest.point.speed;
     }
 
     void jacobian(double, const double*, double*, double*) const override {
         throw std::logic_error("internal error: the perturbed bodies have no Jacobian");
     }
 
-    FeedbackValues feedback(const double* y) const {
+    FeedbackLawValues feedback(const double* y) const {
         const double b = m_sys.b, bc = m_spec.controllerB;
         const double sinPsi = std::sin(y[kPsi]), cosPsi = std::cos(y[kPsi]);
         const double sdot = m_vT * sinPsi;
-        FeedbackValues v;
-        v.projection = m_frame.project(y[kX], y[kY], y[kU]);
-        const PathPoint& p = v.projection.point;
+        FeedbackLawValues v;
+        v.closest = m_frame.project(y[kX], y[kY], y[kU]);
+        const PathPoint& p = v.closest.point;
         v.theta = y[kPhi] - p.phi;
+        v.kappaBody = cosPsi / (b * sinPsi); // phidot/sdot, measured
         PathError err;
-        err.e = v.projection.e;
+        err.e = v.closest.e;
         err.theta = v.theta;
-        err.kappaBody = cosPsi / (b * sinPsi); // phidot/sdot, measured
+        err.kappaBody = v.kappaBody;
         err.kappa = p.kappa;
         err.dkappa = p.dkappa;
         err.ddkappa = p.ddkappa;
         v.sdotPath = sdot * std::cos(v.theta) / (1 - p.kappa * err.e);
         const ChainedForm z = chainedForm(err);
-        const double rate = curvatureRate(z, triplePoleInput(z, m_spec.rate));
+        v.z2 = z.z2;
+        v.z3 = z.z3;
+        v.z4 = z.z4;
+        v.drift = z.drift;
+        v.gain = z.gain;
+        v.u = triplePoleInput(z, m_spec.rate);
+        v.curvatureRate = curvatureRate(z, v.u);
         // the controller turns the rate into lambda with its own b; the plant's Psidot is then
         // (b_c/b) times the controller's (docs/physics.md §9)
-        v.psidot = bc / b * psiRateForCurvatureRate(bc, err.kappaBody, v.sdotPath, rate);
-        if (m_spec.psiLimit)
-            v.psidot = std::clamp(v.psidot, -*m_spec.psiLimit, *m_spec.psiLimit);
+        v.psidotAsked =
+            bc / b * psiRateForCurvatureRate(bc, v.kappaBody, v.sdotPath, v.curvatureRate);
+        v.saturated = m_spec.psiLimit && std::abs(v.psidotAsked) > *m_spec.psiLimit;
         return v;
+    }
+
+    // the Psidot applied: the law's, within the bound
+    double psidot(const FeedbackLawValues& v) const {
+        return m_spec.psiLimit ? std::clamp(v.psidotAsked, -*m_spec.psiLimit, *m_spec.psiLimit)
+                               : v.psidotAsked;
     }
 
     // why the chained form no longer holds at this state, or empty
     std::string outsideDomain(const double* y) const {
-        const FeedbackValues v = feedback(y);
+        const FeedbackLawValues v = feedback(y);
         if (std::sin(y[kPsi]) <= 1e-3)
             return "Psi reaches " + formatNumber(y[kPsi]) + " rad: the body stops moving forward";
         if (std::cos(v.theta) <= 1e-3)
             return "the heading error reaches " + formatNumber(v.theta) + " rad (pi/2)";
-        if (1 - v.projection.point.kappa * v.projection.e <= 1e-3)
+        if (1 - v.closest.point.kappa * v.closest.e <= 1e-3)
             return "the body reaches the path's centre of curvature (1 - kappa e = 0)";
-        if (!std::isfinite(v.psidot))
+        if (!std::isfinite(v.psidotAsked))
             return "the feedback is not finite";
         return {};
     }
@@ -121,11 +128,11 @@ class PerturbedMotion::Problem final : public OdeProblem {
             s.psidot = s.lambda / (m * b) + a / b * s.phidot;
             return s;
         }
-        const FeedbackValues v = feedback(y);
-        s.psidot = v.psidot;
+        s.law = feedback(y);
+        s.psidot = psidot(s.law);
         s.lambda = m * (b * s.psidot - a * s.phidot);
-        s.error = v.projection.e;
-        s.pathS = v.projection.point.s;
+        s.error = s.law.closest.e;
+        s.pathS = s.law.closest.point.s;
         return s;
     }
 

@@ -39,14 +39,30 @@ struct PerturbationSpec {
     double controllerB = 1;         ///< the b the feedback assumes [m]
 };
 
+/// The feedback law at one state of the closed-loop body (docs/physics.md §9), each step of
+/// u = -P^3 z2 - 3 P^2 z3 - 3 P z4 to the Psidot applied.
+struct FeedbackLawValues {
+    PathProjection closest;        ///< s_p, the lateral error e and the path's geometry there
+    double theta = 0;              ///< heading error phi - phi_path(s_p) [rad]
+    double kappaBody = 0;          ///< the body's path curvature phidot/sdot [1/m]
+    double sdotPath = 0;           ///< the closest point's speed ds_p/dt [m/s]
+    double z2 = 0, z3 = 0, z4 = 0; ///< the chained form: e [m], (1 - kappa e) tan theta, z3'
+    double drift = 0, gain = 0;    ///< F and G of z4' = G kappa_b' + F
+    double u = 0;                  ///< the triple pole's input [1/m^2]
+    double curvatureRate = 0;      ///< kappa_b' = (u - F)/G [1/m^2]
+    double psidotAsked = 0;        ///< Psidot before the |Psidot| bound [rad/s]
+    bool saturated = false;        ///< the bound holds Psidot
+};
+
 /// One perturbed body at time t.
 struct PerturbedState {
     double x = 0, y = 0, phi = 0, psi = 0;
     double sdot = 0, phidot = 0, psidot = 0;
-    double lambda = 0; ///< the control input m (b Psidot - a phidot) [kg m/s]
-    double energy = 0; ///< (m/2)(sdot^2 + b^2 phidot^2) [J]
-    double error = 0;  ///< feedback body: lateral error e at the closest path point [m]
-    double pathS = 0;  ///< feedback body: that point's arc length s_p [m]
+    double lambda = 0;     ///< the control input m (b Psidot - a phidot) [kg m/s]
+    double energy = 0;     ///< (m/2)(sdot^2 + b^2 phidot^2) [J]
+    double error = 0;      ///< feedback body: lateral error e at the closest path point [m]
+    double pathS = 0;      ///< feedback body: that point's arc length s_p [m]
+    FeedbackLawValues law; ///< feedback body: the law's values (default for the open loop)
 };
 
 /// The perturbed body's knife point and its velocity at one accepted step of the integration.

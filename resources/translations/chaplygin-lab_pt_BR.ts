@@ -141,6 +141,54 @@
         <source>V = √(ṡ₀² + b²φ̇₀²), k = aV/b², c = atanh(ṡ₀/V)</source>
         <translation>V = √(ṡ₀² + b²φ̇₀²), k = aV/b², c = atanh(ṡ₀/V)</translation>
     </message>
+    <message>
+        <source>Feedback law (closed loop)</source>
+        <translation>Lei de realimentação (malha fechada)</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;The feedback body against its closest path point: s_p = %1 m, κ = %2 1/m, κ′ = %3 1/m²; feedback rate P = %4 1/m&lt;/p&gt;</source>
+        <translation>&lt;p&gt;O corpo realimentado diante do ponto mais próximo da trajetória: s_p = %1 m, κ = %2 1/m, κ′ = %3 1/m²; taxa de realimentação P = %4 1/m&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>lateral error, &gt; 0 to the left of the path</source>
+        <translation>erro lateral, &gt; 0 à esquerda da trajetória</translation>
+    </message>
+    <message>
+        <source>heading error</source>
+        <translation>erro de rumo</translation>
+    </message>
+    <message>
+        <source>= dz₂/ds_p</source>
+        <translation>= dz₂/ds_p</translation>
+    </message>
+    <message>
+        <source>= dz₃/ds_p</source>
+        <translation>= dz₃/ds_p</translation>
+    </message>
+    <message>
+        <source>a triple pole at −P in path length: e‴ + 3Pe″ + 3P²e′ + P³e = 0</source>
+        <translation>um polo triplo em −P no comprimento da trajetória: e‴ + 3Pe″ + 3P²e′ + P³e = 0</translation>
+    </message>
+    <message>
+        <source>dz₄/ds_p = Gκ_b′ + F, G = (1 − κe)² sec³θ</source>
+        <translation>dz₄/ds_p = Gκ_b′ + F, G = (1 − κe)² sec³θ</translation>
+    </message>
+    <message>
+        <source>; held at the limit |Ψ̇| ≤ %1 rad/s</source>
+        <translation>; mantido no limite |Ψ̇| ≤ %1 rad/s</translation>
+    </message>
+    <message>
+        <source>from κ_b = cot Ψ/b</source>
+        <translation>de κ_b = cot Ψ/b</translation>
+    </message>
+    <message>
+        <source>the controller&apos;s b_c = %1 m differs from the plant&apos;s</source>
+        <translation>o b_c = %1 m do controlador difere do da planta</translation>
+    </message>
+    <message>
+        <source>workless: the energy stays (m_eff/2)(ṡ² + b²φ̇²) = %1 J</source>
+        <translation>sem trabalho: a energia fica (m_eff/2)(ṡ² + b²φ̇²) = %1 J</translation>
+    </message>
 </context>
 <context>
     <name>MethodNames</name>
@@ -316,6 +364,14 @@ realimentação: %2</translation>
         <translation>Ψ vakonômico</translation>
     </message>
     <message>
+        <source>free</source>
+        <translation>livre</translation>
+    </message>
+    <message>
+        <source>vakonomic</source>
+        <translation>vakonômico</translation>
+    </message>
+    <message>
         <source>vakonomic χ</source>
         <translation>χ vakonômico</translation>
     </message>
@@ -396,6 +452,14 @@ realimentação: %2</translation>
     <message>
         <source>Export this plot…</source>
         <translation>Exportar este gráfico…</translation>
+    </message>
+    <message>
+        <source>Fit all curves</source>
+        <translation>Enquadrar todas as curvas</translation>
+    </message>
+    <message>
+        <source>Show the free and vakonomic curves whole instead of clipping them at the frame</source>
+        <translation>Mostrar as curvas livre e vakonômica inteiras em vez de cortá-las na moldura</translation>
     </message>
     <message>
         <source>Export the plot</source>

@@ -236,6 +236,18 @@ plots_all_formats)
     head -c 5 "$work/plots/$stem.pdf" | grep -q '%PDF-' || fail "$stem.pdf is not a PDF"
     grep -q '<svg' "$work/plots/$stem.svg" || fail "$stem.svg is not an SVG"
   done
+  # the error plot only with a perturbation
+  [ -e "$work/plots/tracking_error.png" ] && fail "tracking_error.png without a perturbation"
+  ;;
+plots_perturbed)
+  # docs/physics.md §9: with a perturbation --plots adds the pushed bodies' error plot
+  run 0 --preset sinusoid --perturb t_push=3 --perturb push_dy=0.15 --perturb push_psi=0.4 \
+    --plots "$work/plots" --format png,svg
+  for stem in psi chi lambda energy trajectory paper_figure tracking_error; do
+    head -c 8 "$work/plots/$stem.png" | od -An -c | grep -q 'P   N   G' || fail "$stem.png is not a PNG"
+    grep -q '<svg' "$work/plots/$stem.svg" || fail "$stem.svg is not an SVG"
+  done
+  grep -q 'lateral error e' "$work/plots/tracking_error.svg" || fail "the error plot has no e axis"
   ;;
 work_precision)
   # --work-precision: >= 6 methods per problem, an error <= 1e-10 on both, one chosen row each, the diagram

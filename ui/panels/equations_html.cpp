@@ -279,6 +279,96 @@ QString freeBody(const At& at) {
     return h;
 }
 
+// the closed-loop body's feedback law at t (docs/physics.md §9), when the scene has a perturbation
+QString feedbackLaw(const At& at) {
+    const auto& [s, t, m, c, d, energy, pivot, v] = at;
+    const PerturbedState fb = s.feedback()->at(t);
+    const FeedbackLawValues& law = fb.law;
+    const FeedbackLawValues& z = law;
+    const PathPoint& p = law.closest.point;
+    const Perturbation& spec = *s.scene().perturbation;
+    const double rate = spec.feedbackRate;
+    const double bc = spec.controllerB.value_or(d.b);
+    QString h;
+    h += section(QCoreApplication::translate("EquationsPanel", "Feedback law (closed loop)"));
+    h += QCoreApplication::translate(
+             "EquationsPanel",
+             "<p>The feedback body against its closest path point: s_p = %1 m, \u03ba = %2 1/m, "
+             "\u03ba\u2032 = %3 1/m\u00b2; feedback rate P = %4 1/m</p>")
+             .arg(num(p.s), num(p.kappa), num(p.dkappa), num(rate));
+    h += row(QStringLiteral("z\u2082 = e"), {}, z.z2, QStringLiteral("m"),
+             QCoreApplication::translate("EquationsPanel",
+                                         "lateral error, > 0 to the left of the path"));
+    h += row(QStringLiteral("\u03b8 = \u03c6 \u2212 \u03c6_path(s_p)"),
+             QStringLiteral("%1 \u2212 %2").arg(num(fb.phi), num(p.phi)), law.theta,
+             QStringLiteral("rad"), QCoreApplication::translate("EquationsPanel", "heading error"));
+    h += row(QStringLiteral("z\u2083 = (1 \u2212 \u03bae) tan \u03b8"),
+             QStringLiteral("(1 \u2212 %1 \u00b7 %2) tan %3")
+                 .arg(num(p.kappa), num(z.z2), num(law.theta)),
+             z.z3, {}, QCoreApplication::translate("EquationsPanel", "= dz\u2082/ds_p"));
+    h += row(
+        QStringLiteral("z\u2084 = \u2212\u03ba\u2032e tan \u03b8 \u2212 "
+                       "\u03ba(1 \u2212 \u03bae)(tan\u00b2\u03b8 + sec\u00b2\u03b8) + "
+                       "\u03ba_b(1 \u2212 \u03bae)\u00b2 sec\u00b3\u03b8"),
+        QStringLiteral("\u2026 with \u03ba_b = \u03c6\u0307/\u1e61 = %1").arg(num(law.kappaBody)),
+        z.z4, QStringLiteral("1/m"),
+        QCoreApplication::translate("EquationsPanel", "= dz\u2083/ds_p"));
+    h += row(QStringLiteral("u = \u2212P\u00b3z\u2082 \u2212 3P\u00b2z\u2083 \u2212 3Pz\u2084"),
+             QStringLiteral("\u2212%1\u00b3 \u00b7 %2 \u2212 3 \u00b7 %1\u00b2 \u00b7 %3 "
+                            "\u2212 3 \u00b7 %1 \u00b7 %4")
+                 .arg(num(rate), num(z.z2), num(z.z3), num(z.z4)),
+             law.u, QStringLiteral("1/m\u00b2"),
+             QCoreApplication::translate(
+                 "EquationsPanel",
+                 "a triple pole at \u2212P in path length: e\u2034 + 3Pe\u2033 + 3P\u00b2"
+                 "e\u2032 + P\u00b3"
+                 "e = 0"));
+    h += row(QStringLiteral("\u03ba_b\u2032 = (u \u2212 F)/G"),
+             QStringLiteral("(%1 \u2212 %2)/%3").arg(num(law.u), num(z.drift), num(z.gain)),
+             law.curvatureRate, QStringLiteral("1/m\u00b2"),
+             QCoreApplication::translate(
+                 "EquationsPanel",
+                 "dz\u2084/ds_p = G\u03ba_b\u2032 + F, G = (1 \u2212 \u03ba"
+                 "e)\u00b2 "
+                 "sec\u00b3\u03b8"));
+    const QString bound =
+        law.saturated ? QCoreApplication::translate("EquationsPanel",
+                                                    "; held at the limit |\u03a8\u0307| \u2264 %1 "
+                                                    "rad/s")
+                            .arg(num(spec.feedbackLimit.value_or(0)))
+                      : QString();
+    if (bc == d.b)
+        h += row(QStringLiteral("\u03a8\u0307 = \u2212b \u1e61_p \u03ba_b\u2032/(1 + "
+                                "b\u00b2\u03ba_b\u00b2)"),
+                 QStringLiteral("\u2212%1 \u00b7 %2 \u00b7 %3/(1 + %1\u00b2 \u00b7 %4\u00b2)")
+                     .arg(num(d.b), num(law.sdotPath), num(law.curvatureRate), num(law.kappaBody)),
+                 fb.psidot, QStringLiteral("rad/s"),
+                 QCoreApplication::translate("EquationsPanel", "from \u03ba_b = cot \u03a8/b") +
+                     bound);
+    else
+        h += row(QStringLiteral("\u03a8\u0307 = \u2212(b_c/b) b_c \u1e61_p "
+                                "\u03ba_b\u2032/(1 + b_c\u00b2\u03ba_b\u00b2)"),
+                 QStringLiteral("\u2212(%1/%2) %1 \u00b7 %3 \u00b7 %4/(1 + %1\u00b2 \u00b7 "
+                                "%5\u00b2)")
+                     .arg(num(bc), num(d.b), num(law.sdotPath), num(law.curvatureRate),
+                          num(law.kappaBody)),
+                 fb.psidot, QStringLiteral("rad/s"),
+                 QCoreApplication::translate("EquationsPanel",
+                                             "the controller's b_c = %1 m differs from the "
+                                             "plant's")
+                         .arg(num(bc)) +
+                     bound);
+    h += row(QStringLiteral("\u03bb_fb = m_eff(b\u03a8\u0307 \u2212 a\u03c6\u0307)"),
+             QStringLiteral("%1 (%2 \u00b7 %3 \u2212 %4 \u00b7 %5)")
+                 .arg(num(d.mass), num(d.b), num(fb.psidot), num(d.a), num(fb.phidot)),
+             fb.lambda, QStringLiteral("kg m/s"),
+             QCoreApplication::translate("EquationsPanel",
+                                         "workless: the energy stays (m_eff/2)(\u1e61\u00b2 + "
+                                         "b\u00b2\u03c6\u0307\u00b2) = %1 J")
+                 .arg(num(fb.energy)));
+    return h;
+}
+
 } // namespace
 
 QString equationsHtml(const Solution& s, double t) {
@@ -295,6 +385,8 @@ QString equationsHtml(const Solution& s, double t) {
     QString h = QStringLiteral("<html><body>") + header(at);
     for (QString (*part)(const At&) : {controlAngle, velocities, multiplier, forces, freeBody})
         h += part(at);
+    if (s.perturbed())
+        h += feedbackLaw(at);
     return h + QStringLiteral("</body></html>");
 }
 

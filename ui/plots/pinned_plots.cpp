@@ -2,6 +2,7 @@
 
 #include "document/pin_set.h"
 #include "plots/plot_figures.h"
+#include "plots/time_axes.h"
 
 #include <qcustomplot.h>
 
@@ -53,10 +54,11 @@ void addPinnedSeries(QCustomPlot& plot, PlotKind kind, PinSet& pins) {
         QColor c = PinSet::color(i);
         c.setAlpha(170);
         g->setPen(QPen(c, 1.5));
-        g->rescaleAxes(true);
+        setControlled(*g); // a controlled run: it sets the value range too
         if (legend)
             g->addToLegend(legend);
     }
+    fitTimeAxes(*rect);
     // the legend under a plot wraps into rows of three so that every name stays readable
     if (legend && legend->fillOrder() == QCPLegend::foColumnsFirst) {
         legend->setProperty("maxColumns", 3);

@@ -4,6 +4,7 @@
 #include "common/input_error.h"
 #include "document/file_dialogs.h"
 #include "plots/plot_export.h"
+#include "plots/time_axes.h"
 
 #include <QFileInfo>
 #include <QMenu>
@@ -33,6 +34,26 @@ void exportPlotFile(QCustomPlot& plot, const QString& path) {
 
 QMenu* plotExportMenu(QCustomPlot* plot) {
     return plot->findChild<QMenu*>(QStringLiteral("plotExportMenu"));
+}
+
+QAction* fitAllAction(QCustomPlot* plot) {
+    QMenu* menu = plotExportMenu(plot);
+    return menu ? menu->findChild<QAction*>(QStringLiteral("fitAllCurves")) : nullptr;
+}
+
+void installFitAllAction(QCustomPlot* plot) {
+    QMenu* menu = plotExportMenu(plot);
+    if (!menu)
+        return;
+    QAction* action = menu->addAction(QObject::tr("Fit all curves"));
+    action->setObjectName(QStringLiteral("fitAllCurves"));
+    action->setToolTip(QObject::tr("Show the free and vakonomic curves whole instead of clipping "
+                                   "them at the frame"));
+    action->setCheckable(true);
+    QObject::connect(action, &QAction::toggled, plot, [plot](bool on) {
+        setFitAllCurves(*plot, on);
+        plot->replot(QCustomPlot::rpQueuedReplot);
+    });
 }
 
 void installPlotExportMenu(QCustomPlot* plot, std::function<QString()> stem,

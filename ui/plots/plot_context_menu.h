@@ -3,6 +3,7 @@
 
 #include <functional>
 
+class QAction;
 class QCustomPlot;
 class QMenu;
 
@@ -17,6 +18,13 @@ void exportPlotFile(QCustomPlot& plot, const QString& path);
 /// onError receives the message when the export fails.
 void installPlotExportMenu(QCustomPlot* plot, std::function<QString()> stem,
                            std::function<void(const QString&)> onError);
+
+/// Adds "Fit all curves" to the plot's context menu (after installPlotExportMenu): checked, the
+/// value axis holds every curve, not only the controlled ones (fitTimeAxes); the choice is the
+/// plot's and outlives its redrawing.
+void installFitAllAction(QCustomPlot* plot);
+/// That action (for tests), or null.
+QAction* fitAllAction(QCustomPlot* plot);
 
 /// The context menu installPlotExportMenu shows (for tests).
 QMenu* plotExportMenu(QCustomPlot* plot);

@@ -54,8 +54,11 @@ void exportPlots(const Solution& solution, const QString& dir, const QStringList
         throw IoError("cannot create the plot directory '" + dir.toStdString() + "'");
     PlotSeries series = collectSeries(solution, 800, 800);
     QString caption = sceneCaption(solution);
-    for (PlotKind kind : {PlotKind::Psi, PlotKind::Chi, PlotKind::Lambda, PlotKind::Energy,
-                          PlotKind::Trajectory, PlotKind::PaperFigure}) {
+    QList<PlotKind> kinds{PlotKind::Psi,    PlotKind::Chi,        PlotKind::Lambda,
+                          PlotKind::Energy, PlotKind::Trajectory, PlotKind::PaperFigure};
+    if (series.perturbed)
+        kinds << PlotKind::TrackingError;
+    for (PlotKind kind : kinds) {
         QCustomPlot plot;
         drawPlot(plot, kind, series);
         addCaption(plot, caption);

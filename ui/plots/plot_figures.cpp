@@ -1,11 +1,15 @@
 #include "plots/plot_figures.h"
 
+#include "plots/axis_fitting.h"
+#include "plots/time_axes.h"
+
 #include <QCoreApplication>
 
 #include <qcustomplot.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace chaplygin::ui {
 namespace {
@@ -24,7 +28,12 @@ QCPGraph* addGraph(QCPAxisRect* rect, const QVector<double>& x, const QVector<do
                    const QString& name, const QColor& color, Qt::PenStyle style = Qt::SolidLine) {
     QCPGraph* g =
         rect->parentPlot()->addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
-    g->setData(x, y, true);
+    // an infinite value is a gap, as NaN is, not a line to the end of the axis
+    QVector<double> finite = y;
+    for (double& v : finite)
+        if (std::isinf(v))
+            v = std::numeric_limits<double>::quiet_NaN();
+    g->setData(x, finite, true);
     g->setName(name);
     g->setPen(QPen(color, 1.5 * t_look.lineScale, style));
     return g;
@@ -39,16 +48,26 @@ QCPCurve* addCurve(QCPAxisRect* rect, const QVector<double>& x, const QVector<do
     return c;
 }
 
-void labels(QCPAxisRect* rect, const QString& x, const QString& y) {
-    rect->axis(QCPAxis::atBottom)->setLabel(x);
-    rect->axis(QCPAxis::atLeft)->setLabel(y);
+// the axis labels; a low plot shows yShort instead of y (setAxisLabels)
+void labels(QCPAxisRect* rect, const QString& x, const QString& y, const QString& yShort = {}) {
+    setAxisLabels(rect->axis(QCPAxis::atBottom), {x});
+    setAxisLabels(rect->axis(QCPAxis::atLeft),
+                  yShort.isEmpty() ? QStringList{y} : QStringList{y, yShort});
 }
 
-// the legend goes in a row under a lone plot (so it never hides a curve), or inside a panel
-void legendIn(QCPAxisRect* rect, QCustomPlot& plot) {
+// the legend goes in a row under a lone plot (so it never hides a curve), under a panel when
+// `under` is the grid and column that hold it, or inside a panel
+void legendIn(QCPAxisRect* rect, QCustomPlot& plot, QCPLayoutGrid* under = nullptr,
+              int column = 0) {
     auto* legend = new QCPLegend;
     QCPLayoutGrid* grid = plot.plotLayout();
-    if (grid->elementCount() == 1 && grid->element(0, 0) == rect) {
+    if (under) {
+        under->addElement(1, column, legend);
+        under->setRowStretchFactor(1, 0.001);
+        legend->setFillOrder(QCPLegend::foRowsFirst); // one entry a row: a narrow panel
+        legend->setBorderPen(Qt::NoPen);
+        legend->setMargins(QMargins(4, 0, 4, 2));
+    } else if (grid->elementCount() == 1 && grid->element(0, 0) == rect) {
         grid->addElement(1, 0, legend);
         grid->setRowStretchFactor(1, 0.001);
         legend->setFillOrder(QCPLegend::foColumnsFirst);
@@ -73,68 +92,89 @@ void legendIn(QCPAxisRect* rect, QCustomPlot& plot) {
 }
 
 void rescale(QCPAxisRect* rect, bool equalAspect = false) {
-    for (QCPAbstractPlottable* p : rect->plottables())
-        p->rescaleAxes(p != rect->plottables().first());
+    // every finite point of every curve, with margins
+    double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+    auto add = [&](double x, double y) {
+        if (!std::isfinite(x) || !std::isfinite(y))
+            return;
+        lo[0] = std::min(lo[0], x);
+        hi[0] = std::max(hi[0], x);
+        lo[1] = std::min(lo[1], y);
+        hi[1] = std::max(hi[1], y);
+    };
+    for (QCPAbstractPlottable* p : rect->plottables()) {
+        if (auto* g = qobject_cast<QCPGraph*>(p))
+            for (const QCPGraphData& d : *g->data())
+                add(d.key, d.value);
+        if (auto* c = qobject_cast<QCPCurve*>(p))
+            for (const QCPCurveData& d : *c->data())
+                add(d.key, d.value);
+    }
     QCPAxis* x = rect->axis(QCPAxis::atBottom);
     QCPAxis* y = rect->axis(QCPAxis::atLeft);
-    for (QCPAxis* a : {x, y})
-        a->setRange(paddedRange(a->range().lower, a->range().upper));
+    x->setRange(paddedRange(lo[0], hi[0]));
+    y->setRange(paddedRange(lo[1], hi[1]));
     if (equalAspect) {
-        // equal scales on x and y whatever the size: redone after every layout
-        QRectF data(QPointF(x->range().lower, y->range().lower),
-                    QPointF(x->range().upper, y->range().upper));
-        QObject::connect(rect->parentPlot(), &QCustomPlot::afterLayout, rect,
-                         [rect, data] { fitEqualAspect(*rect, data); });
+        // equal scales on x and y whatever the size: redone after every layout (installTickers)
+        const QRectF data(QPointF(x->range().lower, y->range().lower),
+                          QPointF(x->range().upper, y->range().upper));
+        rect->setProperty("chaplyginEqualAspect", data);
         fitEqualAspect(*rect, data);
     }
 }
 
+// a time plot: the controlled body sets the value range; the free and vakonomic bodies are
+// clipped at the frame with a mark where they leave (time_axes.h)
 void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSeries& s) {
+    auto controlled = [rect](const QVector<double>& t, const QVector<double>& y,
+                             const QString& name) {
+        setControlled(*addGraph(rect, t, y, name, kControlled));
+    };
+    auto free = [rect](const QVector<double>& t, const QVector<double>& y, const QString& name) {
+        setClipped(*addGraph(rect, t, y, name, kFree, Qt::DashLine),
+                   QCoreApplication::translate("PlotFigures", "free"));
+    };
+    auto vakonomic = [rect](const QVector<double>& t, const QVector<double>& y,
+                            const QString& name) {
+        setClipped(*addGraph(rect, t, y, name, kVakonomic, Qt::DashDotLine),
+                   QCoreApplication::translate("PlotFigures", "vakonomic"));
+    };
     switch (kind) {
     case PlotKind::Psi:
-        addGraph(rect, s.t, s.psi, QCoreApplication::translate("PlotFigures", "controlled \u03a8"),
-                 kControlled);
-        addGraph(rect, s.freeT, s.freePsi,
-                 QCoreApplication::translate("PlotFigures", "free \u03a8"), kFree, Qt::DashLine);
-        addGraph(rect, s.vakT, s.vakPsi,
-                 QCoreApplication::translate("PlotFigures", "vakonomic \u03a8"), kVakonomic,
-                 Qt::DashDotLine);
-        labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03a8 [rad]"));
+        controlled(s.t, s.psi, QCoreApplication::translate("PlotFigures", "controlled \u03a8"));
+        free(s.freeT, s.freePsi, QCoreApplication::translate("PlotFigures", "free \u03a8"));
+        vakonomic(s.vakT, s.vakPsi, QCoreApplication::translate("PlotFigures", "vakonomic \u03a8"));
+        labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03a8 [rad]"),
+               QStringLiteral("\u03a8\n[rad]"));
         break;
     case PlotKind::Chi:
-        addGraph(rect, s.t, s.chi, QCoreApplication::translate("PlotFigures", "controlled \u03c7"),
-                 kControlled);
-        addGraph(rect, s.freeT, s.freeChi,
-                 QCoreApplication::translate("PlotFigures", "free \u03c7 (constant)"), kFree,
-                 Qt::DashLine);
-        addGraph(rect, s.vakT, s.vakChi,
-                 QCoreApplication::translate("PlotFigures", "vakonomic \u03c7"), kVakonomic,
-                 Qt::DashDotLine);
+        controlled(s.t, s.chi, QCoreApplication::translate("PlotFigures", "controlled \u03c7"));
+        free(s.freeT, s.freeChi,
+             QCoreApplication::translate("PlotFigures", "free \u03c7 (constant)"));
+        vakonomic(s.vakT, s.vakChi, QCoreApplication::translate("PlotFigures", "vakonomic \u03c7"));
         labels(rect, QStringLiteral("t [s]"),
-               QStringLiteral("\u03c7 = \u03a8 \u2212 (a/b)\u03c6 [rad]"));
+               QStringLiteral("\u03c7 = \u03a8 \u2212 (a/b)\u03c6 [rad]"),
+               QStringLiteral("\u03c7 [rad]"));
         break;
     case PlotKind::Lambda:
-        addGraph(rect, s.t, s.lambda, QStringLiteral("\u03bb = m b d\u03c7/dt"), kControlled);
-        addGraph(rect, s.vakT, s.vakLambda,
-                 QCoreApplication::translate("PlotFigures", "vakonomic \u03bb (eq. 21)"),
-                 kVakonomic, Qt::DashDotLine);
-        labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03bb [kg m/s]"));
+        controlled(s.t, s.lambda, QStringLiteral("\u03bb = m b d\u03c7/dt"));
+        vakonomic(s.vakT, s.vakLambda,
+                  QCoreApplication::translate("PlotFigures", "vakonomic \u03bb (eq. 21)"));
+        labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03bb [kg m/s]"),
+               QStringLiteral("\u03bb\n[kg m/s]"));
         break;
     case PlotKind::Energy:
-        addGraph(rect, s.t, s.energy, QCoreApplication::translate("PlotFigures", "controlled T"),
-                 kControlled);
-        addGraph(rect, s.freeT, s.freeEnergy, QCoreApplication::translate("PlotFigures", "free T"),
-                 kFree, Qt::DashLine);
-        addGraph(rect, s.vakT, s.vakEnergy,
-                 QCoreApplication::translate("PlotFigures", "vakonomic T"), kVakonomic,
-                 Qt::DashDotLine);
+        controlled(s.t, s.energy, QCoreApplication::translate("PlotFigures", "controlled T"));
+        free(s.freeT, s.freeEnergy, QCoreApplication::translate("PlotFigures", "free T"));
+        vakonomic(s.vakT, s.vakEnergy, QCoreApplication::translate("PlotFigures", "vakonomic T"));
         labels(rect, QStringLiteral("t [s]"),
-               QCoreApplication::translate("PlotFigures", "kinetic energy T [J]"));
+               QCoreApplication::translate("PlotFigures", "kinetic energy T [J]"),
+               QStringLiteral("T [J]"));
         break;
     default:
         break;
     }
-    rescale(rect);
+    fitTimeAxes(*rect);
     legendIn(rect, plot);
 }
 
@@ -169,17 +209,19 @@ void trackingErrorPlot(QCustomPlot& plot, const PlotSeries& s) {
     addGraph(rects[0], s.pertT, s.fbE, QCoreApplication::translate("PlotFigures", "feedback e"),
              t_palette.closedLoop);
     labels(rects[0], QStringLiteral("t [s]"),
-           QCoreApplication::translate("PlotFigures", "lateral error e [m]"));
+           QCoreApplication::translate("PlotFigures", "lateral error e [m]"),
+           QStringLiteral("e [m]"));
     addGraph(rects[1], s.pertT, s.openTheta,
              QCoreApplication::translate("PlotFigures", "open loop \u03b8"), t_palette.openLoop,
              Qt::DotLine);
     addGraph(rects[1], s.pertT, s.fbTheta,
              QCoreApplication::translate("PlotFigures", "feedback \u03b8"), t_palette.closedLoop);
     labels(rects[1], QStringLiteral("t [s]"),
-           QCoreApplication::translate("PlotFigures", "heading error \u03b8 [rad]"));
-    for (QCPAxisRect* r : rects) {
-        rescale(r);
-        legendIn(r, plot);
+           QCoreApplication::translate("PlotFigures", "heading error \u03b8 [rad]"),
+           QStringLiteral("\u03b8 [rad]"));
+    for (int i = 0; i < 2; ++i) {
+        rescale(rects[i]);
+        legendIn(rects[i], plot, panels, i); // under each panel: a narrow panel stays visible
     }
 }
 
@@ -309,20 +351,19 @@ void drawPlot(QCustomPlot& plot, PlotKind kind, const PlotSeries& series) {
     plot.clearItems();
     if (kind == PlotKind::PaperFigure) {
         paperFigure(plot, series);
-        return;
-    }
-    if (kind == PlotKind::TrackingError) {
+    } else if (kind == PlotKind::TrackingError) {
         trackingErrorPlot(plot, series);
-        return;
+    } else {
+        QCPLayoutGrid* grid = plot.plotLayout();
+        grid->clear();
+        auto* rect = new QCPAxisRect(&plot);
+        grid->addElement(0, 0, rect);
+        if (kind == PlotKind::Trajectory)
+            trajectoryPlot(plot, rect, series);
+        else
+            timePlot(plot, rect, kind, series);
     }
-    QCPLayoutGrid* grid = plot.plotLayout();
-    grid->clear();
-    auto* rect = new QCPAxisRect(&plot);
-    grid->addElement(0, 0, rect);
-    if (kind == PlotKind::Trajectory)
-        trajectoryPlot(plot, rect, series);
-    else
-        timePlot(plot, rect, kind, series);
+    fitAxesAfterLayout(plot);
 }
 
 void addCaption(QCustomPlot& plot, const QString& caption) {
@@ -349,24 +390,6 @@ void fitLegendToWidth(QCustomPlot& plot) {
         legend->setFillOrder(QCPLegend::foColumnsFirst, true); // rearranges the items in place
         if (columns <= 1 || legend->minimumOuterSizeHint().width() <= plot.width())
             return;
-    }
-}
-
-void fitTicksToHeight(QCustomPlot& plot) {
-    // a low plot (presentation mode on a 1024x768 projector) gets fewer value ticks, so their
-    // labels never overlap: about one per 2.5 label heights of the axis rectangle
-    int legendHeight = 0;
-    for (int i = 0; i < plot.plotLayout()->elementCount(); ++i)
-        if (auto* l = qobject_cast<QCPLegend*>(plot.plotLayout()->elementAt(i)))
-            legendHeight = l->minimumOuterSizeHint().height();
-    for (QCPAxisRect* rect : plot.axisRects()) {
-        QCPAxis* y = rect->axis(QCPAxis::atLeft);
-        const int label = QFontMetrics(y->tickLabelFont()).height();
-        // the rectangle's height once laid out, else the plot's less the legend and the t axis
-        const int height =
-            rect->height() > 0 ? rect->height() : plot.height() - legendHeight - 3 * label;
-        y->ticker()->setTickStepStrategy(QCPAxisTicker::tssMeetTickCount);
-        y->ticker()->setTickCount(std::clamp(static_cast<int>(height / (2.5 * label)), 2, 5));
     }
 }
 

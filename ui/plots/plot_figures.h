@@ -20,8 +20,9 @@ QString plotFileStem(PlotKind kind);
 QString plotTitle(PlotKind kind);
 
 /// Fills a QCustomPlot with one plot: axes with units, legend, the controlled motion and the
-/// free motion where it means something. PaperFigure is the paper's 2x2 layout of Figs. 2 and 3:
-/// s(t), x(t), y(t) and y(x) with the prescribed path.
+/// free motion where it means something. A time plot's value axis follows the controlled body
+/// (fitTimeAxes); every axis gets a PixelTicker (installTickers). PaperFigure is the paper's 2x2
+/// layout of Figs. 2 and 3: s(t), x(t), y(t) and y(x) with the prescribed path.
 void drawPlot(QCustomPlot& plot, PlotKind kind, const PlotSeries& series);
 
 /// The axis range drawn for data in [lower, upper]: 5 % margins; a series flat to rounding
@@ -36,8 +37,6 @@ void setPlotLook(QCustomPlot& plot, const CanvasStyle& look);
 /// (at most the legend's "maxColumns" property when set), so that no entry is cut off. Call
 /// after drawing and after every resize.
 void fitLegendToWidth(QCustomPlot& plot);
-/// Fewer value ticks on a low plot, so that their labels do not overlap.
-void fitTicksToHeight(QCustomPlot& plot);
 
 /// Adds the caption line above the plot(s).
 void addCaption(QCustomPlot& plot, const QString& caption);

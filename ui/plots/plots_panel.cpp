@@ -22,56 +22,65 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
     for (int i = 0; i < 4; ++i) {
         auto* plot = new FlatPlot;
         plot->setObjectName(plotFileStem(kKinds[i]));
-        plot->setMinimumSize(200, 110);
+        plot->setMinimumSize(120, 110);
         plot->setToolTip(plotTitle(kKinds[i]) +
                          tr(" \u2014 click or drag to move the animation to that time"));
         plot->setNotAntialiasedElements(QCP::aeAll);
-        // the time cursor is a thin child widget: moving it repaints two narrow strips, not the
-        // plot
-        auto* cursor = new QWidget(plot);
-        cursor->setAttribute(Qt::WA_TransparentForMouseEvents);
-        cursor->setAutoFillBackground(true);
-        QPalette palette = cursor->palette();
-        palette.setColor(QPalette::Window, QColor(40, 160, 40));
-        cursor->setPalette(palette);
-        cursor->hide();
-        m_cursors[i] = cursor;
-        connect(plot, &QCustomPlot::afterReplot, this, [this, i] { placeCursor(i); });
-        // press seeks, dragging with the button down scrubs
-        auto seek = [this, plot](QMouseEvent* e) {
-            QCPAxisRect* rect = plot->axisRectCount() > 0 ? plot->axisRect() : nullptr;
-            if (rect && (e->buttons() & Qt::LeftButton))
-                if (double t = rect->axis(QCPAxis::atBottom)->pixelToCoord(e->position().x());
-                    std::isfinite(t))
-                    emit seekRequested(t);
-        };
-        connect(plot, &QCustomPlot::mousePress, this, seek);
-        connect(plot, &QCustomPlot::mouseMove, this, seek);
+        m_cursors[i] = makeCursor(plot);
+        makeSeekable(plot);
         m_grid->addWidget(plot, i / 2, i % 2);
         m_plots[i] = plot;
         plot->installEventFilter(this); // the legend follows the plot's width
         installPlotExportMenu(
             plot, [i] { return plotFileStem(kKinds[i]); },
             [this](const QString& error) { emit exportFailed(error); });
+        installFitAllAction(plot);
     }
     m_errorPlot = new FlatPlot;
     m_errorPlot->setObjectName(plotFileStem(PlotKind::TrackingError));
-    m_errorPlot->setMinimumSize(200, 110);
-    m_errorPlot->setToolTip(plotTitle(PlotKind::TrackingError));
+    m_errorPlot->setMinimumSize(200, 130);
+    m_errorPlot->setToolTip(plotTitle(PlotKind::TrackingError) +
+                            tr(" \u2014 click or drag to move the animation to that time"));
     m_errorPlot->setNotAntialiasedElements(QCP::aeAll);
     m_errorPlot->hide();
-    connect(m_errorPlot, &QCustomPlot::mousePress, this, [this](QMouseEvent* e) {
-        QCPAxisRect* rect = m_errorPlot->axisRectCount() > 0 ? m_errorPlot->axisRect() : nullptr;
-        if (rect && (e->buttons() & Qt::LeftButton))
-            if (double t = rect->axis(QCPAxis::atBottom)->pixelToCoord(e->position().x());
-                std::isfinite(t))
-                emit seekRequested(t);
-    });
-    m_grid->addWidget(m_errorPlot, 4, 0, 1, -1);
+    for (QWidget*& cursor : m_errorCursors)
+        cursor = makeCursor(m_errorPlot);
+    makeSeekable(m_errorPlot);
+    arrange();
     installPlotExportMenu(
         m_errorPlot, [] { return plotFileStem(PlotKind::TrackingError); },
         [this](const QString& error) { emit exportFailed(error); });
     connect(document, &SceneDocument::solutionChanged, this, &PlotsPanel::refresh);
+}
+
+QWidget* PlotsPanel::makeCursor(QCustomPlot* plot) {
+    // the time cursor is a thin child widget: moving it repaints two narrow strips, not the plot
+    auto* cursor = new QWidget(plot);
+    cursor->setAttribute(Qt::WA_TransparentForMouseEvents);
+    cursor->setAutoFillBackground(true);
+    QPalette palette = cursor->palette();
+    palette.setColor(QPalette::Window, QColor(40, 160, 40));
+    cursor->setPalette(palette);
+    cursor->hide();
+    connect(plot, &QCustomPlot::afterReplot, this, &PlotsPanel::placeCursors, Qt::UniqueConnection);
+    return cursor;
+}
+
+void PlotsPanel::makeSeekable(QCustomPlot* plot) {
+    // press seeks, dragging with the button down scrubs; the time of the panel under the mouse
+    auto seek = [this, plot](QMouseEvent* e) {
+        if (!(e->buttons() & Qt::LeftButton))
+            return;
+        for (QCPAxisRect* rect : plot->axisRects())
+            if (e->position().x() >= rect->left() - 1 && e->position().x() <= rect->right() + 1)
+                if (double t = rect->axis(QCPAxis::atBottom)->pixelToCoord(e->position().x());
+                    std::isfinite(t)) {
+                    emit seekRequested(t);
+                    return;
+                }
+    };
+    connect(plot, &QCustomPlot::mousePress, this, seek);
+    connect(plot, &QCustomPlot::mouseMove, this, seek);
 }
 
 void PlotsPanel::resizeEvent(QResizeEvent* e) {
@@ -79,12 +88,29 @@ void PlotsPanel::resizeEvent(QResizeEvent* e) {
     int columns = width() > 3 * height() ? 4 : 2;
     if (columns != m_columns) {
         m_columns = columns;
-        for (int i = 0; i < 4; ++i) {
-            m_grid->removeWidget(m_plots[i]);
-            m_grid->addWidget(m_plots[i], i / columns, i % columns);
-        }
+        arrange();
     }
     QWidget::resizeEvent(e);
+}
+
+void PlotsPanel::arrange() {
+    // the error plot takes two columns' width beside a row of four, or a row under two by two, so
+    // that in a low dock every plot keeps the dock's height
+    for (QWidget* w : {static_cast<QWidget*>(m_errorPlot), static_cast<QWidget*>(m_plots[0]),
+                       static_cast<QWidget*>(m_plots[1]), static_cast<QWidget*>(m_plots[2]),
+                       static_cast<QWidget*>(m_plots[3])})
+        m_grid->removeWidget(w);
+    for (int i = 0; i < 4; ++i)
+        m_grid->addWidget(m_plots[i], i / m_columns, i % m_columns);
+    const bool wide = m_columns == 4;
+    if (wide)
+        m_grid->addWidget(m_errorPlot, 0, 4);
+    else
+        m_grid->addWidget(m_errorPlot, 2, 0, 1, 2);
+    for (int c = 0; c < 5; ++c) // the error plot's two panels as wide as two plots
+        m_grid->setColumnStretch(c, c < m_columns ? 1 : c == 4 && wide && m_errorsShown ? 2 : 0);
+    for (int r = 0; r < 3; ++r)
+        m_grid->setRowStretch(r, r == 0 || (!wide && (r == 1 || m_errorsShown)) ? 1 : 0);
 }
 
 bool PlotsPanel::eventFilter(QObject* watched, QEvent* event) {
@@ -92,7 +118,6 @@ bool PlotsPanel::eventFilter(QObject* watched, QEvent* event) {
         for (QCustomPlot* plot : m_plots)
             if (plot == watched) {
                 fitLegendToWidth(*plot);
-                fitTicksToHeight(*plot);
                 plot->replot(QCustomPlot::rpQueuedReplot);
             }
     return QWidget::eventFilter(watched, event);
@@ -103,26 +128,26 @@ void PlotsPanel::refresh() {
         drawPlot(*m_plots[i], kKinds[i], m_document->series());
         addPinnedSeries(*m_plots[i], kKinds[i], *PinSet::of(m_document));
         fitLegendToWidth(*m_plots[i]);
-        fitTicksToHeight(*m_plots[i]);
         m_plots[i]->replot(QCustomPlot::rpQueuedReplot);
     }
     const bool perturbed = m_document->series().perturbed;
     m_errorPlot->setVisible(perturbed);
+    if (perturbed != m_errorsShown) {
+        m_errorsShown = perturbed;
+        arrange();
+    }
     if (perturbed) {
         drawPlot(*m_errorPlot, PlotKind::TrackingError, m_document->series());
-        fitTicksToHeight(*m_errorPlot);
         m_errorPlot->replot(QCustomPlot::rpQueuedReplot);
     }
 }
 
-void PlotsPanel::placeCursor(int index) {
-    QCustomPlot* plot = m_plots[index];
-    QWidget* cursor = m_cursors[index];
-    if (plot->axisRectCount() == 0) {
+void PlotsPanel::placeCursor(QCustomPlot* plot, int rectIndex, QWidget* cursor) {
+    if (plot->axisRectCount() <= rectIndex) {
         cursor->hide();
         return;
     }
-    QCPAxisRect* rect = plot->axisRect();
+    QCPAxisRect* rect = plot->axisRect(rectIndex);
     QCPAxis* axis = rect->axis(QCPAxis::atBottom);
     double x = axis->coordToPixel(m_time);
     bool inside = axis->range().contains(m_time) && rect->height() > 0;
@@ -130,10 +155,16 @@ void PlotsPanel::placeCursor(int index) {
     cursor->setVisible(inside);
 }
 
+void PlotsPanel::placeCursors() {
+    for (int i = 0; i < 4; ++i)
+        placeCursor(m_plots[i], 0, m_cursors[i]);
+    for (int i = 0; i < 2; ++i)
+        placeCursor(m_errorPlot, i, m_errorCursors[i]);
+}
+
 void PlotsPanel::setTime(double t) {
     m_time = t;
-    for (int i = 0; i < 4; ++i)
-        placeCursor(i);
+    placeCursors();
 }
 
 void PlotsPanel::setLook(const CanvasStyle& look) {

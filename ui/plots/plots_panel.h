@@ -27,9 +27,11 @@ class PlotsPanel : public QWidget {
     double cursorTime() const { return m_time; }
     /// The time cursor drawn over a plot.
     QWidget* cursor(int index) const { return m_cursors[index]; }
-    /// The perturbed bodies' errors against t (docs/physics.md §9), shown under the four plots
-    /// when the scene has a perturbation.
+    /// The perturbed bodies' errors against t (docs/physics.md §9), shown beside a row of the
+    /// four plots or under two by two when the scene has a perturbation.
     QCustomPlot* errorPlot() const { return m_errorPlot; }
+    /// The time cursor over the error plot's panel (0: e, 1: theta).
+    QWidget* errorCursor(int panel) const { return m_errorCursors[panel]; }
 
   public slots:
     /// Hands the document's series to the plots (after each recompute).
@@ -50,12 +52,18 @@ class PlotsPanel : public QWidget {
     bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
-    void placeCursor(int index);
+    void arrange();
+    QWidget* makeCursor(QCustomPlot* plot);
+    void makeSeekable(QCustomPlot* plot);
+    void placeCursor(QCustomPlot* plot, int rect, QWidget* cursor);
+    void placeCursors();
 
     SceneDocument* m_document;
     std::array<QCustomPlot*, 4> m_plots{};
     std::array<QWidget*, 4> m_cursors{};
     QCustomPlot* m_errorPlot = nullptr;
+    std::array<QWidget*, 2> m_errorCursors{};
+    bool m_errorsShown = false;
     double m_time = 0;
     QGridLayout* m_grid;
     int m_columns = 2;

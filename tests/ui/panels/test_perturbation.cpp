@@ -2,8 +2,10 @@
 // on the canvas with their toggles, the Perturbation dock's edits as undo steps saved in the scene
 // file, the error plot with the Solution's values, and grabbing the body to push it.
 #include "canvas/scene_canvas.h"
+#include "control/path_feedback.h"
 #include "document/scene_document.h"
 #include "gui_test_support.h"
+#include "panels/equations_panel.h"
 #include "panels/perturbation_panel.h"
 #include "plots/plots_panel.h"
 #include "scene/presets.h"
@@ -13,8 +15,10 @@
 
 #include <QAction>
 #include <QCheckBox>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QFontMetricsF>
 #include <QImage>
 #include <QSlider>
 #include <QTemporaryDir>
@@ -40,6 +44,10 @@ class TestPerturbation : public QObject {
     void panelEditsAreUndoStepsSavedInTheFile();
     void errorPlotShowsTheSolutionsErrors();
     void grabAndPushIsOneUndoStep();
+    void equationsShowTheFeedbackLawAtT();
+    void errorPlotHasTheTimeCursor();
+    void exportedPlotsIncludeTheErrorPlot();
+    void errorPlotLabelsWholeAt1280x800();
 
   private:
     PerturbationPanel* panel() const { return m_window->findChild<PerturbationPanel*>(); }
@@ -274,6 +282,165 @@ void TestPerturbation::grabAndPushIsOneUndoStep() {
     m_window->undoStack()->undo();
     m_window->document()->flush();
     QVERIFY(!m_window->document()->scene().perturbation);
+}
+
+namespace {
+
+// a value as the Equations dock prints it: four digits, a true minus sign
+QString shown(double v) {
+    if (std::fabs(v) < 5e-13)
+        v = 0;
+    const QString s = QString::number(v, 'g', 4);
+    return s.startsWith(u'-') ? QStringLiteral("\u2212") + s.mid(1) : s;
+}
+
+} // namespace
+
+void TestPerturbation::equationsShowTheFeedbackLawAtT() {
+    loadPushedScene();
+    auto* equations = m_window->findChild<EquationsPanel*>();
+    QVERIFY(equations);
+    // without a perturbation there is no law on the page
+    m_window->loadScene(presetScene("sinusoid"));
+    m_window->document()->flush();
+    equations->setTime(4);
+    QVERIFY(!equations->html().contains(QStringLiteral("z\u2082")));
+    loadPushedScene();
+    const double t = 4; // a second after the push: every term of the law is at work
+    m_window->playback()->seek(t);
+    QCOMPARE(equations->time(), t);
+    const QString html = equations->html();
+    const Solution& solution = *m_window->document()->solution();
+    const PerturbedState fb = solution.feedback()->at(t);
+    const FeedbackLawValues& law = fb.law;
+    // the core's chained form (control/path_feedback.h) at the closest point's geometry
+    PathError err;
+    err.e = law.closest.e;
+    err.theta = law.theta;
+    err.kappaBody = law.kappaBody;
+    err.kappa = law.closest.point.kappa;
+    err.dkappa = law.closest.point.dkappa;
+    err.ddkappa = law.closest.point.ddkappa;
+    const ChainedForm z = chainedForm(err);
+    const double P = m_window->document()->scene().perturbation->feedbackRate;
+    const double u = triplePoleInput(z, P);
+    const DerivedSystem& sys = solution.system();
+    // the lateral error against the tracking errors' own projection, and the law's identities
+    std::vector<double> times; // the projection follows the body from t = 0
+    for (int i = 0; i <= 400; ++i)
+        times.push_back(t * i / 400);
+    const TrackingError atT = solution.trackingErrors(times).back();
+    QVERIFY2(std::abs(z.z2 - atT.fbE) < 1e-9,
+             qPrintable(QStringLiteral("%1 %2").arg(z.z2).arg(atT.fbE)));
+    QVERIFY(std::abs(err.theta - atT.fbTheta) < 1e-9);
+    QVERIFY(std::abs(u - (-P * P * P * z.z2 - 3 * P * P * z.z3 - 3 * P * z.z4)) < 1e-12);
+    QVERIFY(std::abs(z.z2) > 1e-3 && std::abs(z.z3) > 1e-3 && std::abs(u) > 1e-3);
+    const double lambda = sys.mass * (sys.b * fb.psidot - sys.a * fb.phidot);
+    const double psidot = -sys.b * law.sdotPath * curvatureRate(z, u) /
+                          (1 + sys.b * sys.b * law.kappaBody * law.kappaBody);
+    QVERIFY(std::abs(psidot - fb.psidot) < 1e-12);
+    // the formulas in proper notation, the names of the parameters panel, and the values at t
+    for (const QString& formula :
+         {QStringLiteral("Feedback law"), QStringLiteral("z\u2082 = e"),
+          QStringLiteral("z\u2083 = (1 \u2212 \u03bae) tan \u03b8"),
+          QStringLiteral("u = \u2212P\u00b3z\u2082 \u2212 3P\u00b2z\u2083 \u2212 3Pz\u2084"),
+          QStringLiteral("\u03a8\u0307 = \u2212b \u1e61_p \u03ba_b\u2032"),
+          QStringLiteral("\u03bb_fb = m_eff(b\u03a8\u0307 \u2212 a\u03c6\u0307)"),
+          QStringLiteral("feedback rate P = %1 1/m").arg(shown(P))})
+        QVERIFY2(html.contains(formula), qPrintable(formula));
+    for (auto [name, value] : {std::pair{"z2", z.z2},
+                               {"theta", err.theta},
+                               {"z3", z.z3},
+                               {"z4", z.z4},
+                               {"u", u},
+                               {"psidot", psidot},
+                               {"lambda", lambda}})
+        QVERIFY2(html.contains(QStringLiteral("<b>= %1</b>").arg(shown(value))),
+                 qPrintable(QStringLiteral("%1 = %2 is not on the page").arg(name, shown(value))));
+    // live: another time, other values
+    m_window->playback()->seek(6);
+    const FeedbackLawValues later = solution.feedback()->at(6).law;
+    QVERIFY(equations->html().contains(QStringLiteral("<b>= %1</b>").arg(shown(later.u))));
+}
+
+void TestPerturbation::errorPlotHasTheTimeCursor() {
+    loadPushedScene();
+    PlotsPanel* plots = m_window->plotsPanel();
+    QCustomPlot* plot = plots->errorPlot();
+    QVERIFY(plot->isVisible());
+    QCOMPARE(plot->axisRectCount(), 2);
+    for (double t : {2.0, 7.5}) {
+        m_window->playback()->seek(t);
+        plots->replotNow();
+        QCOMPARE(plots->cursorTime(), t);
+        for (int i = 0; i < 2; ++i) {
+            QWidget* cursor = plots->errorCursor(i);
+            QCPAxisRect* rect = plot->axisRect(i);
+            QVERIFY(cursor->isVisible());
+            QCOMPARE(cursor->parentWidget(), plot);
+            const double x = rect->axis(QCPAxis::atBottom)->coordToPixel(t);
+            QVERIFY2(std::abs(cursor->geometry().center().x() - x) <= 1.5,
+                     qPrintable(QStringLiteral("panel %1: cursor at %2, t = %3 at %4")
+                                    .arg(i)
+                                    .arg(cursor->geometry().center().x())
+                                    .arg(t)
+                                    .arg(x)));
+            QCOMPARE(cursor->geometry().top(), rect->top());
+            QCOMPARE(cursor->geometry().height(), rect->height());
+        }
+    }
+    // a click on the error plot seeks there, in either panel
+    QCPAxisRect* right = plot->axisRect(1);
+    const double target = 9;
+    const QPoint at(int(std::lround(right->axis(QCPAxis::atBottom)->coordToPixel(target))),
+                    right->center().y());
+    QTest::mouseClick(plot, Qt::LeftButton, {}, at);
+    QVERIFY2(std::abs(m_window->playback()->time() - target) < 0.2,
+             qPrintable(QString::number(m_window->playback()->time())));
+}
+
+void TestPerturbation::exportedPlotsIncludeTheErrorPlot() {
+    const QStringList png{QStringLiteral("png")};
+    const QString plain = m_dir.filePath(QStringLiteral("plain"));
+    m_window->loadScene(presetScene("sinusoid"));
+    QVERIFY(m_window->exportPlotsTo(plain, png));
+    QVERIFY(QFile::exists(plain + QStringLiteral("/psi.png")));
+    QVERIFY(!QFile::exists(plain + QStringLiteral("/tracking_error.png")));
+    loadPushedScene();
+    const QString pushed = m_dir.filePath(QStringLiteral("pushed"));
+    QVERIFY(m_window->exportPlotsTo(pushed, png));
+    const QStringList files = QDir(pushed).entryList({QStringLiteral("*.png")}, QDir::Files);
+    QVERIFY2(files.contains(QStringLiteral("tracking_error.png")), qPrintable(files.join(' ')));
+    QImage image(pushed + QStringLiteral("/tracking_error.png"));
+    QVERIFY(!image.isNull() && image.width() >= 900);
+}
+
+void TestPerturbation::errorPlotLabelsWholeAt1280x800() {
+    loadPushedScene();
+    m_window->resize(1280, 800);
+    m_window->balanceDocks();
+    QApplication::processEvents();
+    QCustomPlot* plot = m_window->plotsPanel()->errorPlot();
+    plot->replot();
+    for (QCPAxisRect* rect : plot->axisRects()) {
+        QCPAxis* y = rect->axis(QCPAxis::atLeft);
+        QVERIFY(!y->label().isEmpty());
+        // the label runs along the axis, centred on the frame: it is whole when it is no longer
+        // than the frame is high
+        const QFontMetricsF metrics(y->labelFont());
+        double longest = 0;
+        for (const QString& line : y->label().split('\n'))
+            longest = std::max(longest, metrics.horizontalAdvance(line));
+        QVERIFY2(longest <= rect->height(),
+                 qPrintable(QStringLiteral("'%1': %2 px along a %3 px frame")
+                                .arg(y->label())
+                                .arg(longest)
+                                .arg(rect->height())));
+        // nothing of the plot's own drawn over it: the legends are under the panels
+        for (QCPLayoutElement* e : plot->plotLayout()->elements(true))
+            if (auto* legend = qobject_cast<QCPLegend*>(e))
+                QVERIFY(!legend->outerRect().intersects(rect->rect()));
+    }
 }
 
 QTEST_MAIN(TestPerturbation)
