@@ -83,7 +83,7 @@ void SceneCanvas::paintScaleBar(QPainter& p) const {
                Qt::AlignCenter, label);
 }
 
-void SceneCanvas::paintPath(QPainter& p, const QTransform& world) const {
+void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& within) const {
     const auto& solution = m_document->solution();
     // a wide pale band, so that the trail on top of it stays visible: one polyline per run of
     // one colour, through the flattened curve
@@ -106,6 +106,16 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world) const {
         run.clear();
     };
     for (std::size_t i = 1; i < flat.points.size(); ++i) {
+        if (!within.isNull()) {
+            // only the segments that reach `within`: a run ends at a segment left out
+            const QRectF segment =
+                QRectF(world.map(flat.points[i - 1]), world.map(flat.points[i])).normalized();
+            const double reach = 3 * m_style.lineScale + 2; // half the band's width, and more
+            if (!segment.adjusted(-reach, -reach, reach, reach).intersects(within)) {
+                flush();
+                continue;
+            }
+        }
         const QRgb c = colourOf(i);
         if (c != runColour || run.isEmpty()) {
             flush();
