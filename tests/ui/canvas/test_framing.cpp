@@ -6,6 +6,7 @@
 #include "canvas/scene_canvas.h"
 #include "lab/gallery.h"
 #include "panels/path_panel.h"
+#include "shell/body_display_menu.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
 #include "shell/timeline_bar.h"
@@ -205,6 +206,8 @@ void TestFraming::automaticBodyDisplayShowsThePath() {
     // is longer than the path is wide
     SceneCanvas* canvas = m_window->canvas();
     QCOMPARE(canvas->canvasStyle().body, BodyDisplay::Automatic);
+    QAction* automatic = m_window->bodyDisplayMenu()->displayAction(BodyDisplay::Automatic);
+    QVERIFY(automatic && automatic->isChecked());
     const std::pair<const char*, BodyDisplay> expected[] = {{"circle", BodyDisplay::Outline},
                                                             {"catenary", BodyDisplay::Outline},
                                                             {"sinusoid", BodyDisplay::ToScale},
