@@ -102,7 +102,7 @@ void PresentationMode::shrinkPlots() {
         return;
     if (auto* plots = qobject_cast<QDockWidget*>(m_plots->parentWidget());
         plots && plots->isVisible())
-        m_window->resizeDocks({plots}, {m_window->height() / 4}, Qt::Vertical);
+        m_window->resizeDocks({plots}, {std::max(m_window->height() / 4, 240)}, Qt::Vertical);
 }
 
 bool PresentationMode::eventFilter(QObject* watched, QEvent* event) {

@@ -72,7 +72,8 @@ class PresentationMode : public QObject {
 
   private:
     void applyStyle();
-    /// The plots a quarter of the height, so that the canvas keeps most of the screen.
+    /// The plots a quarter of the height (at least 240 px), so that the canvas keeps most of the
+    /// screen.
     void shrinkPlots();
     struct Conditional {
         QDockWidget* dock;
