@@ -165,8 +165,16 @@ int SceneCanvas::topBandPx() const {
     return int(std::lround(kTopPx * m_style.lineScale * (m_style.largeTime ? 1.7 : 1.0)));
 }
 
+bool SceneCanvas::compactLegend() const {
+    // presenting without pushed bodies: the path and the vakonomic body in a second column
+    return m_style.largeTime && !drawsOpenLoop() && !drawsClosedLoop();
+}
+
 int SceneCanvas::legendBandPx() const {
-    return m_legendVisible ? int(std::lround(kLegendPx * m_style.lineScale)) : 0;
+    if (!m_legendVisible)
+        return 0;
+    // four rows of 16 px, or two in the compact legend, and 14 px around them
+    return int(std::lround((compactLegend() ? kLegendPx - 32 : kLegendPx) * m_style.lineScale));
 }
 
 QRectF SceneCanvas::drawingArea() const {

@@ -244,6 +244,9 @@ class SceneCanvas : public QWidget {
     bool m_legendVisible = true;
     int topBandPx() const;
     int legendBandPx() const;
+    /// The legend in two rows of two columns (presentation mode, no pushed bodies), not four
+    /// rows: the drawing area keeps the height.
+    bool compactLegend() const;
 };
 
 } // namespace chaplygin::ui
