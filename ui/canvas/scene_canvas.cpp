@@ -201,7 +201,9 @@ void SceneCanvas::frame(const QRectF& box, double margin, double minScale) {
     const double ww = w - 2 * std::min(margin, room), hh = h - 2 * std::min(margin, room);
     const double fit =
         std::min(ww / std::max(box.width(), 1e-9), hh / std::max(box.height(), 1e-9));
-    m_scale = std::clamp(std::max(fit, minScale), 1e-3, 1e5);
+    // a view far from the origin (a path at 1e308 m) keeps scale times its centre finite
+    const double far = std::max({std::abs(box.center().x()), std::abs(box.center().y()), 1.0});
+    m_scale = std::clamp(std::min(std::max(fit, minScale), 1e300 / far), 1e-3, 1e5);
     m_centre = box.center() + QPointF(0, (area.center().y() - height() / 2.0) / m_scale);
     m_fittedPath = m_document->solution()->path();
     m_autoFit = true;
