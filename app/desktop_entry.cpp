@@ -142,14 +142,17 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
         std::tie(o.width, o.height) = readWindowSize(*size);
     o.viewReport = given.value("--view-report").value_or("");
     if (auto body = given.value("--body")) {
-        if (*body == "scale")
+        if (*body == "auto")
+            o.body = BodyDisplay::Automatic;
+        else if (*body == "scale")
             o.body = BodyDisplay::ToScale;
         else if (*body == "outline")
             o.body = BodyDisplay::Outline;
         else if (*body == "marker")
             o.body = BodyDisplay::Marker;
         else
-            throw InputError("--body", "expected scale, outline or marker, got '" + *body + "'");
+            throw InputError("--body",
+                             "expected auto, scale, outline or marker, got '" + *body + "'");
     }
     o.scene = sceneOf(given);
     if (auto sweep = given.value("--sweep")) {

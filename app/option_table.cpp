@@ -36,9 +36,9 @@ constexpr std::array kOptions = {
                .help = "also write the canvas's rectangle in the screenshot's pixels and\n"
                        "its map: pixel = origin + scale (x, -y), scale in px/m",
                .modes = Screenshot, .section = S::Screenshot},
-    OptionSpec{.name = "--body", .argument = "scale|outline|marker",
-               .help = "the bodies to scale, as outlines or as markers (default: the\n"
-                       "saved choice)",
+    OptionSpec{.name = "--body", .argument = "auto|scale|outline|marker",
+               .help = "the bodies to scale, as outlines or as markers; auto (the\n"
+                       "default) picks one from the body's size beside the path's",
                .modes = Screenshot, .section = S::Screenshot},
     OptionSpec{.name = "--language", .argument = "en|pt_BR",
                .help = "that catalogue instead of the system's (exit 2 when it is not\n"

@@ -729,6 +729,14 @@ realimentação: %2</translation>
         <source>%1 %</source>
         <translation>%1 %</translation>
     </message>
+    <message>
+        <source>&amp;Automatic: to scale unless the body hides the path</source>
+        <translation>&amp;Automático: em escala, a menos que o corpo esconda o caminho</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+0</source>
+        <translation>Ctrl+Shift+0</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::CompareMenu</name>
@@ -1006,10 +1014,6 @@ realimentação: %2</translation>
         <translation>E&amp;xibir</translation>
     </message>
     <message>
-        <source>&amp;Fit scene</source>
-        <translation>A&amp;justar a cena</translation>
-    </message>
-    <message>
         <source>Ctrl+0</source>
         <translation>Ctrl+0</translation>
     </message>
@@ -1252,6 +1256,26 @@ realimentação: %2</translation>
     <message>
         <source>Animation written to %1</source>
         <translation>Animação gravada em %1</translation>
+    </message>
+    <message>
+        <source>&amp;Reset layout</source>
+        <translation>&amp;Restaurar a disposição</translation>
+    </message>
+    <message>
+        <source>&amp;Fit the path</source>
+        <translation>A&amp;justar ao caminho</translation>
+    </message>
+    <message>
+        <source>Frame the path and the controlled body (F on the canvas)</source>
+        <translation>Enquadrar o caminho e o corpo controlado (F na tela de desenho)</translation>
+    </message>
+    <message>
+        <source>Fit &amp;everything that moves</source>
+        <translation>Ajustar a &amp;tudo o que se move</translation>
+    </message>
+    <message>
+        <source>Shift+F</source>
+        <translation>Shift+F</translation>
     </message>
 </context>
 <context>
@@ -1761,10 +1785,6 @@ O que os estudantes devem observar…</translation>
         <translation>t = %1 s de %2 s    escala %3 px/m</translation>
     </message>
     <message>
-        <source>Wheel or +/-: zoom; drag or arrows: pan; F: fit scene; B: follow body; L: legend</source>
-        <translation>Roda ou +/-: zoom; arrastar ou setas: deslocar; F: ajustar a cena; B: seguir o corpo; L: legenda</translation>
-    </message>
-    <message>
         <source>Scene canvas</source>
         <translation>Tela de desenho da cena</translation>
     </message>
@@ -1799,6 +1819,10 @@ O que os estudantes devem observar…</translation>
     <message>
         <source>pushed, closed loop: feedback steers it back</source>
         <translation>empurrado, malha fechada: a realimentação o traz de volta</translation>
+    </message>
+    <message>
+        <source>Wheel or +/-: zoom; drag or arrows: pan; F: fit the path; Shift+F: fit everything that moves; B: follow body; L: legend</source>
+        <translation>Roda ou +/-: zoom; arrastar ou setas: deslocar; F: ajustar ao caminho; Shift+F: ajustar a tudo o que se move; B: seguir o corpo; L: legenda</translation>
     </message>
 </context>
 <context>

@@ -140,6 +140,50 @@ double bodyExtent(const SystemSpec& spec, const DerivedSystem& derived) {
     return 1;
 }
 
+QPainterPath bodyShape(const SystemSpec& spec, const DerivedSystem& derived) {
+    QPainterPath shape;
+    switch (spec.kind) {
+    case SystemKind::Sleigh: {
+        const double big = boardSemiAxis(derived);
+        shape.addEllipse(QPointF(derived.a, 0), big, big / 2);
+        break;
+    }
+    case SystemKind::Disk: {
+        const double r = param(spec, "R", 0.5), w = 0.12 * r;
+        shape.addRoundedRect(QRectF(-r, -w, 2 * r, 2 * w), w, w);
+        break;
+    }
+    case SystemKind::Carriage: {
+        // the body's trapezium and the two wheels, as paintCarriage draws them
+        const double r = param(spec, "R", 0.3), half = halfAxle(spec), tw = 0.22 * r;
+        const double side = std::max(half - 1.5 * tw, 0.35 * r), front = 0.9 * r;
+        shape.moveTo(-0.5 * r, -side);
+        shape.lineTo(front, -0.6 * side);
+        shape.lineTo(front, 0.6 * side);
+        shape.lineTo(-0.5 * r, side);
+        shape.closeSubpath();
+        shape.addRect(QRectF(-r, half - tw, 2 * r, 2 * tw));
+        shape.addRect(QRectF(-r, -half - tw, 2 * r, 2 * tw));
+        shape.setFillRule(Qt::WindingFill);
+        break;
+    }
+    }
+    return shape;
+}
+
+BodyDisplay shownBodyDisplay(BodyDisplay chosen, const SystemSpec& spec,
+                             const DerivedSystem& derived, const QRectF& pathBounds) {
+    if (chosen != BodyDisplay::Automatic)
+        return chosen;
+    const double path = std::max(pathBounds.width(), pathBounds.height());
+    if (!(path > 0) || !std::isfinite(path))
+        return BodyDisplay::ToScale;
+    const double ratio = 2 * bodyExtent(spec, derived) / path;
+    return ratio <= kAutoToScale   ? BodyDisplay::ToScale
+           : ratio <= kAutoOutline ? BodyDisplay::Outline
+                                   : BodyDisplay::Marker;
+}
+
 void paintBody(QPainter& painter, const SystemSpec& spec, const DerivedSystem& derived,
                const BodyPose& pose, const QColor& color, bool ghost, const BodyLook& look) {
     painter.save();

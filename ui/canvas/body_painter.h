@@ -3,6 +3,8 @@
 #include "systems/system.h"
 
 #include <QColor>
+#include <QPainterPath>
+#include <QRectF>
 
 class QPainter;
 
@@ -32,5 +34,17 @@ constexpr double kMarkerRadiusPx = 9;
 
 /// The radius [m] of a circle around P that holds the whole body (for fitting the view).
 double bodyExtent(const SystemSpec& spec, const DerivedSystem& derived);
+
+/// The area the body to scale covers, in its own frame [m] (P at the origin, s-hat along x):
+/// where it would hide the path under its fill.
+QPainterPath bodyShape(const SystemSpec& spec, const DerivedSystem& derived);
+
+/// The display drawn for the chosen one: the chosen one itself, or for Automatic the body to
+/// scale while it is small beside the path (the circle around P that holds it at most
+/// kAutoToScale of the path's larger side, pathBounds [m]), an outline up to kAutoOutline, a
+/// marker beyond, where even an outline would cross most of the path.
+BodyDisplay shownBodyDisplay(BodyDisplay chosen, const SystemSpec& spec,
+                             const DerivedSystem& derived, const QRectF& pathBounds);
+constexpr double kAutoToScale = 0.4, kAutoOutline = 1.5;
 
 } // namespace chaplygin::ui

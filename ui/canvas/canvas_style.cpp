@@ -76,21 +76,24 @@ CanvasStyle CanvasStyle::sanitized() const {
     s.lineScale = clamp(lineScale, 1, 4, 1);
     s.trailWidth = clamp(trailWidth, 0.5, 12, 2);
     s.bodyOpacity = clamp(bodyOpacity, 0.1, 1, 0.8);
-    if (body != BodyDisplay::ToScale && body != BodyDisplay::Outline && body != BodyDisplay::Marker)
-        s.body = BodyDisplay::ToScale;
+    if (body != BodyDisplay::ToScale && body != BodyDisplay::Outline &&
+        body != BodyDisplay::Marker && body != BodyDisplay::Automatic)
+        s.body = BodyDisplay::Automatic;
     return s;
 }
 
 CanvasStyle CanvasStyle::load(const QSettings& settings) {
     CanvasStyle s;
-    s.body = static_cast<BodyDisplay>(settings.value(key("body"), int(s.body)).toInt());
+    // "bodyDisplay", not the older "body": that key held the to-scale default saved at every
+    // start, not a choice, and would keep the automatic display from its users
+    s.body = static_cast<BodyDisplay>(settings.value(key("bodyDisplay"), int(s.body)).toInt());
     s.trailWidth = settings.value(key("trailWidth"), s.trailWidth).toDouble();
     s.bodyOpacity = settings.value(key("bodyOpacity"), s.bodyOpacity).toDouble();
     return s.sanitized();
 }
 
 void CanvasStyle::save(QSettings& settings) const {
-    settings.setValue(key("body"), int(body));
+    settings.setValue(key("bodyDisplay"), int(body));
     settings.setValue(key("trailWidth"), trailWidth);
     settings.setValue(key("bodyOpacity"), bodyOpacity);
 }

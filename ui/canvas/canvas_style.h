@@ -6,9 +6,11 @@ class QSettings;
 
 namespace chaplygin::ui {
 
-/// How the bodies are drawn: to scale (the default), as an outline only, or as a small marker
-/// with the knife and the centre of mass (so that a large body never hides the path).
-enum class BodyDisplay { ToScale, Outline, Marker };
+/// How the bodies are drawn: to scale, as an outline only, or as a small marker with the knife
+/// and the centre of mass (so that a large body never hides the path); Automatic (the default)
+/// picks one of the three from the body's size against the path's (shownBodyDisplay in
+/// canvas/body_painter.h).
+enum class BodyDisplay { ToScale, Outline, Marker, Automatic };
 
 /// The look of the canvas and the plots: line and font scale, palette, body display, trail width
 /// and body opacity. Presentation mode uses a scaled, high-contrast copy.
@@ -16,7 +18,7 @@ struct CanvasStyle {
     double lineScale = 1;      ///< multiplies pen widths and font sizes (>= 1)
     bool highContrast = false; ///< a palette whose colours differ in greyscale too
     bool largeTime = false;    ///< a large time read-out on the canvas
-    BodyDisplay body = BodyDisplay::ToScale;
+    BodyDisplay body = BodyDisplay::Automatic;
     double trailWidth = 2;    ///< px, before lineScale
     double bodyOpacity = 0.8; ///< of the controlled body's fill, 0.1 ... 1
 

@@ -27,7 +27,8 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
     setAutoFillBackground(false);
     setAttribute(Qt::WA_OpaquePaintEvent);
     setToolTip(
-        tr("Wheel or +/-: zoom; drag or arrows: pan; F: fit scene; B: follow body; L: legend"));
+        tr("Wheel or +/-: zoom; drag or arrows: pan; F: fit the path; Shift+F: fit everything "
+           "that moves; B: follow body; L: legend"));
     setAccessibleName(tr("Scene canvas"));
     setAccessibleDescription(tr("The animation: the prescribed path, the controlled body and the "
                                 "free motion from the same start"));
@@ -56,9 +57,15 @@ QPointF SceneCanvas::toWorld(QPointF pixel) const {
 }
 
 void SceneCanvas::onSolutionChanged() {
-    // a new path is fitted; a parameter change keeps the view steady while a slider moves
-    if (m_autoFit && m_document->solution()->path() != m_fittedPath)
-        fitScene();
+    // a new path is fitted, but a stroke the user drew or a point moved keeps the view where
+    // the path stays in it; a parameter change keeps the view steady while a slider moves
+    if (m_document->solution()->path() != m_fittedPath) {
+        if (m_keepView)
+            keepPathInView();
+        else if (m_autoFit)
+            m_fitAll ? fitEverything() : fitScene();
+        m_keepView = false;
+    }
     if (m_follow)
         centreOnBody();
     update();
@@ -81,6 +88,42 @@ void SceneCanvas::centreOnBody() {
     // on the pixel grid, so that the view moves by whole pixels and the static layer is shifted
     // rather than drawn again
     m_centre = QPointF(std::round(m.x * m_scale) / m_scale, std::round(m.y * m_scale) / m_scale);
+}
+
+QRectF SceneCanvas::pathBounds() const {
+    const auto& solution = m_document->solution();
+    if (!solution)
+        return {};
+    if (m_boundsOf == solution.get())
+        return m_pathBounds;
+    // the path's nodes and its two ends (the nodes are inside the panels)
+    const PlotSeries& s = m_document->series();
+    const Path& path = *solution->path();
+    double x0 = std::min(path.start().x, path.end().x), x1 = std::max(path.start().x, path.end().x);
+    double y0 = std::min(path.start().y, path.end().y), y1 = std::max(path.start().y, path.end().y);
+    for (int i = 0; i < std::min(s.pathX.size(), s.pathY.size()); ++i) {
+        if (!std::isfinite(s.pathX[i]) || !std::isfinite(s.pathY[i]))
+            continue;
+        x0 = std::min(x0, s.pathX[i]);
+        x1 = std::max(x1, s.pathX[i]);
+        y0 = std::min(y0, s.pathY[i]);
+        y1 = std::max(y1, s.pathY[i]);
+    }
+    m_boundsOf = solution.get();
+    m_pathBounds = x0 <= x1 && y0 <= y1 ? QRectF(QPointF(x0, y0), QPointF(x1, y1)) : QRectF();
+    return m_pathBounds;
+}
+
+BodyDisplay SceneCanvas::shownBodyDisplay() const {
+    const auto& solution = m_document->solution();
+    if (!solution)
+        return m_style.body == BodyDisplay::Automatic ? BodyDisplay::ToScale : m_style.body;
+    return ui::shownBodyDisplay(m_style.body, solution->scene().system, solution->system(),
+                                pathBounds());
+}
+
+BodyLook SceneCanvas::bodyLook() const {
+    return {shownBodyDisplay(), m_style.bodyOpacity, m_style.lineScale};
 }
 
 QRectF SceneCanvas::sceneBounds() const {
@@ -112,18 +155,26 @@ QRectF SceneCanvas::sceneBounds() const {
     if (x0 > x1)
         return {};
     QRectF box(QPointF(x0, y0), QPointF(x1, y1));
-    double pad = m_style.body == BodyDisplay::Marker
+    double pad = shownBodyDisplay() == BodyDisplay::Marker
                      ? 0.05 * std::max({box.width(), box.height(), 1e-3})
                      : bodyExtent(solution->scene().system, solution->system());
     return box.adjusted(-pad, -pad, pad, pad);
 }
 
 int SceneCanvas::topBandPx() const {
-    return int(std::lround(kTopPx * m_style.lineScale * (m_style.largeTime ? 2.2 : 1.0)));
+    return int(std::lround(kTopPx * m_style.lineScale * (m_style.largeTime ? 1.7 : 1.0)));
+}
+
+bool SceneCanvas::compactLegend() const {
+    // presenting without pushed bodies: the path and the vakonomic body in a second column
+    return m_style.largeTime && !drawsOpenLoop() && !drawsClosedLoop();
 }
 
 int SceneCanvas::legendBandPx() const {
-    return m_legendVisible ? int(std::lround(kLegendPx * m_style.lineScale)) : 0;
+    if (!m_legendVisible)
+        return 0;
+    // four rows of 16 px, or two in the compact legend, and 14 px around them
+    return int(std::lround((compactLegend() ? kLegendPx - 32 : kLegendPx) * m_style.lineScale));
 }
 
 QRectF SceneCanvas::drawingArea() const {
@@ -132,36 +183,86 @@ QRectF SceneCanvas::drawingArea() const {
 
 void SceneCanvas::setCanvasStyle(const CanvasStyle& style) {
     m_style = style.sanitized();
-    if (m_autoFit)
-        fitScene();
+    refit();
     update();
 }
 
 void SceneCanvas::setLegendVisible(bool visible) {
     m_legendVisible = visible;
-    if (m_autoFit)
-        fitScene();
+    refit();
+    update();
+}
+
+void SceneCanvas::frame(const QRectF& box, double margin, double minScale) {
+    // the scene goes between the time line at the top and the legend at the bottom
+    const QRectF area = drawingArea();
+    const double w = std::max(area.width(), 100.0), h = std::max(area.height(), 100.0);
+    const double room = std::min(w, h) * 0.4; // a margin never takes more than this
+    const double ww = w - 2 * std::min(margin, room), hh = h - 2 * std::min(margin, room);
+    const double fit =
+        std::min(ww / std::max(box.width(), 1e-9), hh / std::max(box.height(), 1e-9));
+    // a view far from the origin (a path at 1e308 m) keeps scale times its centre finite
+    const double far = std::max({std::abs(box.center().x()), std::abs(box.center().y()), 1.0});
+    m_scale = std::clamp(std::min(std::max(fit, minScale), 1e300 / far), 1e-3, 1e5);
+    m_centre = box.center() + QPointF(0, (area.center().y() - height() / 2.0) / m_scale);
+    m_fittedPath = m_document->solution()->path();
+    m_autoFit = true;
+    setFollowBody(false);
     update();
 }
 
 void SceneCanvas::fitScene() {
     const auto& solution = m_document->solution();
-    if (!solution)
+    const QRectF path = pathBounds();
+    if (!solution || path.isNull())
         return;
-    QRectF box = sceneBounds();
-    if (box.isNull())
+    m_fitAll = false;
+    // the controlled body around the path: its extent [m] to scale or as an outline, the
+    // marker's pixels
+    const bool marker = shownBodyDisplay() == BodyDisplay::Marker;
+    const double body = marker ? 0 : bodyExtent(solution->scene().system, solution->system());
+    const double markerPx = marker ? 2.5 * kMarkerRadiusPx * m_style.lineScale : 0;
+    const QRectF area = drawingArea();
+    const double w = std::max(area.width(), 100.0), h = std::max(area.height(), 100.0);
+    // a margin of 5 % of the drawing area on each side
+    const double margin = std::max(0.05 * std::min(w, h), markerPx);
+    // a large body may reach out of the view, but the path fills at least 80 % of the area in
+    // the direction that limits it
+    const double pathFill =
+        std::min(w / std::max(path.width(), 1e-9), h / std::max(path.height(), 1e-9));
+    frame(path.adjusted(-body, -body, body, body), margin, 0.8 * pathFill);
+}
+
+void SceneCanvas::fitEverything() {
+    const auto& solution = m_document->solution();
+    const QRectF box = sceneBounds();
+    if (!solution || box.isNull())
         return;
-    // the scene goes between the time line at the top and the legend at the bottom
-    QRectF area = drawingArea();
-    double w = std::max(area.width(), 100.0), h = std::max(area.height(), 100.0);
-    m_scale = std::clamp(
-        std::min(w / std::max(box.width(), 1e-9), h / std::max(box.height(), 1e-9)) * 0.95, 1e-3,
-        1e5);
-    m_centre = box.center() + QPointF(0, (area.center().y() - height() / 2.0) / m_scale);
+    m_fitAll = true;
+    const QRectF area = drawingArea();
+    frame(box, 0.025 * std::min(std::max(area.width(), 100.0), std::max(area.height(), 100.0)), 0);
+}
+
+void SceneCanvas::refit() {
+    if (m_follow)
+        centreOnBody();
+    else if (m_autoFit)
+        m_fitAll ? fitEverything() : fitScene();
+}
+
+void SceneCanvas::keepPathInView() {
+    const auto& solution = m_document->solution();
+    const QRectF path = pathBounds();
+    if (!solution || path.isNull())
+        return;
     m_fittedPath = solution->path();
-    m_autoFit = true;
-    setFollowBody(false);
-    update();
+    const QRectF pixels = QRectF(toPixel(path.topLeft()), toPixel(path.bottomRight())).normalized();
+    if (m_follow || drawingArea().adjusted(-1, -1, 1, 1).contains(pixels)) {
+        m_autoFit = false; // the view the user drew in: a resize does not refit it either
+        update();
+        return;
+    }
+    fitScene();
 }
 
 void SceneCanvas::setFollowBody(bool follow) {
@@ -211,7 +312,7 @@ bool SceneCanvas::onControlledBody(QPointF pixel) const {
     if (!solution)
         return false;
     const MotionSample m = solution->at(std::clamp(m_time, 0.0, solution->tEnd()));
-    BodyLook look{m_style.body, m_style.bodyOpacity, m_style.lineScale};
+    const BodyLook look = bodyLook();
     const QRectF box = BodySprites::pixelBounds(worldTransform(), m_scale, solution->scene().system,
                                                 solution->system(), {m.x, m.y, m.phi}, look);
     // the body's box, at least a finger's width around P
@@ -226,8 +327,7 @@ void SceneCanvas::zoomBy(double factor) {
 }
 
 void SceneCanvas::resizeEvent(QResizeEvent*) {
-    if (m_autoFit)
-        fitScene();
+    refit();
 }
 
 std::vector<std::pair<double, double>> SceneCanvas::drawnPoints() const {
@@ -322,6 +422,7 @@ void SceneCanvas::mouseReleaseEvent(QMouseEvent* e) {
         m_editPoints[std::size_t(m_dragVertex)] = {w.x(), w.y()};
         m_dragVertex = -1;
         update();
+        m_keepView = true;
         emit pointsEdited(m_editPoints);
         return;
     }
@@ -333,8 +434,10 @@ void SceneCanvas::mouseReleaseEvent(QMouseEvent* e) {
             points.emplace_back(w.x(), w.y());
         m_stroke.clear();
         update();
-        if (points.size() >= 3)
+        if (points.size() >= 3) {
+            m_keepView = true;
             emit pathDrawn(points);
+        }
     }
     if (m_pushing && e->button() == Qt::LeftButton) {
         m_pushing = false;
@@ -362,7 +465,10 @@ void SceneCanvas::keyPressEvent(QKeyEvent* e) {
         zoomBy(0.8);
         break;
     case Qt::Key_F:
-        fitScene();
+        if (e->modifiers() & Qt::ShiftModifier)
+            fitEverything();
+        else
+            fitScene();
         break;
     case Qt::Key_B:
         setFollowBody(!m_follow);

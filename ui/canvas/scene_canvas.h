@@ -1,4 +1,5 @@
 #pragma once
+#include "canvas/body_painter.h"
 #include "canvas/body_sprites.h"
 #include "canvas/canvas_style.h"
 #include "canvas/curve_flattening.h"
@@ -61,14 +62,37 @@ class SceneCanvas : public QWidget {
     bool legendVisible() const { return m_legendVisible; }
     /// The part of the widget the scene is drawn in: between the time line and the legend.
     QRectF drawingArea() const;
-    /// The world rectangle Fit frames: the path and every body over the whole horizon.
+    /// The world rectangle of the path [m].
+    QRectF pathBounds() const;
+    /// The world rectangle "Fit everything that moves" frames: the path and every body drawn
+    /// over the whole horizon.
     QRectF sceneBounds() const;
+    /// Whether the view refits to everything that moves (fitEverything) rather than to the path
+    /// and the controlled body (fitScene) on a resize or a new path.
+    bool fitsEverything() const { return m_fitAll; }
+    /// The bodies' display drawn now: the chosen one, or what Automatic picks for this scene.
+    BodyDisplay shownBodyDisplay() const;
     /// Forgets the cached layers (static layer, trails): the next paint draws everything anew.
     void dropLayers();
 
   public slots:
     void setTime(double t);
+    /// Frames the lesson (F, the default): the path and the controlled body with a margin of
+    /// 5 % on each side, the path filling at least 80 % of the drawing area in the direction
+    /// that limits it.
     void fitScene();
+    /// Frames everything that moves (Shift+F): the path and every body drawn, over the whole
+    /// horizon.
+    void fitEverything();
+    /// After the canvas changed size or style: the same kind of fit again, or still centred on
+    /// the followed body, or nothing when the user zoomed or panned.
+    void refit();
+    /// Keeps the view when the path lies in the drawing area (and no longer refits it on a
+    /// resize), else fits it (fitScene): a drawn stroke or a moved point does not move the view.
+    void keepPathInView();
+    /// The next new path (a stroke, a moved point, other corners) keeps the view
+    /// (keepPathInView) instead of being fitted.
+    void keepViewForNextPath() { m_keepView = true; }
     void setFollowBody(bool follow);
     void setDrawMode(bool on);
     void zoomBy(double factor);
@@ -99,12 +123,20 @@ class SceneCanvas : public QWidget {
 
   private:
     void onSolutionChanged();
+    /// The view that frames box [m] in the drawing area, with a margin of `margin` [px] on each
+    /// side, at no less than minScale.
+    void frame(const QRectF& box, double margin, double minScale);
+    BodyLook bodyLook() const;
+    /// The path's band, the controlled trail and the knife point P again over the bodies drawn
+    /// to scale, inside their shapes: no body hides the path (docs/user-guide.md, Animation).
+    void paintPathOverBodies(QPainter& p, const MotionSample& now) const;
     QTransform worldTransform() const;
     /// Grid lines every 1, 2 or 5 x 10^k m, at least 40 px apart.
     double gridStep() const;
     void paintGrid(QPainter& p, const QTransform& world, const QRectF& area) const;
     void paintScaleBar(QPainter& p) const;
-    void paintPath(QPainter& p, const QTransform& world) const;
+    /// The path's band; with `within` [px] only the segments that reach it.
+    void paintPath(QPainter& p, const QTransform& world, const QRectF& within = {}) const;
     /// A trail to draw: its flattened curve up to the parameter `limit` (time, or arc length for
     /// the controlled body), then its end now.
     struct Trail {
@@ -155,7 +187,11 @@ class SceneCanvas : public QWidget {
     QPointF m_centre;    // world point at the widget centre
     bool m_follow = false;
     std::shared_ptr<const Path> m_fittedPath; // the path the view was last fitted to
-    bool m_autoFit = true; // refit on resize and new solutions until the user zooms or pans
+    bool m_autoFit = true;   // refit on resize and new solutions until the user zooms or pans
+    bool m_fitAll = false;   // the last fit framed everything that moves, not only the path
+    bool m_keepView = false; // the next new path is the user's stroke or edit: keep the view
+    mutable const Solution* m_boundsOf = nullptr; // the solution m_pathBounds belongs to
+    mutable QRectF m_pathBounds;
     bool m_drawMode = false;
     bool m_showVakonomic = true;
     bool m_showOpenLoop = true, m_showClosedLoop = true;
@@ -208,6 +244,9 @@ class SceneCanvas : public QWidget {
     bool m_legendVisible = true;
     int topBandPx() const;
     int legendBandPx() const;
+    /// The legend in two rows of two columns (presentation mode, no pushed bodies), not four
+    /// rows: the drawing area keeps the height.
+    bool compactLegend() const;
 };
 
 } // namespace chaplygin::ui

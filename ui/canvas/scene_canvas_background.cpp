@@ -83,7 +83,7 @@ void SceneCanvas::paintScaleBar(QPainter& p) const {
                Qt::AlignCenter, label);
 }
 
-void SceneCanvas::paintPath(QPainter& p, const QTransform& world) const {
+void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& within) const {
     const auto& solution = m_document->solution();
     // a wide pale band, so that the trail on top of it stays visible: one polyline per run of
     // one colour, through the flattened curve
@@ -106,6 +106,16 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world) const {
         run.clear();
     };
     for (std::size_t i = 1; i < flat.points.size(); ++i) {
+        if (!within.isNull()) {
+            // only the segments that reach `within`: a run ends at a segment left out
+            const QRectF segment =
+                QRectF(world.map(flat.points[i - 1]), world.map(flat.points[i])).normalized();
+            const double reach = 3 * m_style.lineScale + 2; // half the band's width, and more
+            if (!segment.adjusted(-reach, -reach, reach, reach).intersects(within)) {
+                flush();
+                continue;
+            }
+        }
         const QRgb c = colourOf(i);
         if (c != runColour || run.isEmpty()) {
             flush();
@@ -151,17 +161,21 @@ void SceneCanvas::paintLegend(QPainter& p) const {
         p.setPen(m_style.pen(QColor(200, 200, 200), 1));
         p.drawLine(band.topLeft(), band.topRight());
         double y = band.top() + 8 * k, dy = 16 * k, x = 10, len = 24 * k;
+        // the perturbed bodies in a second column (docs/physics.md §9); the compact legend puts
+        // the path and the vakonomic body there instead
+        const bool perturbed = drawsOpenLoop() || drawsClosedLoop();
+        const bool compact = compactLegend();
+        const double x2 = 0.5 * width();
+        const double pathX = compact ? x2 : x, pathY = compact ? y : y + 2 * dy;
+        const double vakY = compact ? y + dy : y + 3 * dy;
         p.setPen(m_style.pen(m_style.controlled().darker(150), 2));
         p.drawLine(QPointF(x, y), QPointF(x + len, y));
         p.setPen(m_style.pen(m_style.free(), 2, Qt::DashLine));
         p.drawLine(QPointF(x, y + dy), QPointF(x + len, y + dy));
         if (m_showVakonomic) {
             p.setPen(m_style.pen(m_style.vakonomic(), 2, Qt::DashDotLine));
-            p.drawLine(QPointF(x, y + 3 * dy), QPointF(x + len, y + 3 * dy));
+            p.drawLine(QPointF(pathX, vakY), QPointF(pathX + len, vakY));
         }
-        // the perturbed bodies in a second column (docs/physics.md §9)
-        const bool perturbed = drawsOpenLoop() || drawsClosedLoop();
-        const double x2 = 0.5 * width();
         if (drawsOpenLoop()) {
             p.setPen(m_style.pen(m_style.openLoop(), 2, Qt::DotLine));
             p.drawLine(QPointF(x2, y), QPointF(x2 + len, y));
@@ -176,13 +190,14 @@ void SceneCanvas::paintLegend(QPainter& p) const {
             QPen pen = m_style.pen(c, 6);
             pen.setCapStyle(Qt::FlatCap);
             p.setPen(pen);
-            p.drawLine(QPointF(x + i * k, y + 2 * dy), QPointF(x + (i + 1) * k, y + 2 * dy));
+            p.drawLine(QPointF(pathX + i * k, pathY), QPointF(pathX + (i + 1) * k, pathY));
         }
         p.setPen(Qt::black);
         double tx = x + len + 6;
         auto text = [&](double row, const QString& s, double left = -1) {
             const double from = left < 0 ? tx : left;
-            const double right = left < 0 && perturbed && row < 2 ? x2 - 8 : width() - 4;
+            const double right =
+                left < 0 && (perturbed || compact) && row < 2 ? x2 - 8 : width() - 4;
             QRectF r(from, y + row * dy - 0.5 * dy, right - from, dy);
             p.drawText(r, Qt::AlignLeft | Qt::AlignVCenter,
                        p.fontMetrics().elidedText(s, Qt::ElideRight, int(r.width())));
@@ -193,12 +208,16 @@ void SceneCanvas::paintLegend(QPainter& p) const {
             text(0, tr("pushed, open loop: the nominal \u03bb(t) as planned"), x2 + len + 6);
         if (drawsClosedLoop())
             text(1, tr("pushed, closed loop: feedback steers it back"), x2 + len + 6);
+        const double right = x2 + len + 6;
         if (m_showVakonomic)
-            text(3, tr("genuine vakonomic body: \u03bb obeys its own equation (21)"));
-        text(2, m_style.highContrast
-                    ? tr("path (\u25cf start, \u25a1 end)")
-                    : tr("path (\u25cf start, \u25a1 end), coloured by its curvature \u03ba: red "
-                         "right turn, grey straight, blue left turn"));
+            text(compact ? 1 : 3, tr("genuine vakonomic body: \u03bb obeys its own equation (21)"),
+                 compact ? right : -1);
+        text(compact ? 0 : 2,
+             m_style.highContrast
+                 ? tr("path (\u25cf start, \u25a1 end)")
+                 : tr("path (\u25cf start, \u25a1 end), coloured by its curvature \u03ba: red "
+                      "right turn, grey straight, blue left turn"),
+             compact ? right : -1);
     }
     if (m_drawMode)
         p.drawText(QRectF(8, topBandPx(), width() - 16, 20 * k), Qt::AlignLeft,

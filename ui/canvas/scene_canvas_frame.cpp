@@ -7,6 +7,8 @@
 
 #include <QPaintEvent>
 #include <QPainter>
+#include <QPainterPath>
+#include <QPainterPathStroker>
 
 #include <algorithm>
 #include <cmath>
@@ -29,8 +31,6 @@ std::vector<SceneCanvas::Trail> SceneCanvas::trails(const MotionSample& now) con
                    {now.free.x, now.free.y},
                    false,
                    m_style.pen(free, std::max(0.75 * w, 1.5), Qt::DashLine)});
-    out.push_back(
-        {&c.path(), now.s, {now.x, now.y}, true, m_style.pen(m_style.controlled().darker(150), w)});
     if (m_showVakonomic)
         out.push_back({&c.vakonomic(),
                        m_time,
@@ -50,6 +50,10 @@ std::vector<SceneCanvas::Trail> SceneCanvas::trails(const MotionSample& now) con
              {now.fb.x, now.fb.y},
              false,
              m_style.pen(m_style.closedLoop(), std::max(0.75 * w, 1.5), Qt::DashDotDotLine)});
+    // the controlled body's last, on top: where another trail starts along the path, the path
+    // stays visible
+    out.push_back(
+        {&c.path(), now.s, {now.x, now.y}, true, m_style.pen(m_style.controlled().darker(150), w)});
     return out;
 }
 
@@ -101,7 +105,7 @@ QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& no
     for (const QRectF& r : trailEndsBounds(now, from))
         add(r);
     const SystemSpec& spec = solution.scene().system;
-    BodyLook look{m_style.body, m_style.bodyOpacity, m_style.lineScale};
+    const BodyLook look = bodyLook();
     auto body = [&](double x, double y, double phi) {
         add(BodySprites::pixelBounds(world, m_scale, spec, solution.system(), {x, y, phi}, look));
     };
@@ -219,7 +223,7 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         const SystemSpec& spec = solution->scene().system;
         const QTransform world = worldTransform();
         // the translucent ghost on top, so that both stay visible where they overlap
-        BodyLook look{m_style.body, m_style.bodyOpacity, m_style.lineScale};
+        const BodyLook look = bodyLook();
         auto body = [&](const BodyPose& pose, const QColor& color, bool ghost) {
             m_bodies.paint(p, world, m_scale, spec, solution->system(), pose, color, ghost, look);
         };
@@ -231,6 +235,7 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
             body({now->pert.x, now->pert.y, now->pert.phi}, m_style.openLoop(), true);
         if (drawsClosedLoop())
             body({now->fb.x, now->fb.y, now->fb.phi}, m_style.closedLoop(), true);
+        paintPathOverBodies(p, *now);
         p.restore();
         m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform(), m_scale,
                         rect(), e->region());
@@ -253,6 +258,64 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         p.setPen(m_style.pen(QColor(40, 40, 40), 2));
         p.drawPolyline(line);
     }
+}
+
+void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) const {
+    // an outline or a marker has no fill: the path shows through it
+    if (bodyLook().display != BodyDisplay::ToScale)
+        return;
+    const Solution& solution = *m_document->solution();
+    const QTransform world = worldTransform();
+    const QPainterPath shape = bodyShape(solution.scene().system, solution.system());
+    // each body's area and the ring its outline's pen covers, in pixels: one clip at a time (a
+    // union of translucent shapes would cost more than drawing the few segments twice)
+    QPainterPathStroker pen;
+    pen.setWidth(3 * m_style.lineScale + 2);
+    std::vector<QPainterPath> clips;
+    auto add = [&](double x, double y, double phi) {
+        QTransform pose;
+        pose.translate(x, y);
+        pose.rotate(phi * 180.0 / M_PI);
+        const QPainterPath mapped = (pose * world).map(shape);
+        if (!mapped.boundingRect().intersects(QRectF(rect())))
+            return;
+        clips.push_back(mapped);
+        clips.push_back(pen.createStroke(mapped));
+    };
+    add(now.x, now.y, now.phi);
+    add(now.free.x, now.free.y, now.free.phi);
+    if (m_showVakonomic)
+        add(now.vak.x, now.vak.y, now.vak.phi);
+    if (drawsOpenLoop())
+        add(now.pert.x, now.pert.y, now.pert.phi);
+    if (drawsClosedLoop())
+        add(now.fb.x, now.fb.y, now.fb.phi);
+    if (clips.empty())
+        return;
+    const Trail controlled = trails(now).back();
+    QPolygonF line;
+    const std::size_t n = controlled.curve->countUpTo(controlled.limit);
+    line.reserve(qsizetype(n) + 1);
+    for (std::size_t i = 0; i < n; ++i)
+        line << world.map(controlled.curve->points[i]);
+    line << world.map(controlled.end);
+    // the band and the controlled trail up to now on it, then the knife at P
+    for (const QPainterPath& clip : clips) {
+        const QRectF box = clip.boundingRect().intersected(QRectF(rect()));
+        if (box.isEmpty())
+            continue;
+        p.save();
+        p.setClipPath(clip, Qt::IntersectClip);
+        paintPath(p, world, box);
+        strokePolylineWithin(p, line, controlled.pen, QRegion(box.toAlignedRect()));
+        p.restore();
+    }
+    p.save();
+    const QPointF at = world.map(QPointF(now.x, now.y));
+    const QPointF along = QPointF(std::cos(now.phi), -std::sin(now.phi)) * 9 * m_style.lineScale;
+    p.setPen(m_style.pen(m_style.controlled().darker(170), 3.5));
+    p.drawLine(at - along, at + along);
+    p.restore();
 }
 
 void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {

@@ -14,6 +14,7 @@ constexpr double kOpacities[] = {0.3, 0.6, 0.8, 1.0};
 BodyDisplayMenu::BodyDisplayMenu(QWidget* parent) : QMenu(tr("&Bodies"), parent) {
     m_display = new QActionGroup(this);
     const std::pair<BodyDisplay, QString> modes[] = {
+        {BodyDisplay::Automatic, tr("&Automatic: to scale unless the body hides the path")},
         {BodyDisplay::ToScale, tr("To &scale")},
         {BodyDisplay::Outline, tr("&Outline only")},
         {BodyDisplay::Marker, tr("Small &marker (knife and centre of mass)")}};
@@ -23,9 +24,10 @@ BodyDisplayMenu::BodyDisplayMenu(QWidget* parent) : QMenu(tr("&Bodies"), parent)
         a->setData(int(mode));
         m_display->addAction(a);
     }
-    m_display->actions()[0]->setShortcut(QKeySequence(tr("Ctrl+Shift+1")));
-    m_display->actions()[1]->setShortcut(QKeySequence(tr("Ctrl+Shift+2")));
-    m_display->actions()[2]->setShortcut(QKeySequence(tr("Ctrl+Shift+3")));
+    m_display->actions()[0]->setShortcut(QKeySequence(tr("Ctrl+Shift+0")));
+    m_display->actions()[1]->setShortcut(QKeySequence(tr("Ctrl+Shift+1")));
+    m_display->actions()[2]->setShortcut(QKeySequence(tr("Ctrl+Shift+2")));
+    m_display->actions()[3]->setShortcut(QKeySequence(tr("Ctrl+Shift+3")));
     addSeparator();
     QMenu* trail = addMenu(tr("&Trail width"));
     m_trail = new QActionGroup(this);

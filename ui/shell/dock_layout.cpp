@@ -1,5 +1,6 @@
 #include "shell/dock_layout.h"
 
+#include <QAction>
 #include <QCoreApplication>
 #include <QDockWidget>
 #include <QMainWindow>
@@ -84,20 +85,71 @@ void balanceDocks(QMainWindow* window, const Docks& docks) {
         if (last != docks.parameters)
             docks.path->raise();
     }
-    window->resizeDocks({docks.plots}, {height < 900 ? std::max(200, height / 4) : height / 3},
-                        Qt::Vertical);
+    window->resizeDocks({docks.plots}, {balancedPlotsHeight(height)}, Qt::Vertical);
     window->resizeDocks({docks.path}, {std::max(360, width / 4)}, Qt::Horizontal);
 }
 
-DockBalancer::DockBalancer(QMainWindow* window, const Docks& docks, bool balanceWhenShown)
-    : QObject(window), m_window(window), m_docks(docks), m_balanceWhenShown(balanceWhenShown) {
+int balancedPlotsHeight(int windowHeight) {
+    return windowHeight < 900 ? std::max(200, windowHeight / 4) : windowHeight / 3;
+}
+
+DockBalancer::DockBalancer(QMainWindow* window, const Docks& docks, bool balanceWhenShown,
+                           const QByteArray& defaultLayout)
+    : QObject(window), m_window(window), m_docks(docks), m_balanceWhenShown(balanceWhenShown),
+      m_defaultLayout(defaultLayout) {
     window->installEventFilter(this);
+    connect(docks.plots, &QDockWidget::visibilityChanged, this, &DockBalancer::plotsShown);
+}
+
+void DockBalancer::plotsShown(bool visible) {
+    const bool open = m_docks.plots->toggleViewAction()->isChecked();
+    if (!visible) {
+        // another tab (Methods, Sweep) came to the front, or the dock was closed
+        m_behind = open;
+        m_plotsHeight = open && m_window->isVisible() ? m_docks.plots->height() : 0;
+        return;
+    }
+    if (!m_behind)
+        return;
+    m_behind = false;
+    const int target = m_plotsHeight > 0 ? m_plotsHeight : balancedPlotsHeight(m_window->height());
+    m_plotsHeight = 0;
+    if (m_docks.plots->isFloating() ||
+        m_window->dockWidgetArea(m_docks.plots) != Qt::BottomDockWidgetArea)
+        return;
+    // after the tab switch has laid out the dock
+    QMetaObject::invokeMethod(
+        this,
+        [this, target] {
+            if (m_docks.plots->isVisible() && m_docks.plots->height() > target + 8)
+                m_window->resizeDocks({m_docks.plots}, {target}, Qt::Vertical);
+        },
+        Qt::QueuedConnection);
+}
+
+void DockBalancer::resetLayout() {
+    for (QDockWidget* dock : m_window->findChildren<QDockWidget*>())
+        dock->setFloating(false);
+    m_window->restoreState(m_defaultLayout);
+    m_plotsHeight = 0;
+    m_behind = false;
+    balanceLater();
 }
 
 bool DockBalancer::eventFilter(QObject* watched, QEvent* event) {
-    if (watched == m_window && event->type() == QEvent::Show && m_balanceWhenShown) {
-        m_balanceWhenShown = false;
-        balanceLater();
+    if (watched == m_window && event->type() == QEvent::Show) {
+        // a restored layout may start with another tab in front of the plots
+        QMetaObject::invokeMethod(
+            this,
+            [this] {
+                m_behind = m_behind || (m_docks.plots->toggleViewAction()->isChecked() &&
+                                        !m_docks.plots->isVisible());
+            },
+            Qt::QueuedConnection);
+        if (m_balanceWhenShown) {
+            m_balanceWhenShown = false;
+            balanceLater();
+        }
     } else if (watched == m_window && event->type() == QEvent::Resize) {
         auto* resize = static_cast<QResizeEvent*>(event);
         if (resize->oldSize().width() >= kNarrow && resize->size().width() < kNarrow)

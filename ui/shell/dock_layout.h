@@ -1,4 +1,5 @@
 #pragma once
+#include <QByteArray>
 #include <QObject>
 
 class QDockWidget;
@@ -40,20 +41,35 @@ void balanceDocks(QMainWindow* window, const Docks& docks);
 
 /// Keeps a window's docks balanced (balanceDocks): once when the window is first shown, when
 /// asked to (before that the docks have no geometry to resize), and whenever the window is
-/// narrowed below 1200 px while it runs. Widening leaves the docks where they are.
+/// narrowed below 1200 px while it runs. Widening leaves the docks where they are. The Methods
+/// and Sweep tabs enlarge the bottom docks; going back to the Plots tab gives the plots the
+/// height they had (or a balanced one after a start that restored an enlarged layout).
 class DockBalancer : public QObject {
     Q_OBJECT
   public:
-    DockBalancer(QMainWindow* window, const Docks& docks, bool balanceWhenShown);
+    /// defaultLayout: the window's saveState() as placeDocks left it (View > Reset layout).
+    DockBalancer(QMainWindow* window, const Docks& docks, bool balanceWhenShown,
+                 const QByteArray& defaultLayout);
     bool eventFilter(QObject* watched, QEvent* event) override;
+
+  public slots:
+    /// View > Reset layout: the docks where a first start puts them, balanced.
+    void resetLayout();
 
   private:
     void balanceLater();
+    void plotsShown(bool visible);
 
     QMainWindow* m_window;
     Docks m_docks;
     bool m_balanceWhenShown;
+    QByteArray m_defaultLayout;
+    bool m_behind = false; // the plots are open behind another bottom tab
+    int m_plotsHeight = 0; // their height when another bottom tab came to the front
 };
+
+/// The plots' height balanceDocks gives a window of this height [px].
+int balancedPlotsHeight(int windowHeight);
 
 /// Shows and raises dock; a minimumHeight > 0 makes it at least that tall.
 void bringDockForward(QMainWindow* window, QDockWidget* dock, int minimumHeight = 0);

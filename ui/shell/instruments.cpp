@@ -9,6 +9,7 @@
 #include "scene/pinned_runs.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
+#include "shell/presentation_mode.h"
 
 #include <QDockWidget>
 #include <QMenuBar>
@@ -111,6 +112,12 @@ void installInstruments(MainWindow* window) {
     }
     QObject::connect(doc, &SceneDocument::solutionChanged, notes,
                      [doc, notes] { notes->setNote(QString::fromStdString(doc->scene().note)); });
+    // presenting: the equations are not needed, the notes only when the scene has one
+    PresentationMode* presentation = window->presentation();
+    presentation->addHiddenDock(equationsDock);
+    presentation->addDockWhile(notesDock, [doc] { return !doc->scene().note.empty(); });
+    QObject::connect(doc, &SceneDocument::solutionChanged, presentation,
+                     &PresentationMode::updateDocks);
     QObject::connect(notes, &NotesPanel::noteEdited, window, [window, doc](const QString& text) {
         Scene next = doc->scene();
         next.note = text.toStdString();

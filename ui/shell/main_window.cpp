@@ -96,14 +96,14 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     connect(m_plots, &PlotsPanel::seekRequested, m_playback, &Playback::seek);
     connect(m_path, &PathPanel::presetChosen, this, &MainWindow::choosePreset);
     connect(m_path, &PathPanel::pathTyped, this,
-            [this](const PathSource& s) { setPath(s, tr("Type a path")); });
+            [this](const PathSource& s) { setPath(s, tr("Type a path"), PathChange::Typed); });
     connect(m_path, &PathPanel::drawModeToggled, m_canvas, &SceneCanvas::setDrawMode);
     connect(m_path, &PathPanel::drawOptionsChanged, this,
             [this](CornerMode mode, double smoothing) {
                 PathSource s = m_document->scene().path;
                 s.corners = mode;
                 s.smoothing = smoothing;
-                setPath(s, tr("Change the corners"), false);
+                setPath(s, tr("Change the corners"), PathChange::Edited);
             });
     connect(m_canvas, &SceneCanvas::pathDrawn, this,
             [this](const std::vector<std::pair<double, double>>& points) {
@@ -112,13 +112,13 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
                 s.points = points;
                 s.corners = m_path->drawCorners();
                 s.smoothing = m_path->drawSmoothing();
-                setPath(s, tr("Draw a path"));
+                setPath(s, tr("Draw a path"), PathChange::Drawn);
             });
     connect(m_canvas, &SceneCanvas::pointsEdited, this,
             [this](const std::vector<std::pair<double, double>>& points) {
                 PathSource s = m_document->scene().path;
                 s.points = points;
-                setPath(s, tr("Edit the drawn path"), false);
+                setPath(s, tr("Edit the drawn path"), PathChange::Edited);
             });
     // a slider's change: the panel's scene goes straight to the document's undo stack
     auto editParameters = [this](const Scene& scene, const QString& description,
@@ -132,10 +132,21 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
 
     if (!m_useSettings)
         resize(1280, 800);
+    const QByteArray defaultLayout = saveState();
     const bool firstStart = !m_useSettings || !restoreWindowLayout(this);
     if (firstStart)
         balanceDocks();
-    new DockBalancer(this, m_docks, firstStart);
+    auto* balancer = new DockBalancer(this, m_docks, firstStart, defaultLayout);
+    if (auto* view = menuBar()->findChild<QMenu*>(QStringLiteral("viewMenu"))) {
+        // after the docks' toggles
+        auto* reset = new QAction(tr("&Reset layout"), view);
+        reset->setObjectName(QStringLiteral("resetLayoutAction"));
+        connect(reset, &QAction::triggered, balancer, &DockBalancer::resetLayout);
+        const QList<QAction*> items = view->actions();
+        auto separator = std::find_if(items.begin(), items.end(),
+                                      [](const QAction* a) { return a->isSeparator(); });
+        view->insertAction(separator == items.end() ? nullptr : *separator, reset);
+    }
     loadScene(presetScene("sinusoid"));
 }
 
@@ -201,7 +212,12 @@ void MainWindow::buildMenus() {
     view->addAction(m_docks.sweep->toggleViewAction());
     view->addAction(m_timeline->toggleViewAction());
     view->addSeparator();
-    view->addAction(tr("&Fit scene"), QKeySequence(tr("Ctrl+0")), m_canvas, &SceneCanvas::fitScene);
+    view->addAction(tr("&Fit the path"), QKeySequence(tr("Ctrl+0")), m_canvas,
+                    &SceneCanvas::fitScene)
+        ->setStatusTip(tr("Frame the path and the controlled body (F on the canvas)"));
+    view->addAction(tr("Fit &everything that moves"), QKeySequence(tr("Shift+F")), m_canvas,
+                    &SceneCanvas::fitEverything)
+        ->setObjectName(QStringLiteral("fitEverythingAction"));
     m_followAction = view->addAction(tr("F&ollow body"));
     m_followAction->setCheckable(true);
     m_followAction->setShortcut(QKeySequence(tr("Ctrl+B")));
@@ -361,7 +377,7 @@ void MainWindow::choosePreset(const QString& name) {
     }
 }
 
-void MainWindow::setPath(const PathSource& source, const QString& description, bool refit) {
+void MainWindow::setPath(const PathSource& source, const QString& description, PathChange change) {
     // tabulated on the path worker: errors stay in the panel, the last path stays meanwhile
     const QString tabulating = tr("Tabulating the path\u2026");
     m_document->requestPath(source, [=, this](const QString& error) {
@@ -373,12 +389,14 @@ void MainWindow::setPath(const PathSource& source, const QString& description, b
         Scene next = m_document->scene();
         next.path = source;
         next.preset.clear();
+        if (change != PathChange::Typed)
+            m_canvas->keepViewForNextPath();
         editScene(next, description);
         m_document->flush();
-        if (refit) { // a new path, not an edit of the drawn one
+        if (change != PathChange::Edited) // a new path, not an edit of the drawn one
             startNewScene();
+        if (change == PathChange::Typed)
             m_canvas->fitScene();
-        }
     });
     if (m_document->pathPending())
         statusBar()->showMessage(tabulating);
@@ -408,7 +426,8 @@ bool MainWindow::loadGalleryEntry(const QString& name) {
     const GalleryEntry& entry = galleryEntry(name.toStdString());
     const QString title = QString::fromStdString(entry.title);
     const QString explanation = QString::fromStdString(entry.scene.note);
-    bringDockForward(this, m_docks.accuracy);
+    if (!m_presentation->isActive()) // presenting, the explanation is in the Notes dock
+        bringDockForward(this, m_docks.accuracy);
     try {
         m_document->check(entry.scene); // the core's refusal is the lesson of a rejected entry
     } catch (const InputError& e) {

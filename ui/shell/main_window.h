@@ -141,7 +141,11 @@ class MainWindow : public QMainWindow {
     void onDocumentError(const QString& error);
     void onTime(double t);
     void choosePreset(const QString& name);
-    void setPath(const PathSource& source, const QString& description, bool refit = true);
+    /// A typed path is a new scene fitted to the view; a drawn one a new scene in the view it
+    /// was drawn in; an edit of the drawn one (a point, the corners) keeps time and view (the
+    /// view moves only when the path leaves it).
+    enum class PathChange { Typed, Drawn, Edited };
+    void setPath(const PathSource& source, const QString& description, PathChange change);
     /// Asks to save unsaved changes; false when the user cancels.
     bool maybeSave();
     void newScene();

@@ -5,6 +5,7 @@
 
 #include <QAction>
 #include <QDockWidget>
+#include <QEvent>
 #include <QMainWindow>
 #include <QMenu>
 #include <QSettings>
@@ -83,6 +84,34 @@ void PresentationMode::applyStyle() {
     m_plots->setLook(currentStyle());
 }
 
+void PresentationMode::addDockWhile(QDockWidget* dock, std::function<bool()> needed) {
+    m_conditional << Conditional{dock, std::move(needed)};
+}
+
+void PresentationMode::updateDocks() {
+    if (!m_active)
+        return;
+    for (QDockWidget* dock : m_hidden)
+        dock->hide();
+    for (const Conditional& c : m_conditional)
+        c.dock->setVisible(c.needed());
+}
+
+void PresentationMode::shrinkPlots() {
+    if (!m_active)
+        return;
+    if (auto* plots = qobject_cast<QDockWidget*>(m_plots->parentWidget());
+        plots && plots->isVisible())
+        m_window->resizeDocks({plots}, {std::max(m_window->height() / 4, 240)}, Qt::Vertical);
+}
+
+bool PresentationMode::eventFilter(QObject* watched, QEvent* event) {
+    // going full screen resizes the window later: the plots are shrunk again then
+    if (watched == m_window && event->type() == QEvent::Resize && m_active)
+        QMetaObject::invokeMethod(this, &PresentationMode::shrinkPlots, Qt::QueuedConnection);
+    return false;
+}
+
 void PresentationMode::setActive(bool on) {
     if (on == m_active)
         return;
@@ -92,11 +121,12 @@ void PresentationMode::setActive(bool on) {
         m_savedWindowState = m_window->windowState();
         m_savedFont = m_window->font();
         m_wasVisible.clear();
-        for (QDockWidget* dock : m_hidden) {
+        for (QDockWidget* dock : m_hidden)
             if (dock->isVisible())
                 m_wasVisible << dock;
-            dock->hide();
-        }
+        for (const Conditional& c : m_conditional)
+            if (c.dock->isVisible())
+                m_wasVisible << c.dock;
         m_statusWasVisible = m_window->statusBar()->isVisible();
         m_window->statusBar()->hide();
         QFont f = m_savedFont;
@@ -109,7 +139,11 @@ void PresentationMode::setActive(bool on) {
         }
         if (m_fullScreen)
             m_window->setWindowState(m_window->windowState() | Qt::WindowFullScreen);
+        updateDocks();
+        shrinkPlots();
+        m_window->installEventFilter(this);
     } else {
+        m_window->removeEventFilter(this);
         m_window->setFont(m_savedFont);
         for (QToolBar* bar : m_toolBars)
             bar->setIconSize(m_savedIconSize);
@@ -122,7 +156,9 @@ void PresentationMode::setActive(bool on) {
     m_leave->setEnabled(on);
     m_toggle->setChecked(on);
     applyStyle();
-    m_canvas->fitScene();
+    // a followed body stays followed; otherwise the same kind of fit for the new size
+    if (!m_canvas->followsBody())
+        m_canvas->fitsEverything() ? m_canvas->fitEverything() : m_canvas->fitScene();
     emit activeChanged(on);
 }
 

@@ -7,6 +7,8 @@
 #include <QObject>
 #include <QSize>
 
+#include <functional>
+
 class QAction;
 class QDockWidget;
 class QMainWindow;
@@ -21,7 +23,8 @@ class SceneCanvas;
 
 /// Presentation mode for a lecture room: full screen, fonts and line widths scaled (a setting,
 /// 1.6 by default), a high-contrast palette that stays distinguishable in greyscale, the docks
-/// a demo does not need hidden, a large time read-out. F11 or the toolbar button toggles it, Esc
+/// a demo does not need hidden (and empty ones, such as a Notes dock without a note), the plots
+/// a quarter of the height, a large time read-out. F11 or the toolbar button toggles it, Esc
 /// leaves it; leaving restores the window as it was.
 class PresentationMode : public QObject {
     Q_OBJECT
@@ -42,6 +45,9 @@ class PresentationMode : public QObject {
     void setFullScreen(bool on) { m_fullScreen = on; }
     /// One more dock that a demo does not need (hidden while presenting).
     void addHiddenDock(QDockWidget* dock) { m_hidden << dock; }
+    /// A dock shown while presenting only when `needed` says so (the Notes dock when the scene
+    /// has a note); asked again by updateDocks.
+    void addDockWhile(QDockWidget* dock, std::function<bool()> needed);
 
     /// The user's canvas style outside presentation mode (body display, trail, opacity).
     const CanvasStyle& baseStyle() const { return m_base; }
@@ -52,15 +58,28 @@ class PresentationMode : public QObject {
     QAction* toggleAction() const { return m_toggle; }
     QAction* leaveAction() const { return m_leave; }
 
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
   public slots:
     void setActive(bool on);
     void toggle() { setActive(!m_active); }
+    /// While presenting: hides again the docks a demo does not need and shows a conditional
+    /// dock only when needed (after a scene changed, e.g. Page Down in the gallery).
+    void updateDocks();
 
   signals:
     void activeChanged(bool active);
 
   private:
     void applyStyle();
+    /// The plots a quarter of the height (at least 240 px), so that the canvas keeps most of the
+    /// screen.
+    void shrinkPlots();
+    struct Conditional {
+        QDockWidget* dock;
+        std::function<bool()> needed;
+    };
+    QList<Conditional> m_conditional;
 
     QMainWindow* m_window;
     SceneCanvas* m_canvas;

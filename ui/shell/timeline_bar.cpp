@@ -4,6 +4,7 @@
 
 #include <QAction>
 #include <QComboBox>
+#include <QEvent>
 #include <QLabel>
 #include <QSlider>
 #include <QStyle>
@@ -86,6 +87,13 @@ TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
         m_play->setText(playing ? tr("&Pause") : tr("&Play"));
     });
     sync();
+}
+
+void TimelineBar::changeEvent(QEvent* event) {
+    QToolBar::changeEvent(event);
+    // after the children, the read-out among them, have the new font too
+    if (event->type() == QEvent::FontChange)
+        QMetaObject::invokeMethod(this, &TimelineBar::sync, Qt::QueuedConnection);
 }
 
 void TimelineBar::sync() {

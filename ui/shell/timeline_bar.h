@@ -35,6 +35,11 @@ class TimelineBar : public QToolBar {
     /// Follows the clock (and a new horizon).
     void sync();
 
+  protected:
+    /// A new font (presentation mode) sizes the time read-out anew at once, not at the next
+    /// tick: its text is never cut.
+    void changeEvent(QEvent* event) override;
+
   private:
     Playback* m_playback;
     QAction* m_play;

@@ -71,7 +71,8 @@ void TestBodyDisplay::bodyDisplaySavedInSettings() {
         emit window.bodyDisplayMenu()->styleChosen(s);
     }
     QSettings settings;
-    QCOMPARE(settings.value(QStringLiteral("canvas/body")).toInt(), int(BodyDisplay::Outline));
+    QCOMPARE(settings.value(QStringLiteral("canvas/bodyDisplay")).toInt(),
+             int(BodyDisplay::Outline));
     MainWindow again(true);
     const CanvasStyle& s = again.canvas()->canvasStyle();
     QCOMPARE(s.body, BodyDisplay::Outline);
@@ -79,10 +80,14 @@ void TestBodyDisplay::bodyDisplaySavedInSettings() {
     QCOMPARE(s.bodyOpacity, 0.3);
     // nonsense in the settings file is clamped, not drawn
     settings.setValue(QStringLiteral("canvas/trailWidth"), 1e9);
-    settings.setValue(QStringLiteral("canvas/body"), 17);
+    settings.setValue(QStringLiteral("canvas/bodyDisplay"), 17);
     CanvasStyle loaded = CanvasStyle::load(settings);
     QCOMPARE(loaded.trailWidth, 12.0);
-    QCOMPARE(loaded.body, BodyDisplay::ToScale);
+    QCOMPARE(loaded.body, BodyDisplay::Automatic);
+    // the older key held the to-scale default saved at every start, not a choice: it is not read
+    settings.remove(QStringLiteral("canvas/bodyDisplay"));
+    settings.setValue(QStringLiteral("canvas/body"), int(BodyDisplay::ToScale));
+    QCOMPARE(CanvasStyle::load(settings).body, BodyDisplay::Automatic);
 }
 
 void TestBodyDisplay::bodyDisplayKeptInPresentation() {

@@ -174,6 +174,7 @@ SceneCanvas* showEveryVector(MainWindow& window) {
         (s.vectors.*vectorToggle(VectorKind(i))).shown = true;
     window.loadScene(s);
     window.document()->flush();
+    window.canvas()->fitEverything(); // the view these frames were measured at
     return window.canvas();
 }
 
@@ -207,6 +208,8 @@ void TestFrame::initTestCase() {
 void TestFrame::init() {
     m_window = test::showTestWindow();
     QVERIFY(m_window && m_window->document()->solution());
+    // the view these frames were measured at: every body small beside the canvas
+    m_window->canvas()->fitEverything();
 }
 
 void TestFrame::cleanup() {
@@ -284,6 +287,7 @@ void TestFrame::framesRepaintWhatMovesAsAFullRepaintWould() {
     s.vectors.controlCouple.shown = true;
     m_window->loadScene(s);
     SceneCanvas* canvas = m_window->canvas();
+    canvas->fitEverything();
     Playback* playback = m_window->playback();
     playback->seek(1.0);
     QCoreApplication::processEvents();
@@ -309,6 +313,7 @@ void TestFrame::framesRepaintWhatMovesAsAFullRepaintWould() {
     // a jump forward along a straight line: the bodies leave their old places, which are
     // repainted too
     m_window->loadScene(presetScene("line"));
+    m_window->canvas()->fitEverything();
     playback->seek(0.5);
     QCoreApplication::processEvents();
     QVERIFY(showsAFullRepaint(*m_window));

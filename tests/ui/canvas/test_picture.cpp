@@ -35,7 +35,9 @@ void TestPicture::zoomedCircleOnItsExactPath() {
     style.body = BodyDisplay::Marker;
     canvas->setCanvasStyle(style);
     m_window->playback()->seek(0);
-    // six times closer than Fit: a heptagon through the 7 panel ends would be 28 px off
+    // six times closer than Fit everything (centred off the circle's centre, so that an arc
+    // stays in view): a heptagon through the 7 panel ends would be 28 px off
+    canvas->fitEverything();
     canvas->zoomBy(6);
     QCoreApplication::processEvents();
     const QImage image = canvas->grab().toImage();

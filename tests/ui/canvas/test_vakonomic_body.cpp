@@ -51,6 +51,11 @@ void TestVakonomicBody::cleanup() {
 
 void TestVakonomicBody::thirdBodyDrawnAndToggles() {
     SceneCanvas* canvas = m_window->canvas();
+    // drawn to scale (the circle's automatic display is an outline), and framed with every body
+    CanvasStyle style = canvas->canvasStyle();
+    style.body = BodyDisplay::ToScale;
+    canvas->setCanvasStyle(style);
+    canvas->fitEverything();
     QAction* toggle = m_window->findChild<QAction*>(QStringLiteral("showVakonomicAction"));
     QVERIFY(toggle);
     QVERIFY(toggle->isCheckable() && toggle->isChecked());

@@ -216,6 +216,12 @@ void TestInstruments::pivotShowsCoupleAlone() {
     for (int i = 0; i < kVectorKinds; ++i)
         showVector(VectorKind(i));
     SceneCanvas* canvas = m_window->canvas();
+    // to scale, framed with the whole body: the couple's circle around the centre of mass, half
+    // a metre ahead of P on a path 1 m wide, stays in view
+    CanvasStyle style = canvas->canvasStyle();
+    style.body = BodyDisplay::ToScale;
+    canvas->setCanvasStyle(style);
+    canvas->fitEverything();
     // on the first straight side (t < 1 s) the knife velocity is drawn
     m_window->playback()->seek(0.5);
     canvas->grab();

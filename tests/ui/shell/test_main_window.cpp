@@ -245,6 +245,7 @@ void TestMainWindow::parameterChangeUpdatesPlots() {
 
 void TestMainWindow::canvasDrawsBodiesAtTheirPoses() {
     SceneCanvas* canvas = m_window->canvas();
+    canvas->fitEverything(); // the free ghost runs far from the path
     m_window->playback()->seek(6.0);
     MotionSample m = m_window->document()->solution()->at(6.0);
     QImage image = canvas->grab().toImage();

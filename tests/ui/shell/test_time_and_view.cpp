@@ -103,7 +103,7 @@ void TestTimeAndView::stepIsOneFrameAtCurrentSpeed() {
 void TestTimeAndView::fitFramesEverythingThatMoves() {
     // the sinusoid's free ghost runs far from the path: it stays in view over the whole horizon
     SceneCanvas* canvas = m_window->canvas();
-    canvas->fitScene();
+    canvas->fitEverything();
     const Solution& solution = *m_window->document()->solution();
     QRectF area = canvas->drawingArea().adjusted(-1, -1, 1, 1);
     int outside = 0;
