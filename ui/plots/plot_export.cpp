@@ -1,6 +1,7 @@
 #include "plots/plot_export.h"
 
 #include "common/atomic_file.h"
+#include "plots/pinned_plots.h"
 
 #include <qcustomplot.h>
 
@@ -49,7 +50,8 @@ QByteArray renderPlot(QCustomPlot& plot, const QString& format, int width, int h
     return bytes;
 }
 
-void exportPlots(const Solution& solution, const QString& dir, const QStringList& formats) {
+void exportPlots(const Solution& solution, const QString& dir, const QStringList& formats,
+                 PinSet* pins) {
     if (!QDir().mkpath(dir))
         throw IoError("cannot create the plot directory '" + dir.toStdString() + "'");
     PlotSeries series = collectSeries(solution, 800, 800);
@@ -61,6 +63,10 @@ void exportPlots(const Solution& solution, const QString& dir, const QStringList
     for (PlotKind kind : kinds) {
         QCustomPlot plot;
         drawPlot(plot, kind, series);
+        const bool timePlot = kind == PlotKind::Psi || kind == PlotKind::Chi ||
+                              kind == PlotKind::Lambda || kind == PlotKind::Energy;
+        if (pins && timePlot) // what the Plots dock shows
+            addPinnedSeries(plot, kind, *pins);
         addCaption(plot, caption);
         QCPLayoutGrid* grid = plot.plotLayout();
         grid->insertRow(0);

@@ -10,13 +10,17 @@ class QCustomPlot;
 
 namespace chaplygin::ui {
 
+class PinSet;
+
 /// Renders a prepared plot to bytes: "png", "pdf" or "svg", at width x height pixels (points).
 QByteArray renderPlot(QCustomPlot& plot, const QString& format, int width, int height);
 
-/// Writes every plot of the solution (Psi, chi, lambda, energy, trajectory, the paper's figure,
-/// and with a perturbation the tracking errors) into dir as <stem>.<format>, each with a title and
-/// a caption stating the parameters. Each file is written atomically; throws IoError naming the
-/// file when one cannot be written. Needs a QApplication (the offscreen platform is enough).
-void exportPlots(const Solution& solution, const QString& dir, const QStringList& formats);
+/// Writes every plot of the solution (Psi, chi, lambda, energy, trajectory, the paper's figure)
+/// into dir as <stem>.<format>, each with a title and a caption stating the parameters. Each
+/// file is written atomically; throws IoError naming the file when one cannot be written.
+/// Needs a QApplication (the offscreen platform is enough). With pins, the time plots carry the
+/// pinned runs as the Plots dock shows them.
+void exportPlots(const Solution& solution, const QString& dir, const QStringList& formats,
+                 PinSet* pins = nullptr);
 
 } // namespace chaplygin::ui

@@ -507,7 +507,7 @@ bool MainWindow::saveFile(const QString& path) {
 bool MainWindow::exportPlotsTo(const QString& dir, const QStringList& formats) {
     m_document->flush();
     try {
-        exportPlots(*m_document->solution(), dir, formats);
+        exportPlots(*m_document->solution(), dir, formats, PinSet::of(m_document));
     } catch (const std::exception& e) {
         showFileError(QString::fromStdString(e.what()));
         return false;

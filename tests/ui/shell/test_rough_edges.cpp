@@ -5,6 +5,7 @@
 #include "canvas/vector_layer.h"
 #include "document/file_dialogs.h"
 #include "document/math_text.h"
+#include "document/pin_set.h"
 #include "panels/accuracy_readout.h"
 #include "panels/path_panel.h"
 #include "shell/animation_dialog.h"
@@ -90,6 +91,7 @@ class TestRoughEdges : public QObject, public test::WindowFixture {
     void cornerChoicesReadWholeAt1024();
     void dialogsProposeAFolderThatExists();
     void exportsSayWhereTheFilesWent();
+    void exportedPlotsShowThePinnedRuns();
     void animationDialogProposesAFileInAFolderThatExists();
     void accuracyTimeIsTheCanvasTimeEveryFrame();
     void galleryNoteDotsSetInAFaceThatPlacesThem();
@@ -327,6 +329,24 @@ void TestRoughEdges::exportsSayWhereTheFilesWent() {
     QCOMPARE(opened.last(), QUrl::fromLocalFile(m_dir.filePath(QStringLiteral("frames"))));
     // the next animation export starts in the folder the frames went into
     QCOMPARE(lastFolder(QStringLiteral("animation")), m_dir.filePath(QStringLiteral("frames")));
+}
+
+void TestRoughEdges::exportedPlotsShowThePinnedRuns() {
+    // three runs pinned at b = 0.5, 1 and 2 m: the Plots dock shows them, and so do the files
+    QVERIFY(m_window->openFile(QStringLiteral(CHAPLYGIN_SOURCE_DIR) +
+                               QStringLiteral("/docs/images/scenes/pins-three-b.json")));
+    PinSet* pins = PinSet::of(m_window->document());
+    QVERIFY(pins->count() > 0);
+    const QString dir = m_dir.filePath(QStringLiteral("pinned"));
+    QVERIFY(m_window->exportPlotsTo(dir, {QStringLiteral("svg")}));
+    for (const char* stem : {"psi", "chi", "lambda", "energy"}) {
+        QFile svg(QDir(dir).filePath(QString::fromLatin1(stem) + QStringLiteral(".svg")));
+        QVERIFY2(svg.open(QIODevice::ReadOnly), stem);
+        const QString text = QString::fromUtf8(svg.readAll());
+        for (int i = 0; i < pins->count(); ++i)
+            QVERIFY2(text.contains(PinSet::of(m_window->document())->label(i).toHtmlEscaped()),
+                     qPrintable(QStringLiteral("%1: %2").arg(QLatin1String(stem), pins->label(i))));
+    }
 }
 
 void TestRoughEdges::animationDialogProposesAFileInAFolderThatExists() {
