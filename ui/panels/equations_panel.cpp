@@ -1,5 +1,6 @@
 #include "panels/equations_panel.h"
 
+#include "document/math_text.h"
 #include "document/scene_document.h"
 #include "panels/equations_html.h"
 
@@ -42,7 +43,7 @@ QString EquationsPanel::html() {
     const auto& solution = m_document->solution();
     m_html = solution ? equationsHtml(*solution, m_time) : QString();
     int scroll = m_view->verticalScrollBar()->value();
-    m_view->setHtml(m_html);
+    m_view->setHtml(withDottedSymbolFont(m_html)); // the dots of φ̇, Ψ̇ on their letters
     m_view->verticalScrollBar()->setValue(scroll);
     return m_html;
 }
