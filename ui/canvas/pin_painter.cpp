@@ -4,6 +4,7 @@
 #include "canvas/curve_flattening.h"
 #include "document/pin_set.h"
 
+#include <QFontMetricsF>
 #include <QPainter>
 
 #include <algorithm>
@@ -11,6 +12,21 @@
 #include <vector>
 
 namespace chaplygin::ui {
+
+namespace {
+
+constexpr double kKeyRowPx = 16, kKeyTextPx = 28; // the key's rows, and its text after the line
+
+QFont keyFont(QFont f) {
+    f.setPointSizeF(9);
+    return f;
+}
+
+QString keyText(PinSet& pins, int i) {
+    return QObject::tr("pin %1: %2").arg(i + 1).arg(pins.label(i));
+}
+
+} // namespace
 
 void paintPinnedRuns(QPainter& p, PinSet& pins, CanvasCurves& curves, const QTransform& world,
                      double t, QPointF topLeft) {
@@ -60,18 +76,28 @@ void paintPinnedRuns(QPainter& p, PinSet& pins, CanvasCurves& curves, const QTra
         p.setBrush(c);
         p.drawEllipse(world.map(QPointF(m.x, m.y)), 4.5, 4.5);
     }
-    QFont f = p.font();
-    f.setPointSizeF(9);
-    p.setFont(f);
+    p.setFont(keyFont(p.font()));
     for (int i = 0; i < n; ++i) {
-        QPointF row = topLeft + QPointF(0, 16.0 * i);
+        QPointF row = topLeft + QPointF(0, kKeyRowPx * i);
         QColor c = PinSet::color(i);
         p.setPen(QPen(c, 3));
         p.drawLine(row + QPointF(0, -4), row + QPointF(22, -4));
         p.setPen(Qt::black);
-        p.drawText(row + QPointF(28, 0), QObject::tr("pin %1: %2").arg(i + 1).arg(pins.label(i)));
+        p.drawText(row + QPointF(kKeyTextPx, 0), keyText(pins, i));
     }
     p.restore();
+}
+
+QRectF pinKeyBounds(PinSet& pins, QPointF topLeft, const QFont& font) {
+    const int n = pins.count();
+    if (n == 0)
+        return {};
+    const QFontMetricsF fm(keyFont(font));
+    double width = 0;
+    for (int i = 0; i < n; ++i)
+        width = std::max(width, fm.horizontalAdvance(keyText(pins, i)));
+    return QRectF(topLeft.x(), topLeft.y() - fm.ascent(), kKeyTextPx + width,
+                  fm.ascent() + kKeyRowPx * (n - 1) + fm.descent());
 }
 
 } // namespace chaplygin::ui

@@ -62,6 +62,10 @@ class SceneCanvas : public QWidget {
     bool legendVisible() const { return m_legendVisible; }
     /// The part of the widget the scene is drawn in: between the time line and the legend.
     QRectF drawingArea() const;
+    /// The box of the draw-mode hint's text under the time line; empty outside draw mode.
+    QRectF drawHintBounds() const;
+    /// The box of the pinned runs' key of colours and labels; empty without pins.
+    QRectF pinKeyBounds() const;
     /// The world rectangle of the path [m].
     QRectF pathBounds() const;
     /// The world rectangle "Fit everything that moves" frames: the path and every body drawn
@@ -243,6 +247,12 @@ class SceneCanvas : public QWidget {
     CanvasStyle m_style;
     bool m_legendVisible = true;
     int topBandPx() const;
+    /// The draw-mode hint's font and text box (painted in paintLegend).
+    QFont drawHintFont() const;
+    QRectF drawHintBox() const;
+    QString drawHintText() const;
+    /// Where the pin key's first row sits: under the draw-mode hint when it is shown.
+    QPointF pinKeyOrigin() const;
     int legendBandPx() const;
     /// The legend in two rows of two columns (presentation mode, no pushed bodies), not four
     /// rows: the drawing area keeps the height.

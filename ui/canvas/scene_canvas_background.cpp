@@ -3,6 +3,7 @@
 #include "canvas/layer_blit.h"
 #include "document/scene_document.h"
 
+#include <QFontMetricsF>
 #include <QPainter>
 
 #include <algorithm>
@@ -219,10 +220,31 @@ void SceneCanvas::paintLegend(QPainter& p) const {
                       "right turn, grey straight, blue left turn"),
              compact ? right : -1);
     }
-    if (m_drawMode)
-        p.drawText(QRectF(8, topBandPx(), width() - 16, 20 * k), Qt::AlignLeft,
-                   tr("Draw mode: drag to draw a new path; drag a square to move a point, "
-                      "right-click it to delete it"));
+    if (m_drawMode) {
+        p.setFont(drawHintFont());
+        p.drawText(drawHintBox(), Qt::AlignLeft, drawHintText());
+    }
+}
+
+QFont SceneCanvas::drawHintFont() const {
+    QFont f = font();
+    f.setPointSizeF(9 * m_style.lineScale);
+    return f;
+}
+
+QString SceneCanvas::drawHintText() const {
+    return tr("Draw mode: drag to draw a new path; drag a square to move a point, "
+              "right-click it to delete it");
+}
+
+QRectF SceneCanvas::drawHintBox() const {
+    return QRectF(8, topBandPx(), width() - 16, 20 * m_style.lineScale);
+}
+
+QRectF SceneCanvas::drawHintBounds() const {
+    if (!m_drawMode)
+        return {};
+    return QFontMetricsF(drawHintFont()).boundingRect(drawHintBox(), Qt::AlignLeft, drawHintText());
 }
 
 SceneCanvas::BackgroundKey SceneCanvas::backgroundKey() const {

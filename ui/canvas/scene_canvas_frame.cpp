@@ -206,6 +206,20 @@ void SceneCanvas::updateMoving(double from, QPointF centre) {
     update(dirty);
 }
 
+QPointF SceneCanvas::pinKeyOrigin() const {
+    QPointF origin(10, 42);
+    // below the draw-mode hint, which shares the corner under the time line
+    const QRectF hint = drawHintBounds();
+    const QRectF key = chaplygin::ui::pinKeyBounds(*PinSet::of(m_document), {}, font());
+    if (!hint.isEmpty() && !key.isEmpty())
+        origin.setY(std::max(origin.y(), hint.bottom() + 4 - key.top()));
+    return origin;
+}
+
+QRectF SceneCanvas::pinKeyBounds() const {
+    return chaplygin::ui::pinKeyBounds(*PinSet::of(m_document), pinKeyOrigin(), font());
+}
+
 void SceneCanvas::paintEvent(QPaintEvent* e) {
     QPainter p(this);
     const auto& solution = m_document->solution();
@@ -219,7 +233,7 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         p.setClipRect(drawingArea());
         curves(); // at this scale, for the pins too
         paintPinnedRuns(p, *PinSet::of(m_document), m_curves, worldTransform(), m_time,
-                        QPointF(10, 42));
+                        pinKeyOrigin());
         const SystemSpec& spec = solution->scene().system;
         const QTransform world = worldTransform();
         // the translucent ghost on top, so that both stay visible where they overlap

@@ -385,11 +385,29 @@ void fitLegendToWidth(QCustomPlot& plot) {
         columns += legend->item(i) ? 1 : 0;
     if (const int cap = legend->property("maxColumns").toInt(); cap > 0)
         columns = std::min(columns, cap);
+    // the legend's own font size, before any shrinking below
+    if (!legend->property("fullFontSize").isValid())
+        legend->setProperty("fullFontSize", legend->font().pointSizeF());
+    const double full = legend->property("fullFontSize").toDouble();
+    auto setItemFont = [legend](double size) {
+        for (int i = 0; i < legend->itemCount(); ++i)
+            if (QCPAbstractLegendItem* item = legend->item(i)) {
+                QFont f = item->font();
+                f.setPointSizeF(size);
+                item->setFont(f);
+            }
+    };
+    setItemFont(full);
     for (;; --columns) {
         legend->setWrap(columns);
         legend->setFillOrder(QCPLegend::foColumnsFirst, true); // rearranges the items in place
         if (columns <= 1 || legend->minimumOuterSizeHint().width() <= plot.width())
-            return;
+            break;
+    }
+    // one entry a row and still too wide (a narrow plot in presentation): smaller names, whole
+    for (double size = full; legend->minimumOuterSizeHint().width() > plot.width() && size > 6.5;) {
+        size -= 0.5;
+        setItemFont(size);
     }
 }
 

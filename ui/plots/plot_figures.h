@@ -34,7 +34,8 @@ void fitEqualAspect(QCPAxisRect& rect, const QRectF& data);
 void setPlotLook(QCustomPlot& plot, const CanvasStyle& look);
 
 /// Wraps the legend in the row under a lone plot into as many columns as fit the plot's width
-/// (at most the legend's "maxColumns" property when set), so that no entry is cut off. Call
+/// (at most the legend's "maxColumns" property when set), so that no entry is cut off; when one
+/// column is still too wide, its names are set smaller (down to 6.5 pt) until they fit. Call
 /// after drawing and after every resize.
 void fitLegendToWidth(QCustomPlot& plot);
 

@@ -6,6 +6,7 @@
 #include <QMainWindow>
 #include <QResizeEvent>
 #include <QScrollArea>
+#include <QTabBar>
 
 #include <algorithm>
 
@@ -40,6 +41,13 @@ QDockWidget* makeScrollingDock(const QString& title, const QString& name, QWidge
     return makeDock(title, name, scroll, parent);
 }
 
+// a tab bar of docks tabbed together shows whole titles and scrolls when they do not fit: six
+// tabs on the left of a 1024 px window would otherwise read "P…", "N…", "E…"
+void keepTitlesWhole(QTabBar* bar) {
+    bar->setElideMode(Qt::ElideNone);
+    bar->setUsesScrollButtons(true);
+}
+
 } // namespace
 
 Docks placeDocks(QMainWindow* window, const DockPanels& panels) {
@@ -72,6 +80,8 @@ Docks placeDocks(QMainWindow* window, const DockPanels& panels) {
 }
 
 void balanceDocks(QMainWindow* window, const Docks& docks) {
+    for (QTabBar* bar : window->findChildren<QTabBar*>(Qt::FindDirectChildrenOnly))
+        keepTitlesWhole(bar);
     const int width = window->width(), height = window->height();
     if (width < kNarrow) {
         QDockWidget* last = docks.parameters;
@@ -150,6 +160,10 @@ bool DockBalancer::eventFilter(QObject* watched, QEvent* event) {
             m_balanceWhenShown = false;
             balanceLater();
         }
+    } else if (watched == m_window && event->type() == QEvent::ChildPolished) {
+        // the window makes a tab bar for docks when they are first tabbed together
+        if (auto* bar = qobject_cast<QTabBar*>(static_cast<QChildEvent*>(event)->child()))
+            keepTitlesWhole(bar);
     } else if (watched == m_window && event->type() == QEvent::Resize) {
         auto* resize = static_cast<QResizeEvent*>(event);
         if (resize->oldSize().width() >= kNarrow && resize->size().width() < kNarrow)

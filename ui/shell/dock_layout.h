@@ -36,14 +36,16 @@ Docks placeDocks(QMainWindow* window, const DockPanels& panels);
 /// Gives the canvas most of the window: the plots a third of the height (a quarter, at least
 /// 200 px, below 900 px), the left docks a quarter of the width (at least 360 px). Below 1200 px
 /// the right-hand docks (accuracy, notes, equations) join the left tabs after the parameters, so
-/// the canvas keeps its width (docs/user-guide.md, The window).
+/// the canvas keeps its width (docs/user-guide.md, The window). The tabs of tabbed docks keep
+/// their whole titles and scroll when they do not fit.
 void balanceDocks(QMainWindow* window, const Docks& docks);
 
 /// Keeps a window's docks balanced (balanceDocks): once when the window is first shown, when
 /// asked to (before that the docks have no geometry to resize), and whenever the window is
 /// narrowed below 1200 px while it runs. Widening leaves the docks where they are. The Methods
-/// and Sweep tabs enlarge the bottom docks; going back to the Plots tab gives the plots the
-/// height they had (or a balanced one after a start that restored an enlarged layout).
+/// and Sweep tabs enlarge the bottom docks; every dock tab bar the window makes shows whole titles;
+/// going back to the Plots tab gives the plots the height they had (or a balanced one after a start
+/// that restored an enlarged layout).
 class DockBalancer : public QObject {
     Q_OBJECT
   public:

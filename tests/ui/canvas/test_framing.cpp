@@ -4,8 +4,10 @@
 // its docks, and the bottom docks' layout after the Methods tab. Offscreen, real widgets.
 #include "canvas/body_painter.h"
 #include "canvas/scene_canvas.h"
+#include "document/pin_set.h"
 #include "lab/gallery.h"
 #include "panels/path_panel.h"
+#include "scene/presets.h"
 #include "shell/body_display_menu.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
@@ -72,6 +74,7 @@ class TestFraming : public QObject, private test::WindowFixture {
     void presentationGivesTheCanvasTheScreen();
     void followKeepsWorkingInPresentation();
     void plotsRecoverAfterMethodsAndLayoutResets();
+    void pinKeyStaysClearOfTheDrawHint();
 
   private:
     void load(const ExactPath& path) {
@@ -322,6 +325,39 @@ void TestFraming::plotsRecoverAfterMethodsAndLayoutResets() {
     QCOMPARE(m_window->dockWidgetArea(plots), Qt::BottomDockWidgetArea);
     QTRY_VERIFY2(std::abs(plots->height() - balancedPlotsHeight(m_window->height())) <= 8,
                  qPrintable(QString::number(plots->height())));
+}
+
+void TestFraming::pinKeyStaysClearOfTheDrawHint() {
+    // draw mode writes its hint under the time line, where the pins' key starts
+    Scene scene = presetScene("sinusoid");
+    PinnedRun pin{scene.path, scene.system, scene.mode, scene.speed, scene.tEnd};
+    pin.system.params["b"] = 2.2;
+    scene.pins.push_back(pin);
+    scene.pins.push_back(pin);
+    m_window->loadScene(scene);
+    m_window->document()->flush();
+    QCOMPARE(PinSet::of(m_window->document())->count(), 2);
+    SceneCanvas* canvas = m_window->canvas();
+    for (QSize size : {QSize(1024, 768), QSize(1280, 800), QSize(1920, 1080)}) {
+        m_window->resize(size);
+        QCoreApplication::processEvents();
+        canvas->setDrawMode(false);
+        QVERIFY(canvas->drawHintBounds().isEmpty());
+        const QRectF key = canvas->pinKeyBounds();
+        QVERIFY(!key.isEmpty());
+        canvas->setDrawMode(true);
+        const QRectF hint = canvas->drawHintBounds(), moved = canvas->pinKeyBounds();
+        QVERIFY(!hint.isEmpty());
+        QVERIFY2(!hint.intersects(moved), qPrintable(QStringLiteral("hint %1..%2 px, key %3..%4 px")
+                                                         .arg(hint.top())
+                                                         .arg(hint.bottom())
+                                                         .arg(moved.top())
+                                                         .arg(moved.bottom())));
+        // it keeps its size, and stays in the drawing area
+        QCOMPARE(moved.size(), key.size());
+        QVERIFY(canvas->drawingArea().contains(moved));
+        canvas->setDrawMode(false);
+    }
 }
 
 QTEST_MAIN(TestFraming)

@@ -5,6 +5,7 @@
 #include "desktop_entry.h"
 #include "lab/gallery.h"
 #include "plots/plots_panel.h"
+#include "scene/presets.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
 #include "shell/timeline_bar.h"
@@ -33,6 +34,7 @@ class TestPresentation : public QObject, private test::WindowFixture {
     void presentationKeyboardControl();
     void presentationScalesPlots();
     void presentationScreenshotOption();
+    void presentationLegendsWholeAt1024x768();
 };
 
 void TestPresentation::presentationEntersAndLeaves() {
@@ -175,6 +177,57 @@ void TestPresentation::presentationScreenshotOption() {
     QColor leftNormal = plain.pixelColor(20, 300), leftPresenting = presenting.pixelColor(20, 300);
     QVERIFY(leftNormal != leftPresenting);
     QVERIFY(leftPresenting.lightness() > 240);
+}
+
+void TestPresentation::presentationLegendsWholeAt1024x768() {
+    // every plot legend entry's name fits beside its line, with a pinned run and with the
+    // perturbed bodies (more entries) as without
+    m_window->presentation()->setFullScreen(false);
+    m_window->resize(1024, 768);
+    Scene plain = presetScene("sinusoid"), pinned = plain, pushed = plain;
+    PinnedRun pin{plain.path, plain.system, plain.mode, plain.speed, plain.tEnd};
+    pin.system.params["b"] = 2.2;
+    pinned.pins.push_back(pin);
+    pushed.perturbation = Perturbation{};
+    pushed.perturbation->dpsi = 0.2;
+    int checked = 0;
+    for (const Scene& scene : {plain, pinned, pushed}) {
+        // a scene loaded before presentation mode is entered, as in a lecture
+        m_window->presentation()->setActive(false);
+        m_window->loadScene(scene);
+        m_window->document()->flush();
+        m_window->presentation()->setActive(true);
+        m_window->resize(1024, 768);
+        QTest::qWait(50);
+        for (QCustomPlot* plot : m_window->plotsPanel()->findChildren<QCustomPlot*>()) {
+            if (!plot->isVisible())
+                continue;
+            plot->replot(QCustomPlot::rpImmediateRefresh);
+            for (QCPLegend* legend : plot->findChildren<QCPLegend*>()) {
+                for (int i = 0; i < legend->itemCount(); ++i) {
+                    auto* item = qobject_cast<QCPPlottableLegendItem*>(legend->item(i));
+                    if (!item || !item->visible())
+                        continue;
+                    const QString name = item->plottable()->name();
+                    const double need = QFontMetricsF(item->font()).horizontalAdvance(name);
+                    const double room = item->rect().width() - legend->iconSize().width() -
+                                        legend->iconTextPadding();
+                    QVERIFY2(need <= room + 0.5,
+                             qPrintable(QStringLiteral("\"%1\" needs %2 px, has %3 px (legend "
+                                                       "%4 px of %5 px, %6 columns, plot %7 px)")
+                                            .arg(name)
+                                            .arg(need)
+                                            .arg(room)
+                                            .arg(legend->outerRect().width())
+                                            .arg(legend->minimumOuterSizeHint().width())
+                                            .arg(legend->columnCount())
+                                            .arg(plot->width())));
+                    ++checked;
+                }
+            }
+        }
+    }
+    QVERIFY2(checked >= 20, qPrintable(QString::number(checked)));
 }
 
 QTEST_MAIN(TestPresentation)

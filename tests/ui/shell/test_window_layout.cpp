@@ -10,6 +10,7 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QtTest>
 
 #include <cmath>
@@ -32,6 +33,7 @@ class TestWindowLayout : public QObject, private test::WindowFixture {
     void usableCanvasAt1024x768();
     void legendOutsideDrawingArea();
     void statusBarElidedWithTooltip();
+    void dockTabsWholeAt1024x768();
 };
 
 void TestWindowLayout::firstStartSizedToScreen() {
@@ -113,6 +115,37 @@ void TestWindowLayout::usableCanvasAt1024x768() {
     QVERIFY2(canvas->width() >= 480, qPrintable(QString::number(canvas->width())));
     QVERIFY2(canvas->drawingArea().height() >= 220,
              qPrintable(QString::number(canvas->drawingArea().height())));
+}
+
+void TestWindowLayout::dockTabsWholeAt1024x768() {
+    // six docks tabbed on the left (path, parameters, accuracy, notes, equations with the
+    // instruments open): each tab shows its whole title
+    m_window->resize(1024, 768);
+    m_window->balanceDocks();
+    QApplication::processEvents();
+    for (const char* name : {"accuracyDock", "notesDock", "equationsDock"}) {
+        dock(name)->show();
+        QCOMPARE(m_window->dockWidgetArea(dock(name)), Qt::LeftDockWidgetArea);
+    }
+    m_window->balanceDocks();
+    QApplication::processEvents();
+    int tabs = 0, left = 0;
+    for (QTabBar* bar : m_window->findChildren<QTabBar*>(Qt::FindDirectChildrenOnly)) {
+        if (!bar->isVisible())
+            continue;
+        left = std::max(left, bar->count());
+        for (int i = 0; i < bar->count(); ++i, ++tabs) {
+            const QString text = bar->tabText(i);
+            const int need = bar->fontMetrics().horizontalAdvance(text);
+            QVERIFY2(bar->elideMode() == Qt::ElideNone && bar->tabRect(i).width() >= need + 4,
+                     qPrintable(QStringLiteral("\"%1\" needs %2 px, its tab is %3 px")
+                                    .arg(text)
+                                    .arg(need)
+                                    .arg(bar->tabRect(i).width())));
+        }
+    }
+    QVERIFY2(left >= 5, qPrintable(QString::number(left)));
+    QVERIFY(tabs >= 8);
 }
 
 void TestWindowLayout::legendOutsideDrawingArea() {
