@@ -1,7 +1,8 @@
-// The canvas's curves against the exact curves (docs/architecture.md, Canvas): every drawn point
-// within 0.25 device pixels of the exact path, every exact point within 0.25 px of the drawn line,
-// and the knife point on the drawn path within 0.5 px at every frame. The exact paths are the
-// presets' own formulas evaluated here, not the path table the canvas reads.
+// The canvas's curves against the exact curves (docs/architecture.md, "ui/: the desktop
+// application"): every drawn point within 0.25 device pixels of the exact path, every exact point
+// within 0.25 px of the drawn line, and the knife point on the drawn path within 0.5 px at every
+// frame. The exact paths are the presets' own formulas evaluated here, not the path table the
+// canvas reads.
 #include "canvas/curve_flattening.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
