@@ -5,6 +5,7 @@
 #include "canvas/trail_stroke.h"
 #include "canvas/vector_painter.h"
 #include "document/scene_document.h"
+#include "event_counter.h"
 #include "gui_test_support.h"
 #include "plots/flat_plot.h"
 #include "plots/plots_panel.h"
@@ -29,19 +30,7 @@ using namespace chaplygin::ui;
 
 namespace {
 
-// counts the events of one type a widget receives
-class EventCounter : public QObject {
-  public:
-    explicit EventCounter(QEvent::Type type) : m_type(type) {}
-    int count = 0;
-    bool eventFilter(QObject*, QEvent* e) override {
-        count += e->type() == m_type ? 1 : 0;
-        return false;
-    }
-
-  private:
-    QEvent::Type m_type;
-};
+using test::EventCounter;
 
 // the union of the regions of the paint events a widget receives
 class PaintRegions : public QObject {

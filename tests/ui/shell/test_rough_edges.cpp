@@ -6,6 +6,7 @@
 #include "document/file_dialogs.h"
 #include "document/math_text.h"
 #include "document/pin_set.h"
+#include "event_counter.h"
 #include "panels/accuracy_readout.h"
 #include "panels/path_panel.h"
 #include "shell/animation_dialog.h"
@@ -42,19 +43,7 @@ using namespace chaplygin::ui;
 
 namespace {
 
-// counts the events of one type a widget receives
-class EventCounter : public QObject {
-  public:
-    explicit EventCounter(QEvent::Type type) : m_type(type) {}
-    int count = 0;
-    bool eventFilter(QObject*, QEvent* e) override {
-        count += e->type() == m_type ? 1 : 0;
-        return false;
-    }
-
-  private:
-    QEvent::Type m_type;
-};
+using test::EventCounter;
 
 QAction* menuAction(QMenuBar* bar, const QString& text) {
     for (QAction* menu : bar->actions())
