@@ -11,6 +11,8 @@ import subprocess
 import sys
 import tempfile
 
+from rendered_image import read_ppm
+
 EXACT = {
     "circle": lambda u: (2 * math.cos(u), 2 * math.sin(u)),
     "catenary": lambda u: (math.sqrt(u * u + 1), math.asinh(u)),
@@ -30,24 +32,6 @@ def band_colours():
             c = [f + w * (t - f) for f, t in zip(flat, turn)]
             out.append(tuple(0.5 * 255 + 0.5 * v for v in c))
     return out
-
-
-def read_ppm(png):
-    data = subprocess.run(["convert", png, "ppm:-"], check=True, capture_output=True).stdout
-    fields, pos = [], 0
-    while len(fields) < 4:
-        while data[pos:pos + 1].isspace():
-            pos += 1
-        if data[pos:pos + 1] == b"#":
-            pos = data.index(b"\n", pos)
-            continue
-        end = pos
-        while not data[end:end + 1].isspace():
-            end += 1
-        fields.append(data[pos:end])
-        pos = end
-    assert fields[0] == b"P6" and fields[3] == b"255", fields
-    return int(fields[1]), int(fields[2]), data[pos + 1:]
 
 
 def main():

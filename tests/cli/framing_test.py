@@ -17,6 +17,8 @@ import subprocess
 import sys
 import tempfile
 
+from rendered_image import read_ppm
+
 EXACT = {
     "circle": (lambda u: (2 * math.cos(u), 2 * math.sin(u)), 0, 2 * math.pi),
     "catenary": (lambda u: (math.sqrt(u * u + 1), math.asinh(u)), 0, 5),
@@ -54,21 +56,6 @@ def path_colours(presenting):
     # the controlled trail on it (ui/canvas/canvas_style.cpp, darker(150))
     trail = hsv_darker((0x00, 0x1f, 0x7a) if presenting else (0x1f, 0x77, 0xb4), 150)
     return band, trail
-
-
-def read_ppm(png):
-    data = subprocess.run(["convert", png, "ppm:-"], check=True, capture_output=True).stdout
-    fields, pos = [], 0
-    while len(fields) < 4:
-        while data[pos:pos + 1].isspace():
-            pos += 1
-        end = pos
-        while not data[end:end + 1].isspace():
-            end += 1
-        fields.append(data[pos:end])
-        pos = end
-    assert fields[0] == b"P6" and fields[3] == b"255", fields
-    return int(fields[1]), int(fields[2]), data[pos + 1:]
 
 
 def render(exe, args, tmp, tag):
