@@ -326,11 +326,10 @@ QString feedbackLaw(const At& at) {
     h += row(QStringLiteral("\u03ba_b\u2032 = (u \u2212 F)/G"),
              QStringLiteral("(%1 \u2212 %2)/%3").arg(num(law.u), num(z.drift), num(z.gain)),
              law.curvatureRate, QStringLiteral("1/m\u00b2"),
-             QCoreApplication::translate(
-                 "EquationsPanel",
-                 "dz\u2084/ds_p = G\u03ba_b\u2032 + F, G = (1 \u2212 \u03ba"
-                 "e)\u00b2 "
-                 "sec\u00b3\u03b8"));
+             QCoreApplication::translate("EquationsPanel",
+                                         "dz\u2084/ds_p = G\u03ba_b\u2032 + F, G = (1 \u2212 \u03ba"
+                                         "e)\u00b2 "
+                                         "sec\u00b3\u03b8"));
     const QString bound =
         law.saturated ? QCoreApplication::translate("EquationsPanel",
                                                     "; held at the limit |\u03a8\u0307| \u2264 %1 "
