@@ -15,6 +15,9 @@ namespace chaplygin::ui {
 
 namespace {
 
+// the draw-mode hint wraps to the canvas's width
+constexpr int kDrawHintFlags = Qt::AlignLeft | Qt::TextWordWrap;
+
 // curvature colour: grey when straight, blue for left turns (kappa > 0), red for right turns
 QColor curvatureColor(double kappa) {
     double w = std::tanh(std::abs(kappa));
@@ -222,7 +225,7 @@ void SceneCanvas::paintLegend(QPainter& p) const {
     }
     if (m_drawMode) {
         p.setFont(drawHintFont());
-        p.drawText(drawHintBox(), Qt::AlignLeft, drawHintText());
+        p.drawText(drawHintBox(), kDrawHintFlags, drawHintText());
     }
 }
 
@@ -238,13 +241,18 @@ QString SceneCanvas::drawHintText() const {
 }
 
 QRectF SceneCanvas::drawHintBox() const {
-    return QRectF(8, topBandPx(), width() - 16, 20 * m_style.lineScale);
+    // wrapped to the canvas's width, as many lines as a narrow window needs
+    const QRectF area(8, topBandPx(), width() - 16, 1e4);
+    const QRectF used =
+        QFontMetricsF(drawHintFont()).boundingRect(area, kDrawHintFlags, drawHintText());
+    return QRectF(8, topBandPx(), width() - 16, std::max(used.height(), 20 * m_style.lineScale));
 }
 
 QRectF SceneCanvas::drawHintBounds() const {
     if (!m_drawMode)
         return {};
-    return QFontMetricsF(drawHintFont()).boundingRect(drawHintBox(), Qt::AlignLeft, drawHintText());
+    return QFontMetricsF(drawHintFont())
+        .boundingRect(drawHintBox(), kDrawHintFlags, drawHintText());
 }
 
 SceneCanvas::BackgroundKey SceneCanvas::backgroundKey() const {

@@ -348,6 +348,12 @@ void TestFraming::pinKeyStaysClearOfTheDrawHint() {
         canvas->setDrawMode(true);
         const QRectF hint = canvas->drawHintBounds(), moved = canvas->pinKeyBounds();
         QVERIFY(!hint.isEmpty());
+        // the hint is whole: wrapped inside the canvas, not cut at its right edge
+        QVERIFY2(hint.left() >= 0 && hint.right() <= canvas->width(),
+                 qPrintable(QStringLiteral("hint %1..%2 px of %3")
+                                .arg(hint.left())
+                                .arg(hint.right())
+                                .arg(canvas->width())));
         QVERIFY2(!hint.intersects(moved), qPrintable(QStringLiteral("hint %1..%2 px, key %3..%4 px")
                                                          .arg(hint.top())
                                                          .arg(hint.bottom())
