@@ -97,6 +97,25 @@ std::vector<QRectF> SceneCanvas::trailEndsBounds(const MotionSample& now, double
     return boxes;
 }
 
+namespace {
+
+// f(x, y, phi) for each body the canvas shows at `now`: the controlled and the free body, and the
+// vakonomic and pushed ones when they are drawn
+template <class F>
+void forEachShownPose(const MotionSample& now, bool vakonomic, bool openLoop, bool closedLoop,
+                      F&& f) {
+    f(now.x, now.y, now.phi);
+    f(now.free.x, now.free.y, now.free.phi);
+    if (vakonomic)
+        f(now.vak.x, now.vak.y, now.vak.phi);
+    if (openLoop)
+        f(now.pert.x, now.pert.y, now.pert.phi);
+    if (closedLoop)
+        f(now.fb.x, now.fb.y, now.fb.phi);
+}
+
+} // namespace
+
 QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& now,
                                 double from) const {
     const QTransform world = worldTransform();
@@ -109,14 +128,7 @@ QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& no
     auto body = [&](double x, double y, double phi) {
         add(BodySprites::pixelBounds(world, m_scale, spec, solution.system(), {x, y, phi}, look));
     };
-    body(now.x, now.y, now.phi);
-    body(now.free.x, now.free.y, now.free.phi);
-    if (m_showVakonomic)
-        body(now.vak.x, now.vak.y, now.vak.phi);
-    if (drawsOpenLoop())
-        body(now.pert.x, now.pert.y, now.pert.phi);
-    if (drawsClosedLoop())
-        body(now.fb.x, now.fb.y, now.fb.phi);
+    forEachShownPose(now, m_showVakonomic, drawsOpenLoop(), drawsClosedLoop(), body);
     add(m_vectors.bounds(m_document->solution(), m_document->scene().vectors, now, world));
     // only the widget is painted: a body far outside the view (a wild zoom) must not overflow int
     if (!std::isfinite(box.x()) || !std::isfinite(box.y()) || !std::isfinite(box.width()) ||
@@ -296,14 +308,7 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) cons
         clips.push_back(mapped);
         clips.push_back(pen.createStroke(mapped));
     };
-    add(now.x, now.y, now.phi);
-    add(now.free.x, now.free.y, now.free.phi);
-    if (m_showVakonomic)
-        add(now.vak.x, now.vak.y, now.vak.phi);
-    if (drawsOpenLoop())
-        add(now.pert.x, now.pert.y, now.pert.phi);
-    if (drawsClosedLoop())
-        add(now.fb.x, now.fb.y, now.fb.phi);
+    forEachShownPose(now, m_showVakonomic, drawsOpenLoop(), drawsClosedLoop(), add);
     if (clips.empty())
         return;
     const Trail controlled = trails(now).back();
