@@ -316,13 +316,8 @@ void TestBadInputs::speedModeAtPivotCorner() {
     m_window->pathPanel()->cornersBox()->setCurrentIndex(1);
     m_window->pathPanel()->drawButton()->click();
     SceneCanvas* canvas = m_window->canvas();
-    QTest::mousePress(canvas, Qt::LeftButton, {}, QPoint(100, 300));
-    for (QPoint p : {QPoint(250, 300), QPoint(400, 300), QPoint(400, 150)}) {
-        QMouseEvent move(QEvent::MouseMove, p, canvas->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
-                         {});
-        QApplication::sendEvent(canvas, &move);
-    }
-    QTest::mouseRelease(canvas, Qt::LeftButton, {}, QPoint(400, 100));
+    test::dragStroke(canvas, QPoint(100, 300),
+                     {QPoint(250, 300), QPoint(400, 300), QPoint(400, 150)}, QPoint(400, 100));
     Snapshot before = snapshot();
     QVERIFY(before.solution->path()->pivotCount() > 0);
     QComboBox* mode = m_window->parametersPanel()->findChildren<QComboBox*>().at(2);

@@ -181,13 +181,8 @@ void TestMainWindow::editDrawnPathPoints() {
     m_window->pathPanel()->cornersBox()->setCurrentIndex(1); // pivot
     m_window->pathPanel()->drawButton()->click();
     SceneCanvas* canvas = m_window->canvas();
-    QTest::mousePress(canvas, Qt::LeftButton, {}, QPoint(100, 300));
-    for (QPoint p : {QPoint(200, 300), QPoint(300, 200), QPoint(400, 200)}) {
-        QMouseEvent move(QEvent::MouseMove, p, canvas->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
-                         {});
-        QApplication::sendEvent(canvas, &move);
-    }
-    QTest::mouseRelease(canvas, Qt::LeftButton, {}, QPoint(500, 300));
+    test::dragStroke(canvas, QPoint(100, 300),
+                     {QPoint(200, 300), QPoint(300, 200), QPoint(400, 200)}, QPoint(500, 300));
     m_window->document()->flush();
     auto points = m_window->document()->scene().path.points;
     QCOMPARE(points.size(), std::size_t(5));

@@ -99,13 +99,8 @@ void TestRoughEdges::drawStroke() {
     if (!m_window->pathPanel()->drawButton()->isChecked())
         m_window->pathPanel()->drawButton()->click();
     QVERIFY(canvas->drawMode());
-    QTest::mousePress(canvas, Qt::LeftButton, {}, QPoint(100, 300));
-    for (QPoint p : {QPoint(200, 300), QPoint(300, 200), QPoint(400, 200)}) {
-        QMouseEvent move(QEvent::MouseMove, p, canvas->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
-                         {});
-        QApplication::sendEvent(canvas, &move);
-    }
-    QTest::mouseRelease(canvas, Qt::LeftButton, {}, QPoint(500, 300));
+    test::dragStroke(canvas, QPoint(100, 300),
+                     {QPoint(200, 300), QPoint(300, 200), QPoint(400, 200)}, QPoint(500, 300));
     m_window->document()->flush();
     QCOMPARE(m_window->document()->scene().path.kind, PathKind::Polyline);
 }

@@ -4,10 +4,13 @@
 #include "document/scene_document.h"
 #include "shell/main_window.h"
 
+#include <QApplication>
 #include <QCoreApplication>
+#include <QMouseEvent>
 #include <QStandardPaths>
 #include <QtTest>
 
+#include <initializer_list>
 #include <memory>
 
 namespace chaplygin::ui::test {
@@ -29,6 +32,19 @@ inline std::unique_ptr<MainWindow> showTestWindow() {
         return nullptr;
     window->document()->flush();
     return window;
+}
+
+/// A stroke drawn with the left button held: pressed at `from`, moved through `through`,
+/// released at `to` (the canvas in draw mode makes a path of it).
+inline void dragStroke(QWidget* canvas, QPoint from, std::initializer_list<QPoint> through,
+                       QPoint to) {
+    QTest::mousePress(canvas, Qt::LeftButton, {}, from);
+    for (QPoint p : through) {
+        QMouseEvent move(QEvent::MouseMove, p, canvas->mapToGlobal(p), Qt::NoButton, Qt::LeftButton,
+                         {});
+        QApplication::sendEvent(canvas, &move);
+    }
+    QTest::mouseRelease(canvas, Qt::LeftButton, {}, to);
 }
 
 } // namespace chaplygin::ui::test
