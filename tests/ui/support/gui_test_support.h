@@ -7,7 +7,9 @@
 #include <QApplication>
 #include <QCoreApplication>
 #include <QMouseEvent>
+#include <QSettings>
 #include <QStandardPaths>
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <initializer_list>
@@ -15,9 +17,14 @@
 
 namespace chaplygin::ui::test {
 
-/// QSettings go to a test location, never the user's.
+/// QSettings go to a folder of this process, never the user's and never another test's: ctest
+/// runs the functions of one suite as parallel processes, and a folder one of them remembered
+/// and then deleted must not reach another through a shared settings file.
 inline void useTestSettings(const QString& applicationName) {
     QStandardPaths::setTestModeEnabled(true);
+    static QTemporaryDir settingsFolder;
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsFolder.path());
+    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsFolder.path());
     QCoreApplication::setOrganizationName(QStringLiteral("ChaplyginLabTests"));
     QCoreApplication::setApplicationName(applicationName);
 }
