@@ -142,15 +142,8 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
         std::tie(o.width, o.height) = readWindowSize(*size);
     o.viewReport = given.value("--view-report").value_or("");
     if (auto body = given.value("--body")) {
-        if (*body == "auto")
-            o.body = BodyDisplay::Automatic;
-        else if (*body == "scale")
-            o.body = BodyDisplay::ToScale;
-        else if (*body == "outline")
-            o.body = BodyDisplay::Outline;
-        else if (*body == "marker")
-            o.body = BodyDisplay::Marker;
-        else
+        o.body = bodyDisplayNamed(*body);
+        if (!o.body)
             throw InputError("--body",
                              "expected auto, scale, outline or marker, got '" + *body + "'");
     }

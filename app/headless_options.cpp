@@ -1,5 +1,6 @@
 #include "headless_options.h"
 
+#include "canvas/canvas_style.h"
 #include "common/input_error.h"
 #include "option_table.h"
 #include "scene/perturbation.h"
@@ -259,6 +260,12 @@ void readOutputs(const OptionValues& given, HeadlessOptions& o) {
         o.sweep = parseSweepSpec(*sweep);
     o.animationPath = given.value("--animation").value_or("");
     o.withPlots = given.has("--with-plots");
+    if (auto body = given.value("--body")) {
+        if (!ui::bodyDisplayNamed(*body))
+            throw InputError("--body",
+                             "expected auto, scale, outline or marker, got '" + *body + "'");
+        o.body = *body;
+    }
     if (auto fps = given.value("--fps"))
         o.fps = parseWholeNumber(*fps, "--fps", 1, 120, "from 1 to 120");
     if (auto size = given.value("--size")) {
@@ -308,10 +315,12 @@ HeadlessOptions parseOptions(const std::vector<std::string>& args) {
         (o.workPrecision || !o.csvPath.empty() || !o.summaryPath.empty() || !o.plotsDir.empty()))
         throw InputError("--animation", "writes the animation alone; run --csv, --summary and "
                                         "--plots separately");
-    if (o.animationPath.empty() && (given.has("--fps") || given.has("--size") || o.withPlots))
+    if (o.animationPath.empty() &&
+        (given.has("--fps") || given.has("--size") || o.withPlots || given.has("--body")))
         throw InputError(given.has("--fps")    ? "--fps"
                          : given.has("--size") ? "--size"
-                                               : "--with-plots",
+                         : o.withPlots         ? "--with-plots"
+                                               : "--body",
                          "applies only to --animation");
     if (o.sweep)
         validateSweep(o.scene, *o.sweep);

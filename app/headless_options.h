@@ -27,6 +27,7 @@ struct HeadlessOptions {
     int fps = 30;                   ///< --fps
     int width = 1280, height = 720; ///< --size WxH of the animation
     bool withPlots = false;         ///< --with-plots: the plots beside the canvas
+    std::string body = "auto";      ///< --body auto|scale|outline|marker in the animation
 };
 
 /// Parses the arguments after --headless (and the scene options the screenshot mode shares).

@@ -123,6 +123,7 @@ int runAnimation(const HeadlessOptions& o, int argc, char** argv) {
     settings.fps = o.fps;
     settings.size = QSize(o.width, o.height);
     settings.withPlots = o.withPlots;
+    settings.look.style.body = *ui::bodyDisplayNamed(o.body);
     ui::AnimationExporter exporter(&document, settings);
     exporter.run();
     return 0;

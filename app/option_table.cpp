@@ -37,9 +37,10 @@ constexpr std::array kOptions = {
                        "its map: pixel = origin + scale (x, -y), scale in px/m",
                .modes = Screenshot, .section = S::Screenshot},
     OptionSpec{.name = "--body", .argument = "auto|scale|outline|marker",
-               .help = "the bodies to scale, as outlines or as markers; auto (the\n"
-                       "default) picks one from the body's size beside the path's",
-               .modes = Screenshot, .section = S::Screenshot},
+               .help = "the bodies to scale, as outlines or as markers, in the\n"
+                       "screenshot or --animation; auto (the default) picks one\n"
+                       "from the body's size beside the path's",
+               .modes = Screenshot | Headless, .section = S::Screenshot},
     OptionSpec{.name = "--language", .argument = "en|pt_BR",
                .help = "that catalogue instead of the system's (exit 2 when it is not\n"
                        "installed)",

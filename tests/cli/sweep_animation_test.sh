@@ -85,6 +85,16 @@ animation_png_frames)
   expect_err "writes the animation alone"
   run 2 --preset line --fps 10 --csv -
   expect_err "--fps: applies only to --animation"
+  # --body draws the bodies as asked (the line's sleigh to scale by default, here as markers)
+  run 0 --preset line --animation "$work/markers/" --fps 2 --size 200x150 --body marker
+  [ "$(ls "$work/markers" | wc -l)" -eq 19 ] || fail "marker frames"
+  cmp -s "$work/frames/frame_00004.png" "$work/markers/frame_00004.png" && fail "--body marker drew the same frame"
+  run 0 --preset line --animation "$work/auto/" --fps 2 --size 200x150 --body auto
+  cmp -s "$work/frames/frame_00004.png" "$work/auto/frame_00004.png" || fail "--body auto is not the default"
+  run 2 --preset line --animation "$work/x/" --body tiny
+  expect_err "--body: expected auto, scale, outline or marker, got 'tiny'"
+  run 2 --preset line --body marker --csv -
+  expect_err "--body: applies only to --animation"
   ;;
 animation_without_ffmpeg)
   # PATH without ffmpeg: GIF and MP4 are refused with a clear message, PNG frames still work

@@ -7,6 +7,18 @@
 
 namespace chaplygin::ui {
 
+std::optional<BodyDisplay> bodyDisplayNamed(std::string_view name) {
+    if (name == "auto")
+        return BodyDisplay::Automatic;
+    if (name == "scale")
+        return BodyDisplay::ToScale;
+    if (name == "outline")
+        return BodyDisplay::Outline;
+    if (name == "marker")
+        return BodyDisplay::Marker;
+    return std::nullopt;
+}
+
 namespace {
 // normal palette (the matplotlib defaults the exported plots use)
 const QColor kControlled(0x1f, 0x77, 0xb4);

@@ -2,6 +2,9 @@
 #include <QColor>
 #include <QPen>
 
+#include <optional>
+#include <string_view>
+
 class QSettings;
 
 namespace chaplygin::ui {
@@ -11,6 +14,10 @@ namespace chaplygin::ui {
 /// picks one of the three from the body's size against the path's (shownBodyDisplay in
 /// canvas/body_painter.h).
 enum class BodyDisplay { ToScale, Outline, Marker, Automatic };
+
+/// The display a command-line name asks for: auto, scale, outline or marker; nothing for another
+/// name.
+std::optional<BodyDisplay> bodyDisplayNamed(std::string_view name);
 
 /// The look of the canvas and the plots: line and font scale, palette, body display, trail width
 /// and body opacity. Presentation mode uses a scaled, high-contrast copy.
@@ -45,6 +52,18 @@ struct CanvasStyle {
     CanvasStyle presentation(double factor) const;
 
     bool operator==(const CanvasStyle&) const = default;
+};
+
+/// What a canvas shows beside the scene itself: its style and which bodies and keys are drawn.
+/// An exported animation is drawn with the look of the canvas on the screen.
+struct CanvasLook {
+    CanvasStyle style;
+    bool vakonomic = true;  ///< the genuine vakonomic body
+    bool openLoop = true;   ///< the perturbed body under the nominal lambda(t)
+    bool closedLoop = true; ///< the perturbed body under feedback
+    bool legend = true;     ///< the legend strip under the drawing area
+
+    bool operator==(const CanvasLook&) const = default;
 };
 
 /// Relative luminance (ITU-R BT.709) of a colour, 0 (black) ... 1 (white): what a greyscale

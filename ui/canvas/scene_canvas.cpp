@@ -187,6 +187,22 @@ void SceneCanvas::setCanvasStyle(const CanvasStyle& style) {
     update();
 }
 
+CanvasLook SceneCanvas::look() const {
+    return {.style = m_style,
+            .vakonomic = m_showVakonomic,
+            .openLoop = m_showOpenLoop,
+            .closedLoop = m_showClosedLoop,
+            .legend = m_legendVisible};
+}
+
+void SceneCanvas::setLook(const CanvasLook& look) {
+    m_showVakonomic = look.vakonomic;
+    m_showOpenLoop = look.openLoop;
+    m_showClosedLoop = look.closedLoop;
+    m_legendVisible = look.legend;
+    setCanvasStyle(look.style);
+}
+
 void SceneCanvas::setLegendVisible(bool visible) {
     m_legendVisible = visible;
     refit();

@@ -59,6 +59,9 @@ class SceneCanvas : public QWidget {
 
     const CanvasStyle& canvasStyle() const { return m_style; }
     void setCanvasStyle(const CanvasStyle& style);
+    /// The style and the bodies and keys shown, to draw another canvas the same way.
+    CanvasLook look() const;
+    void setLook(const CanvasLook& look);
     bool legendVisible() const { return m_legendVisible; }
     /// The part of the widget the scene is drawn in: between the time line and the legend.
     QRectF drawingArea() const;

@@ -92,6 +92,7 @@ AnimationExporter::AnimationExporter(SceneDocument* document, const AnimationSet
     layout->setContentsMargins(0, 0, 0, 0);
     layout->setSpacing(0);
     m_canvas = new SceneCanvas(document);
+    m_canvas->setLook(settings.look);
     layout->addWidget(m_canvas, 3);
     if (settings.withPlots) {
         m_plots = new PlotsPanel(document);

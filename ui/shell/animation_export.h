@@ -1,4 +1,6 @@
 #pragma once
+#include "canvas/canvas_style.h"
+
 #include <QImage>
 #include <QProcess>
 #include <QSize>
@@ -27,6 +29,7 @@ struct AnimationSettings {
     QSize size{1280, 720}; ///< frame size [px]
     double speedFactor = 1;
     bool withPlots = false; ///< the plots to the right of the canvas
+    CanvasLook look;        ///< the canvas's style and the bodies shown (the screen's, in the app)
 };
 
 /// The format a file name asks for. Throws InputError("--animation") for another extension.

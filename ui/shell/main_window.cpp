@@ -456,6 +456,7 @@ void MainWindow::exportAnimationDialog() {
     if (dialog.exec() != QDialog::Accepted)
         return;
     AnimationSettings chosen = dialog.settings();
+    chosen.look = m_canvas->look();          // the clip shows what the screen shows
     if (QFileInfo(chosen.file).isRelative()) // a typed name goes beside the proposed one
         chosen.file = QDir(lastFolder(QStringLiteral("animation"))).filePath(chosen.file);
     exportAnimationTo(chosen);

@@ -82,6 +82,7 @@ class TestRoughEdges : public QObject, public test::WindowFixture {
     void exportsSayWhereTheFilesWent();
     void exportedPlotsShowThePinnedRuns();
     void animationDialogProposesAFileInAFolderThatExists();
+    void animationDrawsWhatTheCanvasShows();
     void accuracyTimeIsTheCanvasTimeEveryFrame();
     void galleryNoteDotsSetInAFaceThatPlacesThem();
     void helpDotsSetInAFaceThatPlacesThem();
@@ -348,6 +349,47 @@ void TestRoughEdges::animationDialogProposesAFileInAFolderThatExists() {
     QVERIFY(!proposed.isEmpty());
     QVERIFY2(QFileInfo(proposed).isAbsolute(), qPrintable(proposed));
     QVERIFY2(proposed.startsWith(m_dir.path()), qPrintable(proposed));
+}
+
+void TestRoughEdges::animationDrawsWhatTheCanvasShows() {
+    // the user chose markers and hid the vakonomic body: the exported clip does the same
+    SceneCanvas* canvas = m_window->canvas();
+    CanvasStyle style = canvas->canvasStyle();
+    style.body = BodyDisplay::Marker;
+    canvas->setCanvasStyle(style);
+    canvas->setShowVakonomic(false);
+    const QString folder = m_dir.filePath(QStringLiteral("look/"));
+    QTimer::singleShot(0, this, [folder] {
+        for (QWidget* w : QApplication::topLevelWidgets())
+            if (auto* dialog = qobject_cast<AnimationDialog*>(w)) {
+                dialog->fileEdit()->setText(folder);
+                dialog->fpsBox()->setValue(1);
+                dialog->widthBox()->setValue(320);
+                dialog->heightBox()->setValue(200);
+                dialog->speedBox()->setValue(2);
+                dialog->accept();
+            }
+    });
+    m_window->exportAnimationDialog();
+    const QImage written(QDir(folder).filePath(QStringLiteral("frame_00001.png")));
+    QVERIFY(!written.isNull());
+
+    QCOMPARE(written.size(), QSize(320, 200));
+    AnimationSettings settings;
+    settings.file = m_dir.filePath(QStringLiteral("unused/"));
+    settings.size = written.size();
+    const double t = 2.0; // frame 1 at 1 frame per second, twice real time
+    const QImage fresh = AnimationExporter(m_window->document(), settings)
+                             .renderFrame(t)
+                             .convertToFormat(written.format());
+    settings.look = canvas->look();
+    QCOMPARE(settings.look.style.body, BodyDisplay::Marker);
+    QVERIFY(!settings.look.vakonomic);
+    const QImage alike = AnimationExporter(m_window->document(), settings)
+                             .renderFrame(t)
+                             .convertToFormat(written.format());
+    QVERIFY(written == alike);
+    QVERIFY(written != fresh); // a fresh canvas's look (to scale, vakonomic body) differs
 }
 
 void TestRoughEdges::accuracyTimeIsTheCanvasTimeEveryFrame() {
