@@ -183,6 +183,7 @@ QRectF SceneCanvas::drawingArea() const {
 
 void SceneCanvas::setCanvasStyle(const CanvasStyle& style) {
     m_style = style.sanitized();
+    m_vectors.setLineScale(m_style.lineScale);
     refit();
     update();
 }

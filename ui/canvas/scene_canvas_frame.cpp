@@ -210,7 +210,7 @@ void SceneCanvas::updateMoving(double from, QPointF centre) {
         scroll(shift.x(), shift.y(), moving);
         m_movingPainted.translate(shift);
         dirty += QRegion(area) - moving;
-        dirty += m_vectors.scaleBarsBounds(m_document->scene().vectors, rect());
+        dirty += m_vectors.scaleBarsBounds(m_document->scene().vectors, drawingArea());
     }
     dirty += m_movingPainted;
     dirty += movingBounds(*solution, solution->at(m_time), from);
@@ -264,7 +264,7 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         paintPathOverBodies(p, *now);
         p.restore();
         m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform(), m_scale,
-                        rect(), e->region());
+                        drawingArea(), e->region());
         paintTimeReadout(p, solution->tEnd());
         m_movingPainted = movingBounds(*solution, *now, m_time);
     } else {

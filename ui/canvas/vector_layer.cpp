@@ -18,14 +18,17 @@ constexpr double kLargestTurn = 1.5 * std::numbers::pi; // the largest couple's 
 
 constexpr double kLabelPx = 48; // room for an arrowhead's label and its pen around a shape
 
-QPointF scaleBarsCorner(const QRectF& area) {
-    return area.bottomRight() - QPointF(10, 70);
+// the bottom right of the drawing area, clear of the legend under it
+QPointF scaleBarsCorner(const QRectF& area, double lineScale) {
+    return area.bottomRight() - lineScale * QPointF(14, 14);
 }
 
-// a box around the scale bars stacked up from corner: a row of 18 px each, its bar at most
-// 6 + 2 x 80 px left of the texts' column (paintScaleBars)
-QRect scaleBarsBox(QPointF corner, int rows, int textWidth) {
-    return QRectF(corner - QPointF(textWidth + 200, 18.0 * rows + 12), corner + QPointF(12, 12))
+// a box around the scale bars stacked up from corner: a row of 18 px each (times lineScale),
+// its bar at most 6 + 2 x 80 px left of the texts' column (paintScaleBars)
+QRect scaleBarsBox(QPointF corner, int rows, int textWidth, double lineScale) {
+    const double s = lineScale;
+    return QRectF(corner - QPointF(textWidth + 200 * s, 18.0 * s * rows + 12 * s),
+                  corner + QPointF(12 * s, 12 * s))
         .toAlignedRect();
 }
 
@@ -102,21 +105,24 @@ void VectorLayer::paint(QPainter& p, const std::shared_ptr<const Solution>& solu
     if (!shapes(solution, overlay, now, world, m_free, m_controlled, k))
         return;
     m_labels.clear();
-    paintVectorShapes(p, m_free, false);
-    paintVectorShapes(p, m_controlled, true, &m_labels);
+    paintVectorShapes(p, m_free, false, nullptr, m_lineScale);
+    paintVectorShapes(p, m_controlled, true, &m_labels, m_lineScale);
     QFont barsFont = p.font();
-    barsFont.setPointSizeF(8.5);
+    barsFont.setPointSizeF(8.5 * m_lineScale);
     m_barsText = scaleBarsTextWidth(barsFont, overlay, k, pixelsPerMetre);
     // the scale bars stay put: a frame that repaints what moves need not draw them
     if (repainted.intersects(scaleBarsBounds(overlay, area)))
-        paintScaleBars(p, overlay, k, pixelsPerMetre, scaleBarsCorner(area));
+        paintScaleBars(p, overlay, k, pixelsPerMetre, scaleBarsCorner(area, m_lineScale),
+                       m_lineScale);
 }
 
 QRect VectorLayer::scaleBarsBounds(const VectorOverlay& overlay, const QRectF& area) const {
     int rows = 0;
     for (int i = 0; i < kVectorKinds; ++i)
         rows += (overlay.*vectorToggle(VectorKind(i))).shown ? 1 : 0;
-    return rows > 0 ? scaleBarsBox(scaleBarsCorner(area), rows, m_barsText) : QRect();
+    return rows > 0
+               ? scaleBarsBox(scaleBarsCorner(area, m_lineScale), rows, m_barsText, m_lineScale)
+               : QRect();
 }
 
 QRectF VectorLayer::bounds(const std::shared_ptr<const Solution>& solution,
@@ -128,15 +134,14 @@ QRectF VectorLayer::bounds(const std::shared_ptr<const Solution>& solution,
         return {};
     QRectF box;
     auto add = [&](QRectF r) { box = box.isNull() ? r : box.united(r); };
+    const double label = kLabelPx * m_lineScale;
     for (const VectorShapes* s : {&free, &controlled}) {
         for (const ArrowShape& a : s->arrows)
-            add(QRectF(a.tail, a.head)
-                    .normalized()
-                    .adjusted(-kLabelPx, -kLabelPx, kLabelPx, kLabelPx));
-        for (const CoupleShape& c : s->couples)
+            add(QRectF(a.tail, a.head).normalized().adjusted(-label, -label, label, label));
+        for (const CoupleShape& c : s->couples) // "tau = 0 while turning" under it
             add(QRectF(c.centre, c.centre)
-                    .adjusted(-c.radius - kLabelPx, -c.radius - kLabelPx, c.radius + kLabelPx,
-                              c.radius + kLabelPx + 20)); // "tau = 0 while turning" under it
+                    .adjusted(-c.radius - label, -c.radius - label, c.radius + label,
+                              c.radius + label + 20 * m_lineScale));
     }
     return box;
 }

@@ -38,6 +38,10 @@ class VectorLayer {
     const VectorShapes& freeShapes() const { return m_free; }
     /// The boxes [px] of the controlled body's labels as the last paint placed them.
     const std::vector<QRectF>& labelBoxes() const { return m_labels; }
+    /// Multiplies the pens, arrowheads and type (the canvas style's lineScale: presentation
+    /// mode's larger type reaches the arrows' names and the scale bars too).
+    void setLineScale(double lineScale) { m_lineScale = lineScale; }
+    double lineScale() const { return m_lineScale; }
 
   private:
     /// The shapes of the free and the controlled body; false when no arrow is shown.
@@ -50,6 +54,7 @@ class VectorLayer {
     VectorShapes m_controlled, m_free;
     std::vector<QRectF> m_labels;
     int m_barsText = 104; // the scale bars' text column [px] (scaleBarsTextWidth)
+    double m_lineScale = 1;
 };
 
 } // namespace chaplygin::ui

@@ -32,13 +32,13 @@ QColor inkOf(VectorKind kind, bool ghost) {
     return c;
 }
 
-void arrowHead(QPainter& p, QPointF tip, QPointF direction, const QColor& c) {
+void arrowHead(QPainter& p, QPointF tip, QPointF direction, const QColor& c, double headPx) {
     double len = std::hypot(direction.x(), direction.y());
     if (len <= 0)
         return;
     QPointF u = direction / len, n(-u.y(), u.x());
     QPolygonF head;
-    head << tip << tip - kHeadPx * u + 0.45 * kHeadPx * n << tip - kHeadPx * u - 0.45 * kHeadPx * n;
+    head << tip << tip - headPx * u + 0.45 * headPx * n << tip - headPx * u - 0.45 * headPx * n;
     p.setBrush(c);
     p.setPen(Qt::NoPen);
     p.drawPolygon(head);
@@ -230,13 +230,14 @@ int scaleBarsTextWidth(const QFont& font, const VectorOverlay& overlay, const Ve
 }
 
 void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels,
-                       std::vector<QRectF>* placed) {
+                       std::vector<QRectF>* placed, double lineScale) {
     std::vector<QRectF> own;
     std::vector<QRectF>& taken = placed ? *placed : own;
+    const double s = lineScale, headPx = kHeadPx * s;
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
     QFont f = p.font();
-    f.setPointSizeF(9);
+    f.setPointSizeF(9 * s);
     f.setBold(true);
     p.setFont(f);
     for (const CoupleShape& c : shapes.couples) {
@@ -246,28 +247,29 @@ void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels,
             if (c.pivot && labels) {
                 // tau = 0 while the body turns in place; the control acts in impulses at the
                 // start and the end of the turn (docs/physics.md §3)
-                p.setPen(pen(ink, 1, true));
+                p.setPen(pen(ink, s, true));
                 p.setBrush(Qt::NoBrush);
                 p.drawEllipse(box);
                 p.setPen(ink);
-                p.drawText(QRectF(c.centre.x() - 150, c.centre.y() + c.radius + 2, 300, 18),
-                           Qt::AlignHCenter | Qt::AlignTop,
-                           QCoreApplication::translate("VectorPainter",
-                                                       "\u03c4 = 0 while turning in place"));
+                p.drawText(
+                    QRectF(c.centre.x() - 150 * s, c.centre.y() + c.radius + 2, 300 * s, 18 * s),
+                    Qt::AlignHCenter | Qt::AlignTop,
+                    QCoreApplication::translate("VectorPainter",
+                                                "\u03c4 = 0 while turning in place"));
             }
             continue;
         }
-        p.setPen(pen(ink, 2.5, c.ghost));
+        p.setPen(pen(ink, 2.5 * s, c.ghost));
         p.setBrush(Qt::NoBrush);
         p.drawArc(box, int(std::lround(c.startDeg * 16)), int(std::lround(c.spanDeg * 16)));
         double end = (c.startDeg + c.spanDeg) * std::numbers::pi / 180;
         QPointF tip = c.centre + c.radius * QPointF(std::cos(end), -std::sin(end));
         double sign = c.spanDeg > 0 ? 1 : -1;
         QPointF tangent = sign * QPointF(-std::sin(end), -std::cos(end));
-        arrowHead(p, tip + 0.5 * kHeadPx * tangent, tangent, ink);
+        arrowHead(p, tip + 0.5 * headPx * tangent, tangent, ink, headPx);
         if (labels) {
             p.setPen(ink);
-            placeLabel(p, tip + QPointF(6, -6), vectorSymbol(VectorKind::ControlCouple), taken);
+            placeLabel(p, tip + s * QPointF(6, -6), vectorSymbol(VectorKind::ControlCouple), taken);
         }
     }
     for (const ArrowShape& a : shapes.arrows) {
@@ -276,25 +278,27 @@ void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels,
         if (len < kMinArrowPx)
             continue;
         QColor ink = inkOf(a.kind, a.ghost);
-        p.setPen(pen(ink, 2.5, a.ghost));
+        p.setPen(pen(ink, 2.5 * s, a.ghost));
         // the shaft stops where the head begins, so the tip stays sharp
-        QPointF shaftEnd = len > kHeadPx ? a.head - d * (kHeadPx * 0.8 / len) : a.tail;
+        QPointF shaftEnd = len > headPx ? a.head - d * (headPx * 0.8 / len) : a.tail;
         p.drawLine(a.tail, shaftEnd);
-        arrowHead(p, a.head, d, ink);
+        arrowHead(p, a.head, d, ink, headPx);
         if (labels) {
             p.setPen(ink);
-            placeLabel(p, a.head + d * (6 / len) + QPointF(-6, 5), vectorSymbol(a.kind), taken);
+            placeLabel(p, a.head + d * (6 * s / len) + s * QPointF(-6, 5), vectorSymbol(a.kind),
+                       taken);
         }
     }
     p.restore();
 }
 
 void paintScaleBars(QPainter& p, const VectorOverlay& overlay, const VectorScales& scales,
-                    double pixelsPerMetre, QPointF bottomRight) {
+                    double pixelsPerMetre, QPointF bottomRight, double lineScale) {
+    const double s = lineScale;
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
     QFont f = p.font();
-    f.setPointSizeF(8.5);
+    f.setPointSizeF(8.5 * s);
     p.setFont(f);
     // the texts in one column as wide as the widest; the bars left of it
     const double textWidth = scaleBarsTextWidth(f, overlay, scales, pixelsPerMetre);
@@ -305,26 +309,28 @@ void paintScaleBars(QPainter& p, const VectorOverlay& overlay, const VectorScale
             continue;
         double k = scales[std::size_t(i)];
         QColor ink = vectorColor(kind);
-        p.setPen(pen(ink, 2.5, false));
+        p.setPen(pen(ink, 2.5 * s, false));
         p.setBrush(Qt::NoBrush);
         if (kind == VectorKind::ControlCouple) {
             // an arc of radius 9 px: a round couple turning it by about a quarter
             double value = roundValue((std::numbers::pi / 2) / k);
             double span = std::min(value * k * kDeg, kMaxSpanDeg);
-            QPointF c = row + QPointF(-textWidth - 46, -5);
-            p.drawArc(QRectF(c.x() - 9, c.y() - 9, 18, 18), 180 * 16, int(-span * 16));
+            QPointF c = row + QPointF(-textWidth - 46 * s, -5 * s);
+            p.drawArc(QRectF(c.x() - 9 * s, c.y() - 9 * s, 18 * s, 18 * s), 180 * 16,
+                      int(-span * 16));
         } else {
             double value = roundValue(80 / (k * pixelsPerMetre));
             double len = value * k * pixelsPerMetre;
-            QPointF right = row + QPointF(-textWidth - 6, -5), left = right - QPointF(len, 0);
+            QPointF right = row + QPointF(-textWidth - 6 * s, -5 * s),
+                    left = right - QPointF(len, 0);
             p.drawLine(left, right);
-            p.drawLine(left + QPointF(0, -3), left + QPointF(0, 3));
-            p.drawLine(right + QPointF(0, -3), right + QPointF(0, 3));
+            p.drawLine(left + s * QPointF(0, -3), left + s * QPointF(0, 3));
+            p.drawLine(right + s * QPointF(0, -3), right + s * QPointF(0, 3));
         }
         p.setPen(Qt::black);
-        p.drawText(QRectF(row.x() - textWidth, row.y() - 14, textWidth, 16),
+        p.drawText(QRectF(row.x() - textWidth, row.y() - 14 * s, textWidth, 16 * s),
                    Qt::AlignLeft | Qt::AlignVCenter, scaleBarText(kind, k, pixelsPerMetre));
-        row -= QPointF(0, 18);
+        row -= QPointF(0, 18 * s);
     }
     p.restore();
 }

@@ -63,9 +63,10 @@ VectorShapes vectorShapes(const DerivedSystem& system, const BodyState& body,
 
 /// Draws shapes; labels names the controlled body's arrows. Each label goes at its arrowhead,
 /// or, where that box is taken by an earlier label (placed, which it extends), at the nearest
-/// free place around the head: on a small body the names do not pile up.
+/// free place around the head: on a small body the names do not pile up. lineScale multiplies
+/// the pens, heads and type (presentation mode's, CanvasStyle::lineScale).
 void paintVectorShapes(QPainter& painter, const VectorShapes& shapes, bool labels,
-                       std::vector<QRectF>* placed = nullptr);
+                       std::vector<QRectF>* placed = nullptr, double lineScale = 1);
 
 /// The width [px] the scale bars' texts take in font, the widest of them (at least 104 px):
 /// the bars stand left of it, so no text is cut.
@@ -73,9 +74,10 @@ int scaleBarsTextWidth(const QFont& font, const VectorOverlay& overlay, const Ve
                        double pixelsPerMetre);
 
 /// A scale bar for each shown quantity (a round value in physical units), stacked upwards from
-/// bottomRight; pixelsPerMetre is the canvas's zoom.
+/// bottomRight; pixelsPerMetre is the canvas's zoom. lineScale multiplies pens and type; the
+/// texts' column is scaleBarsTextWidth of the scaled font.
 void paintScaleBars(QPainter& painter, const VectorOverlay& overlay, const VectorScales& scales,
-                    double pixelsPerMetre, QPointF bottomRight);
+                    double pixelsPerMetre, QPointF bottomRight, double lineScale = 1);
 
 /// A round value (1, 2 or 5 x 10^k) near target.
 double roundValue(double target);

@@ -88,6 +88,7 @@ class TestRoughEdges : public QObject, public test::WindowFixture {
     void helpDotsSetInAFaceThatPlacesThem();
     void vectorLabelsApartOnTheSmallCarriage();
     void scaleBarTextsGetTheirWidth();
+    void vectorNamesAndScaleBarsGrowWithTheLineScale();
     void helpMenuOpensTheExplanationWithItsDrawing();
     void explanationAtStartUntilDismissed();
 
@@ -452,6 +453,48 @@ void TestRoughEdges::scaleBarTextsGetTheirWidth() {
                             .arg(std::min(value * 180 / M_PI, 340.0), 0, 'f', 0);
     QVERIFY2(width >= metrics.horizontalAdvance(tau), qPrintable(tau));
     QVERIFY(width > 104);
+}
+
+void TestRoughEdges::vectorNamesAndScaleBarsGrowWithTheLineScale() {
+    // presentation mode's line scale reaches the arrows' names and the scale bars: at twice the
+    // scale their boxes are about twice as tall, and the names still do not overlap
+    Scene scene = presetScene("catenary");
+    for (int i = 0; i < kVectorKinds; ++i)
+        (scene.vectors.*vectorToggle(VectorKind(i))).shown = true;
+    m_window->loadScene(scene);
+    m_window->resize(1920, 1080);
+    QCoreApplication::processEvents();
+    m_window->playback()->seek(2);
+    SceneCanvas* canvas = m_window->canvas();
+    auto measure = [&](double lineScale) {
+        CanvasStyle style = canvas->canvasStyle();
+        style.lineScale = lineScale;
+        canvas->setCanvasStyle(style);
+        canvas->repaint();
+        const std::vector<QRectF>& labels = canvas->vectorLayer().labelBoxes();
+        double tallest = 0;
+        for (std::size_t i = 0; i < labels.size(); ++i) {
+            tallest = std::max(tallest, labels[i].height());
+            for (std::size_t j = i + 1; j < labels.size(); ++j)
+                if (labels[i].intersects(labels[j]))
+                    return std::pair(-1.0, 0.0);
+        }
+        // the scale bars stand in the drawing area's corner, never over the legend under it
+        const QRectF area = canvas->drawingArea();
+        const QRect bars = canvas->vectorLayer().scaleBarsBounds(scene.vectors, area);
+        if (!area.contains(bars)) {
+            qWarning() << "scale" << lineScale << "area" << area << "bars" << bars;
+            return std::pair(0.0, -1.0);
+        }
+        return std::pair(tallest, double(bars.height()));
+    };
+    const auto [label1, bars1] = measure(1);
+    const auto [label2, bars2] = measure(2);
+    QVERIFY2(label1 >= 0 && label2 >= 0, "labels overlap");
+    QVERIFY2(bars1 >= 0 && bars2 >= 0, "scale bars outside the drawing area");
+    QVERIFY2(label2 > 1.7 * label1, qPrintable(QStringLiteral("%1 -> %2").arg(label1).arg(label2)));
+    QVERIFY2(bars2 > 1.8 * bars1, qPrintable(QStringLiteral("%1 -> %2").arg(bars1).arg(bars2)));
+    QCOMPARE(canvas->vectorLayer().lineScale(), 2.0);
 }
 
 void TestRoughEdges::galleryNoteDotsSetInAFaceThatPlacesThem() {
