@@ -198,30 +198,38 @@ void SceneCanvas::paintLegend(QPainter& p) const {
         }
         p.setPen(Qt::black);
         double tx = x + len + 6;
-        auto text = [&](double row, const QString& s, double left = -1) {
+        // an entry's text, or its short form where the text does not fit its room (a narrow
+        // canvas in presentation type), elided only when even that does not fit
+        auto text = [&](double row, const QString& full, const QString& brief, double left = -1) {
             const double from = left < 0 ? tx : left;
             const double right =
                 left < 0 && (perturbed || compact) && row < 2 ? x2 - 8 : width() - 4;
             QRectF r(from, y + row * dy - 0.5 * dy, right - from, dy);
+            const QFontMetricsF metrics = p.fontMetrics();
+            const QString& s = metrics.horizontalAdvance(full) <= r.width() ? full : brief;
             p.drawText(r, Qt::AlignLeft | Qt::AlignVCenter,
                        p.fontMetrics().elidedText(s, Qt::ElideRight, int(r.width())));
         };
-        text(0, tr("controlled body and its trail (tracks the path)"));
-        text(1, tr("free motion from the same start (ghost)"));
+        text(0, tr("controlled body and its trail (tracks the path)"),
+             tr("controlled body (tracks the path)"));
+        text(1, tr("free motion from the same start (ghost)"), tr("free motion (ghost)"));
         if (drawsOpenLoop())
-            text(0, tr("pushed, open loop: the nominal \u03bb(t) as planned"), x2 + len + 6);
+            text(0, tr("pushed, open loop: the nominal \u03bb(t) as planned"),
+                 tr("pushed, open loop"), x2 + len + 6);
         if (drawsClosedLoop())
-            text(1, tr("pushed, closed loop: feedback steers it back"), x2 + len + 6);
+            text(1, tr("pushed, closed loop: feedback steers it back"),
+                 tr("pushed, closed loop (feedback)"), x2 + len + 6);
         const double right = x2 + len + 6;
         if (m_showVakonomic)
             text(compact ? 1 : 3, tr("genuine vakonomic body: \u03bb obeys its own equation (21)"),
-                 compact ? right : -1);
+                 tr("vakonomic body, equation (21)"), compact ? right : -1);
+        const QString briefPath = tr("path (\u25cf start, \u25a1 end)");
         text(compact ? 0 : 2,
              m_style.highContrast
-                 ? tr("path (\u25cf start, \u25a1 end)")
+                 ? briefPath
                  : tr("path (\u25cf start, \u25a1 end), coloured by its curvature \u03ba: red "
                       "right turn, grey straight, blue left turn"),
-             compact ? right : -1);
+             briefPath, compact ? right : -1);
     }
     if (m_drawMode) {
         p.setFont(drawHintFont());

@@ -97,18 +97,25 @@ void PresentationMode::updateDocks() {
         c.dock->setVisible(c.needed());
 }
 
-void PresentationMode::shrinkPlots() {
+void PresentationMode::fitDocks() {
     if (!m_active)
         return;
     if (auto* plots = qobject_cast<QDockWidget*>(m_plots->parentWidget());
         plots && plots->isVisible())
         m_window->resizeDocks({plots}, {std::max(m_window->height() / 4, 240)}, Qt::Vertical);
+    // a dock kept beside the canvas (the scene's note) takes at most a quarter of the width:
+    // on a 1024 px projector it took over a third (a bound, which holds whenever it is laid out)
+    for (const Conditional& c : m_conditional) {
+        const Qt::DockWidgetArea area = m_window->dockWidgetArea(c.dock);
+        if (area == Qt::LeftDockWidgetArea || area == Qt::RightDockWidgetArea)
+            c.dock->setMaximumWidth(m_window->width() / 4);
+    }
 }
 
 bool PresentationMode::eventFilter(QObject* watched, QEvent* event) {
     // going full screen resizes the window later: the plots are shrunk again then
     if (watched == m_window && event->type() == QEvent::Resize && m_active)
-        QMetaObject::invokeMethod(this, &PresentationMode::shrinkPlots, Qt::QueuedConnection);
+        QMetaObject::invokeMethod(this, &PresentationMode::fitDocks, Qt::QueuedConnection);
     return false;
 }
 
@@ -140,7 +147,7 @@ void PresentationMode::setActive(bool on) {
         if (m_fullScreen)
             m_window->setWindowState(m_window->windowState() | Qt::WindowFullScreen);
         updateDocks();
-        shrinkPlots();
+        fitDocks();
         m_window->installEventFilter(this);
     } else {
         m_window->removeEventFilter(this);
@@ -148,6 +155,8 @@ void PresentationMode::setActive(bool on) {
         for (QToolBar* bar : m_toolBars)
             bar->setIconSize(m_savedIconSize);
         m_window->setWindowState(m_savedWindowState);
+        for (const Conditional& c : m_conditional)
+            c.dock->setMaximumWidth(QWIDGETSIZE_MAX);
         m_window->restoreState(m_savedState);
         for (QDockWidget* dock : m_wasVisible)
             dock->show();

@@ -72,9 +72,9 @@ class PresentationMode : public QObject {
 
   private:
     void applyStyle();
-    /// The plots a quarter of the height (at least 240 px), so that the canvas keeps most of the
-    /// screen.
-    void shrinkPlots();
+    /// The plots a quarter of the height (at least 240 px) and a dock beside the canvas (the
+    /// note) at most a quarter of the width, so that the canvas keeps most of the screen.
+    void fitDocks();
     struct Conditional {
         QDockWidget* dock;
         std::function<bool()> needed;

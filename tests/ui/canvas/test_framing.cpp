@@ -72,6 +72,7 @@ class TestFraming : public QObject, private test::WindowFixture {
     void strokeAndMovedPointKeepTheView();
     void automaticBodyDisplayShowsThePath();
     void presentationGivesTheCanvasTheScreen();
+    void presentationAt1024KeepsTheNoteToAQuarter();
     void followKeepsWorkingInPresentation();
     void plotsRecoverAfterMethodsAndLayoutResets();
     void pinKeyStaysClearOfTheDrawHint();
@@ -285,6 +286,37 @@ void TestFraming::presentationGivesTheCanvasTheScreen() {
     presentation->setActive(false);
     QVERIFY(dock("accuracyDock")->isVisible() || dock("notesDock")->isVisible() ||
             dock("equationsDock")->isVisible());
+}
+
+void TestFraming::presentationAt1024KeepsTheNoteToAQuarter() {
+    // the pushed bodies' gallery scene has a note and six plots: on a 1024 x 768 projector the
+    // note takes at most a quarter of the width (it took 365 px), the canvas most of the rest;
+    // both when the note comes with the next scene and when presentation mode starts with it
+    m_window->resize(1024, 768);
+    QCoreApplication::processEvents();
+    PresentationMode* presentation = m_window->presentation();
+    presentation->setFullScreen(false);
+    QVERIFY(m_window->document()->scene().note.empty());
+    presentation->setActive(true);
+    QTest::qWait(50);
+    QVERIFY(!dock("notesDock")->isVisible());
+    SceneCanvas* canvas = m_window->canvas();
+    auto check = [&](const char* what) {
+        QVERIFY2(dock("notesDock")->isVisible(), what);
+        QVERIFY2(dock("notesDock")->width() <= 1024 / 4 + 2,
+                 qPrintable(QStringLiteral("%1: %2").arg(what).arg(dock("notesDock")->width())));
+        const double share = double(canvas->width()) * canvas->height() / (1024.0 * 768.0);
+        QVERIFY2(share >= 0.40, qPrintable(QStringLiteral("%1: %2").arg(what).arg(share)));
+    };
+    QVERIFY(m_window->loadGalleryEntry(QStringLiteral("pushed-off-path")));
+    m_window->document()->flush();
+    QTest::qWait(50);
+    check("the note came with the scene");
+    presentation->setActive(false);
+    QTest::qWait(50);
+    presentation->setActive(true);
+    QTest::qWait(50);
+    check("presenting a scene with a note");
 }
 
 void TestFraming::followKeepsWorkingInPresentation() {
