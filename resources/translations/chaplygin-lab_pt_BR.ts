@@ -1824,6 +1824,26 @@ O que os estudantes devem observar…</translation>
         <source>Wheel or +/-: zoom; drag or arrows: pan; F: fit the path; Shift+F: fit everything that moves; B: follow body; L: legend</source>
         <translation>Roda ou +/-: zoom; arrastar ou setas: deslocar; F: ajustar ao caminho; Shift+F: ajustar a tudo o que se move; B: seguir o corpo; L: legenda</translation>
     </message>
+    <message>
+        <source>controlled body (tracks the path)</source>
+        <translation>corpo controlado (segue o caminho)</translation>
+    </message>
+    <message>
+        <source>free motion (ghost)</source>
+        <translation>movimento livre (fantasma)</translation>
+    </message>
+    <message>
+        <source>pushed, open loop</source>
+        <translation>empurrado, malha aberta</translation>
+    </message>
+    <message>
+        <source>pushed, closed loop (feedback)</source>
+        <translation>empurrado, malha fechada (realimentação)</translation>
+    </message>
+    <message>
+        <source>vakonomic body, equation (21)</source>
+        <translation>corpo vakonômico, equação (21)</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::SceneDocument</name>
