@@ -8,14 +8,17 @@
 #include "plots/plots_panel.h"
 #include "scene/presets.h"
 #include "shell/main_window.h"
+#include "shell/markdown_browser.h"
 #include "shell/playback.h"
 
 #include <QApplication>
+#include <QTextBrowser>
 #include <qcustomplot.h>
 
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 namespace {
@@ -242,6 +245,36 @@ BENCHMARK(BM_StageFramePlots)
     ->ArgName("width")
     ->Arg(1280)
     ->Arg(1920)
+    ->Unit(benchmark::kMillisecond);
+
+// Opening the numerics notes (the largest help document) in a shown 900 x 700 browser, until
+// it is painted: MarkdownBrowser (arg 1) against QTextBrowser's own Markdown loading (arg 0).
+void BM_HelpOpenDocument(benchmark::State& state) {
+    std::unique_ptr<QTextBrowser> browser;
+    if (state.range(0))
+        browser = std::make_unique<MarkdownBrowser>();
+    else
+        browser = std::make_unique<QTextBrowser>();
+    browser->setSearchPaths({QStringLiteral(CHAPLYGIN_SOURCE_DIR "/docs")});
+    browser->resize(900, 700);
+    browser->show();
+    QCoreApplication::processEvents();
+    const QUrl numerics =
+        QUrl::fromLocalFile(QStringLiteral(CHAPLYGIN_SOURCE_DIR "/docs/numerics.md"));
+    const QUrl physics =
+        QUrl::fromLocalFile(QStringLiteral(CHAPLYGIN_SOURCE_DIR "/docs/physics.md"));
+    for (auto _ : state) {
+        state.PauseTiming();
+        browser->setSource(physics, QTextDocument::MarkdownResource); // another document first
+        state.ResumeTiming();
+        browser->setSource(numerics, QTextDocument::MarkdownResource);
+        browser->viewport()->repaint();
+    }
+}
+BENCHMARK(BM_HelpOpenDocument)
+    ->ArgName("markdown_browser")
+    ->Arg(0)
+    ->Arg(1)
     ->Unit(benchmark::kMillisecond);
 
 } // namespace

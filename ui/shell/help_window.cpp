@@ -1,6 +1,7 @@
 #include "shell/help_window.h"
 
 #include "document/math_text.h"
+#include "shell/markdown_browser.h"
 
 #include <QAbstractTextDocumentLayout>
 #include <QFile>
@@ -54,7 +55,7 @@ HelpWindow::HelpWindow(QWidget* parent) : QWidget(parent, Qt::Window) {
         item->setData(Qt::UserRole, QString::fromLatin1(d.file));
     }
     m_list->setMaximumWidth(m_list->sizeHintForColumn(0) + 24);
-    m_browser = new QTextBrowser;
+    m_browser = new MarkdownBrowser;
     m_browser->setAccessibleName(tr("Help text"));
     m_browser->setOpenExternalLinks(true);
     m_browser->setSearchPaths({QStringLiteral(":/help")});

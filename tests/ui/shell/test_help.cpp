@@ -3,13 +3,16 @@
 #include "canvas/scene_canvas.h"
 #include "panels/parameters_panel.h"
 #include "shell/help_window.h"
+#include "shell/markdown_browser.h"
 #include "version.h"
 #include "window_fixture.h"
 
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
+#include <QPointer>
 #include <QScrollBar>
+#include <QSignalSpy>
 #include <QTextBlock>
 #include <QTextBrowser>
 #include <QtTest>
@@ -27,6 +30,7 @@ class TestHelp : public QObject, private test::WindowFixture {
 
     void aboutNamesVersionLicenceCreditsPaper();
     void helpRendersDocsFromResources();
+    void documentsAreParsedApartAndReplaced();
     void f1OpensSectionOfFocus();
     void sectionHeadingAtTheTop();
     void picturesFitTheWidth();
@@ -65,6 +69,33 @@ void TestHelp::helpRendersDocsFromResources() {
     QVERIFY(help->showTopic(QStringLiteral("user-guide.md")));
     QVERIFY(!QImage(QStringLiteral(":/help/images/main-window-sinusoid.png")).isNull());
     QVERIFY(!help->showTopic(QStringLiteral("no-such.md")));
+}
+
+void TestHelp::documentsAreParsedApartAndReplaced() {
+    // each document is parsed into a document of its own before it is shown (QTextBrowser's own
+    // loading laid out the shown document at every insertion); the one it replaces is deleted,
+    // and a relative link ("physics.md", as a click on it gives) opens the document it names
+    HelpWindow* help = m_window->showHelp(QStringLiteral("numerics.md"));
+    auto* browser = qobject_cast<MarkdownBrowser*>(help->browser());
+    QVERIFY(browser);
+    QPointer<QTextDocument> numerics = browser->document();
+    QCOMPARE(numerics->parent(), browser);
+    QVERIFY(browser->toPlainText().contains(QStringLiteral("DOP853")));
+    QSignalSpy changed(browser, &QTextBrowser::sourceChanged);
+    browser->setSource(QUrl(QStringLiteral("physics.md")));
+    QCOMPARE(changed.count(), 1);
+    QCOMPARE(help->currentDocument(), QStringLiteral("physics.md"));
+    QVERIFY(numerics.isNull());
+    QVERIFY(browser->toPlainText().contains(QStringLiteral("Antunes")));
+    QTextBlock first = browser->document()->begin();
+    while (first.isValid() && first.text().isEmpty())
+        first = first.next();
+    QCOMPARE(first.blockFormat().headingLevel(), 1);
+    // the same document again is not parsed again
+    QPointer<QTextDocument> physics = browser->document();
+    QVERIFY(help->showTopic(QStringLiteral("physics.md"), QStringLiteral("control law")));
+    QVERIFY(!physics.isNull());
+    QCOMPARE(browser->document(), physics.data());
 }
 
 void TestHelp::f1OpensSectionOfFocus() {
