@@ -75,6 +75,7 @@ class TestFraming : public QObject, private test::WindowFixture {
     void presentationAt1024KeepsTheNoteToAQuarter();
     void followKeepsWorkingInPresentation();
     void plotsRecoverAfterMethodsAndLayoutResets();
+    void plotsRecoverAtTheNextStart();
     void pinKeyStaysClearOfTheDrawHint();
 
   private:
@@ -357,6 +358,49 @@ void TestFraming::plotsRecoverAfterMethodsAndLayoutResets() {
     QCOMPARE(m_window->dockWidgetArea(plots), Qt::BottomDockWidgetArea);
     QTRY_VERIFY2(std::abs(plots->height() - balancedPlotsHeight(m_window->height())) <= 8,
                  qPrintable(QString::number(plots->height())));
+}
+
+void TestFraming::plotsRecoverAtTheNextStart() {
+    // a window closed with the tall Methods tab in front of the plots: at the next start the
+    // layout is restored as it was, and bringing the plots to the front gives them about their
+    // balanced height again, not the Methods tab's (334 px here)
+    m_window.reset();
+    // a first start maximises the window on the small offscreen screen: 1280 x 800 instead
+    auto first = std::make_unique<MainWindow>(true);
+    first->setWindowState(Qt::WindowNoState);
+    first->resize(1280, 800);
+    first->show();
+    QVERIFY(QTest::qWaitForWindowExposed(first.get()));
+    first->document()->flush();
+    QTest::qWait(50);
+    auto* plots = first->findChild<QDockWidget*>(QStringLiteral("plotsDock"));
+    auto* methods = first->findChild<QDockWidget*>(QStringLiteral("methodsDock"));
+    QVERIFY(plots && methods);
+    const int before = plots->height();
+    first->showMethodsDock();
+    QTRY_VERIFY(methods->height() > before + 50);
+    first->close(); // saves the layout
+    first.reset();
+
+    auto next = std::make_unique<MainWindow>(true);
+    QCOMPARE(next->size(), QSize(1280, 800));
+    next->show();
+    QVERIFY(QTest::qWaitForWindowExposed(next.get()));
+    next->document()->flush();
+    QTest::qWait(50);
+    plots = next->findChild<QDockWidget*>(QStringLiteral("plotsDock"));
+    methods = next->findChild<QDockWidget*>(QStringLiteral("methodsDock"));
+    const int balanced = balancedPlotsHeight(next->height());
+    // restored as it was left: the tall Methods tab in front
+    QVERIFY2(methods->height() > balanced + 50,
+             qPrintable(QStringLiteral("%1 px, balanced %2").arg(methods->height()).arg(balanced)));
+    plots->raise();
+    // within a tab bar's height of the balanced height (the restored bottom area keeps its tabs)
+    QTRY_VERIFY2(
+        plots->height() <= balanced + 30,
+        qPrintable(QStringLiteral("%1 px, balanced %2").arg(plots->height()).arg(balanced)));
+    next.reset();
+    QSettings().clear();
 }
 
 void TestFraming::pinKeyStaysClearOfTheDrawHint() {
