@@ -15,6 +15,7 @@
 #include "shell/playback.h"
 #include "shell/timeline_bar.h"
 
+#include <QElapsedTimer>
 #include <QLabel>
 #include <QPaintEvent>
 #include <QPainter>
@@ -208,9 +209,17 @@ void TestFrame::cleanup() {
 void TestFrame::timeReadoutFitsWithoutLayingOutTheWindow() {
     QLabel* label = m_window->timeline()->timeLabel();
     Playback* playback = m_window->playback();
-    QTest::qWait(200); // the window's first layout settles
     EventCounter layouts(QEvent::LayoutRequest);
     m_window->installEventFilter(&layouts);
+    // the window's first layout settles: 200 ms without a layout request (a slow build, such as
+    // the sanitizers', takes longer than any one fixed wait)
+    QElapsedTimer settling;
+    settling.start();
+    do {
+        layouts.count = 0;
+        QTest::qWait(200);
+    } while (layouts.count > 0 && settling.elapsed() < 10000);
+    QCOMPARE(layouts.count, 0);
     // every time up to the end fits the label, and a new time lays out no part of the window
     for (double t : {0.0, 1.0, 9.99, playback->tEnd()}) {
         playback->seek(t);

@@ -40,7 +40,13 @@ using namespace chaplygin::ui;
 namespace {
 
 constexpr unsigned kDefaultSeed = 20261130;
+// the sanitizers' build runs each event several times slower: a shorter stream there, the whole
+// one in the release suite
+#if defined(__SANITIZE_ADDRESS__)
+constexpr int kDefaultEvents = 1500;
+#else
 constexpr int kDefaultEvents = 5000;
+#endif
 
 unsigned envNumber(const char* name, unsigned fallback) {
     bool ok = false;
