@@ -10,6 +10,7 @@
 #include <QPixmap>
 
 #include <QImage>
+#include <QPainterPath>
 #include <QPen>
 #include <QPointF>
 #include <QWidget>
@@ -247,6 +248,12 @@ class SceneCanvas : public QWidget {
     VectorLayer m_vectors;
     BodySprites m_bodies;
     mutable CanvasCurves m_curves;
+    /// The body's shape and the ring its outline's pen covers, in metres (body coordinates): the
+    /// clips of paintPathOverBodies, made once per solution, zoom and line scale.
+    const std::pair<QPainterPath, QPainterPath>& bodyClipShapes() const;
+    mutable const Solution* m_bodyClipOf = nullptr;
+    mutable double m_bodyClipScale = 0, m_bodyClipPen = 0;
+    mutable std::pair<QPainterPath, QPainterPath> m_bodyClips;
     CanvasStyle m_style;
     bool m_legendVisible = true;
     int topBandPx() const;

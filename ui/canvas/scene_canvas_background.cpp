@@ -109,12 +109,15 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
         }
         run.clear();
     };
+    const double reach = 3 * m_style.lineScale + 2; // half the band's width, and more
+    // each point mapped once: `from` is point i - 1 in pixels, `to` point i
+    QPointF to = flat.points.empty() ? QPointF() : world.map(flat.points[0]);
     for (std::size_t i = 1; i < flat.points.size(); ++i) {
+        const QPointF from = to;
+        to = world.map(flat.points[i]);
         if (!within.isNull()) {
             // only the segments that reach `within`: a run ends at a segment left out
-            const QRectF segment =
-                QRectF(world.map(flat.points[i - 1]), world.map(flat.points[i])).normalized();
-            const double reach = 3 * m_style.lineScale + 2; // half the band's width, and more
+            const QRectF segment = QRectF(from, to).normalized();
             if (!segment.adjusted(-reach, -reach, reach, reach).intersects(within)) {
                 flush();
                 continue;
@@ -131,9 +134,9 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
                 p.drawEllipse(world.map(QPointF{piece.x, piece.y}), 5, 5);
             }
             runColour = c;
-            run << world.map(flat.points[i - 1]);
+            run << from;
         }
-        run << world.map(flat.points[i]);
+        run << to;
     }
     flush();
     for (const PathPiece& piece : solution->path()->pieces()) {

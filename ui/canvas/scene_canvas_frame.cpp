@@ -286,27 +286,43 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
     }
 }
 
+const std::pair<QPainterPath, QPainterPath>& SceneCanvas::bodyClipShapes() const {
+    const Solution* solution = m_document->solution().get();
+    const double penPx = 3 * m_style.lineScale + 2;
+    if (solution != m_bodyClipOf || m_scale != m_bodyClipScale || penPx != m_bodyClipPen) {
+        m_bodyClipOf = solution;
+        m_bodyClipScale = m_scale;
+        m_bodyClipPen = penPx;
+        // the pose and the view map these with a rotation, a uniform scale and a flip: the
+        // ring's width in metres is the pen's in pixels over the scale
+        QPainterPath shape = bodyShape(solution->scene().system, solution->system());
+        QPainterPathStroker pen;
+        pen.setWidth(penPx / m_scale);
+        QPainterPath ring = pen.createStroke(shape);
+        m_bodyClips = {std::move(shape), std::move(ring)};
+    }
+    return m_bodyClips;
+}
+
 void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) const {
     // an outline or a marker has no fill: the path shows through it
     if (bodyLook().display != BodyDisplay::ToScale)
         return;
-    const Solution& solution = *m_document->solution();
     const QTransform world = worldTransform();
-    const QPainterPath shape = bodyShape(solution.scene().system, solution.system());
+    const auto& [shape, ring] = bodyClipShapes();
     // each body's area and the ring its outline's pen covers, in pixels: one clip at a time (a
     // union of translucent shapes would cost more than drawing the few segments twice)
-    QPainterPathStroker pen;
-    pen.setWidth(3 * m_style.lineScale + 2);
     std::vector<QPainterPath> clips;
     auto add = [&](double x, double y, double phi) {
         QTransform pose;
         pose.translate(x, y);
         pose.rotate(phi * 180.0 / M_PI);
-        const QPainterPath mapped = (pose * world).map(shape);
+        const QTransform map = pose * world;
+        QPainterPath mapped = map.map(shape);
         if (!mapped.boundingRect().intersects(QRectF(rect())))
             return;
-        clips.push_back(mapped);
-        clips.push_back(pen.createStroke(mapped));
+        clips.push_back(std::move(mapped));
+        clips.push_back(map.map(ring));
     };
     forEachShownPose(now, m_showVakonomic, drawsOpenLoop(), drawsClosedLoop(), add);
     if (clips.empty())
