@@ -302,6 +302,11 @@ void MainWindow::showMethodsDock() {
 
 bool MainWindow::loadGalleryEntry(const QString& name) {
     const GalleryEntry& entry = galleryEntry(name.toStdString());
+    // Page Down goes on from here, whether the scene came from the menu or from Page Down
+    const auto& entries = galleryEntries();
+    for (std::size_t i = 0; i < entries.size(); ++i)
+        if (&entries[i] == &entry)
+            m_galleryIndex = int(i);
     const QString title = QString::fromStdString(entry.title);
     const QString explanation = QString::fromStdString(entry.scene.note);
     if (!m_presentation->isActive()) // presenting, the explanation is in the Notes dock

@@ -134,6 +134,18 @@ void TestPresentation::presentationKeyboardControl() {
     for (const GalleryEntry& e : galleryEntries())
         inGallery = inGallery || (!e.rejected && e.scene == first);
     QVERIFY(inGallery);
+    // a scene chosen from the Gallery menu: Page Down goes on to the next accepted one after it
+    const auto& entries = galleryEntries();
+    std::size_t chosen = entries.size() / 2;
+    while (entries[chosen].rejected)
+        ++chosen;
+    QVERIFY(m_window->loadGalleryEntry(QString::fromStdString(entries[chosen].name)));
+    std::size_t next = (chosen + 1) % entries.size();
+    while (entries[next].rejected)
+        next = (next + 1) % entries.size();
+    QTest::keyClick(m_window.get(), Qt::Key_PageDown);
+    m_window->document()->flush();
+    QVERIFY2(m_window->document()->scene() == entries[next].scene, entries[next].name.c_str());
     // play, step and rewind from the keyboard
     QTest::keyClick(m_window.get(), Qt::Key_Space);
     QVERIFY(m_window->playback()->isPlaying());
