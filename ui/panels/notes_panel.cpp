@@ -17,13 +17,13 @@ NotesPanel::NotesPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(4, 4, 4, 4);
     auto* bar = new QHBoxLayout;
-    auto* hint = new QLabel(tr("What to say about this scene (Markdown, saved with it)"));
-    hint->setWordWrap(true);
+    m_hint = new QLabel(tr("What to say about this scene (Markdown, saved with it)"));
+    m_hint->setWordWrap(true);
     m_edit = new QToolButton;
     m_edit->setText(tr("Edit"));
     m_edit->setCheckable(true);
     m_edit->setObjectName(QStringLiteral("editNote"));
-    bar->addWidget(hint, 1);
+    bar->addWidget(m_hint, 1);
     bar->addWidget(m_edit);
     layout->addLayout(bar);
     m_editor = new QPlainTextEdit;
@@ -44,6 +44,14 @@ NotesPanel::NotesPanel(QWidget* parent) : QWidget(parent) {
             emit noteEdited(m_editor->toPlainText());
     });
     render();
+}
+
+void NotesPanel::setPresenting(bool on) {
+    m_hint->setVisible(!on);
+}
+
+bool NotesPanel::hintShown() const {
+    return !m_hint->isHidden();
 }
 
 void NotesPanel::setNote(const QString& markdown) {

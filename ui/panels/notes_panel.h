@@ -1,6 +1,7 @@
 #pragma once
 #include <QWidget>
 
+class QLabel;
 class QPlainTextEdit;
 class QTextBrowser;
 class QToolButton;
@@ -22,6 +23,10 @@ class NotesPanel : public QWidget {
     double fontScale() const { return m_scale; }
     void setEditing(bool on);
     bool editing() const;
+    /// Presenting: the note alone, without the editing hint above it (a lecture hall reads the
+    /// note; the Edit button stays).
+    void setPresenting(bool on);
+    bool hintShown() const;
 
     QTextBrowser* view() const { return m_view; }
     QPlainTextEdit* editor() const { return m_editor; }
@@ -35,6 +40,7 @@ class NotesPanel : public QWidget {
     QTextBrowser* m_view;
     QPlainTextEdit* m_editor;
     QToolButton* m_edit;
+    QLabel* m_hint;
     double m_scale = 1;
     double m_basePoints = 0;
     bool m_setting = false;

@@ -118,6 +118,8 @@ void installInstruments(MainWindow* window) {
     presentation->addDockWhile(notesDock, [doc] { return !doc->scene().note.empty(); });
     QObject::connect(doc, &SceneDocument::solutionChanged, presentation,
                      &PresentationMode::updateDocks);
+    QObject::connect(presentation, &PresentationMode::activeChanged, notes,
+                     &NotesPanel::setPresenting);
     QObject::connect(notes, &NotesPanel::noteEdited, window, [window, doc](const QString& text) {
         Scene next = doc->scene();
         next.note = text.toStdString();

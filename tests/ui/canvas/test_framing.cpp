@@ -6,6 +6,7 @@
 #include "canvas/scene_canvas.h"
 #include "document/pin_set.h"
 #include "lab/gallery.h"
+#include "panels/notes_panel.h"
 #include "panels/path_panel.h"
 #include "scene/presets.h"
 #include "shell/body_display_menu.h"
@@ -302,12 +303,16 @@ void TestFraming::presentationAt1024KeepsTheNoteToAQuarter() {
     QTest::qWait(50);
     QVERIFY(!dock("notesDock")->isVisible());
     SceneCanvas* canvas = m_window->canvas();
+    auto* notes = m_window->findChild<NotesPanel*>();
+    QVERIFY(notes);
     auto check = [&](const char* what) {
         QVERIFY2(dock("notesDock")->isVisible(), what);
         QVERIFY2(dock("notesDock")->width() <= 1024 / 4 + 2,
                  qPrintable(QStringLiteral("%1: %2").arg(what).arg(dock("notesDock")->width())));
         const double share = double(canvas->width()) * canvas->height() / (1024.0 * 768.0);
         QVERIFY2(share >= 0.40, qPrintable(QStringLiteral("%1: %2").arg(what).arg(share)));
+        // the note alone: its editing hint is not for the lecture hall
+        QVERIFY2(!notes->hintShown(), what);
     };
     QVERIFY(m_window->loadGalleryEntry(QStringLiteral("pushed-off-path")));
     m_window->document()->flush();
@@ -315,6 +320,7 @@ void TestFraming::presentationAt1024KeepsTheNoteToAQuarter() {
     check("the note came with the scene");
     presentation->setActive(false);
     QTest::qWait(50);
+    QVERIFY(notes->hintShown());
     presentation->setActive(true);
     QTest::qWait(50);
     check("presenting a scene with a note");
