@@ -142,10 +142,8 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
         std::tie(o.width, o.height) = readWindowSize(*size);
     o.viewReport = given.value("--view-report").value_or("");
     if (auto body = given.value("--body")) {
+        checkBodyOption(*body);
         o.body = bodyDisplayNamed(*body);
-        if (!o.body)
-            throw InputError("--body",
-                             "expected auto, scale, outline or marker, got '" + *body + "'");
     }
     o.scene = sceneOf(given);
     if (auto sweep = given.value("--sweep")) {

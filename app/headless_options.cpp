@@ -60,6 +60,11 @@ std::vector<std::pair<double, double>> parsePoints(const std::string& text) {
 
 } // namespace
 
+void checkBodyOption(const std::string& value) {
+    if (!ui::bodyDisplayNamed(value))
+        throw InputError("--body", "expected auto, scale, outline or marker, got '" + value + "'");
+}
+
 double parseNumber(const std::string& text, const std::string& where) {
     const char* begin = text.c_str();
     char* end = nullptr;
@@ -261,9 +266,7 @@ void readOutputs(const OptionValues& given, HeadlessOptions& o) {
     o.animationPath = given.value("--animation").value_or("");
     o.withPlots = given.has("--with-plots");
     if (auto body = given.value("--body")) {
-        if (!ui::bodyDisplayNamed(*body))
-            throw InputError("--body",
-                             "expected auto, scale, outline or marker, got '" + *body + "'");
+        checkBodyOption(*body);
         o.body = *body;
     }
     if (auto fps = given.value("--fps"))

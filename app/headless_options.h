@@ -34,6 +34,10 @@ struct HeadlessOptions {
 /// Throws InputError naming the option and what is wrong with it.
 HeadlessOptions parseHeadlessOptions(const std::vector<std::string>& args);
 
+/// Checks the value of --body (auto, scale, outline or marker, the screenshot's and the
+/// animation's); throws InputError("--body") naming the value otherwise.
+void checkBodyOption(const std::string& value);
+
 /// Parses a whole string as a finite double; throws InputError(where) otherwise.
 double parseNumber(const std::string& text, const std::string& where);
 
