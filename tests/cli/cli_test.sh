@@ -322,16 +322,19 @@ expression_blowup)
     echo "peak RSS ${kb} KB, CPU ${user} s user + ${sys} s system"
     # what the expression adds over a trivial path, and in a build without AddressSanitizer (whose
     # shadow memory alone takes some 75 MB) the whole process, stay within the bounds
-    /usr/bin/time -f "%M" -o "$work/time0" "$exe" --headless --path "y=x" --x-range 0,1 >/dev/null 2>&1
-    base=$(tail -n 1 "$work/time0")
-    echo "peak RSS of a trivial path ${base} KB"
+    /usr/bin/time -f "%M %U %S" -o "$work/time0" "$exe" --headless --path "y=x" --x-range 0,1 >/dev/null 2>&1
+    read -r base user0 sys0 < <(tail -n 1 "$work/time0")
+    echo "peak RSS of a trivial path ${base} KB, CPU ${user0} s user + ${sys0} s system"
     [ "$((kb - base))" -le 16384 ] || fail "the expression adds $((kb - base)) KB > 16 MB"
     if ldd "$exe" | grep -q libasan; then
-      echo "sanitized build: the 100 MB bound on the whole process is checked in the release build"
+      # the sanitizers' start-up alone can take 0.5 s of CPU on a loaded machine: there the
+      # bound holds for what the expression adds, in the release build for the whole process
+      echo "sanitized build: the 100 MB and 0.5 s bounds on the whole process are checked in the release build"
+      below "$(awk -v u="$user" -v s="$sys" -v u0="$user0" -v s0="$sys0" 'BEGIN { print u + s - u0 - s0 }')" 0.5 "CPU seconds over a trivial path"
     else
       [ "$kb" -le 102400 ] || fail "peak RSS ${kb} KB > 100 MB"
+      below "$(awk -v u="$user" -v s="$sys" 'BEGIN { print u + s }')" 0.5 "CPU seconds"
     fi
-    below "$(awk -v u="$user" -v s="$sys" 'BEGIN { print u + s }')" 0.5 "CPU seconds"
   fi
   ;;
 help)
