@@ -51,21 +51,37 @@ void SceneCanvas::paintGrid(QPainter& p, const QTransform& world, const QRectF& 
     double step = gridStep();
     const QTransform toWorld = world.inverted();
     QPointF a = toWorld.map(area.bottomLeft()), b = toWorld.map(area.topRight());
-    p.setPen(m_style.pen(QColor(232, 232, 232), 1));
+    // each line a run of whole device pixels, filled: a stroked line at a fractional position
+    // is two half-toned pixels wide, laid out by the cosmetic stroker pixel by pixel
+    const double s = std::abs(p.deviceTransform().m11());
+    const double thick = std::max(1.0, std::round(m_style.lineScale)); // [device px]
+    p.save();
+    p.setRenderHint(QPainter::Antialiasing, false);
+    p.setPen(Qt::NoPen);
+    auto vertical = [&](double x, const QColor& c) { // x in world units
+        const double px = std::round(s * world.map(QPointF{x, 0}).x() - 0.5 * thick) / s;
+        p.fillRect(QRectF(px, area.top(), thick / s, area.height()), c);
+    };
+    auto horizontal = [&](double y, const QColor& c) {
+        const double py = std::round(s * world.map(QPointF{0, y}).y() - 0.5 * thick) / s;
+        p.fillRect(QRectF(area.left(), py, area.width(), thick / s), c);
+    };
     // counted, not accumulated: far from the origin x + step may round back to x
     const double kx0 = std::floor(a.x() / step), kx1 = std::ceil(b.x() / step);
     const double ky0 = std::floor(a.y() / step), ky1 = std::ceil(b.y() / step);
     const bool countable =
         std::max({std::abs(kx0), std::abs(kx1), std::abs(ky0), std::abs(ky1)}) < 1e15;
     if (countable && kx1 - kx0 < 2000 && ky1 - ky0 < 2000) {
+        const QColor line(232, 232, 232);
         for (double k = kx0; k <= kx1; ++k)
-            p.drawLine(world.map(QPointF{k * step, a.y()}), world.map(QPointF{k * step, b.y()}));
+            vertical(k * step, line);
         for (double k = ky0; k <= ky1; ++k)
-            p.drawLine(world.map(QPointF{a.x(), k * step}), world.map(QPointF{b.x(), k * step}));
+            horizontal(k * step, line);
     }
-    p.setPen(m_style.pen(QColor(200, 200, 200), 1));
-    p.drawLine(world.map(QPointF{a.x(), 0}), world.map(QPointF{b.x(), 0}));
-    p.drawLine(world.map(QPointF{0, a.y()}), world.map(QPointF{0, b.y()}));
+    const QColor axis(200, 200, 200);
+    horizontal(0, axis);
+    vertical(0, axis);
+    p.restore();
 }
 
 void SceneCanvas::paintScaleBar(QPainter& p) const {
@@ -126,13 +142,6 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
         const QRgb c = colourOf(i);
         if (c != runColour || run.isEmpty()) {
             flush();
-            for (const PathPiece& piece : solution->path()->pieces()) {
-                if (piece.kind != PathPiece::Kind::Pivot)
-                    continue;
-                p.setPen(m_style.pen(QColor(120, 60, 160), 1.5));
-                p.setBrush(Qt::NoBrush);
-                p.drawEllipse(world.map(QPointF{piece.x, piece.y}), 5, 5);
-            }
             runColour = c;
             run << from;
         }

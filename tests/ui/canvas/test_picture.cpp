@@ -26,6 +26,7 @@ class TestPicture : public QObject, private test::WindowFixture {
     void cleanup() { closeWindow(); }
 
     void zoomedCircleOnItsExactPath();
+    void gridLinesAreWholePixelsAtTheirMetres();
 };
 
 void TestPicture::zoomedCircleOnItsExactPath() {
@@ -74,6 +75,77 @@ void TestPicture::zoomedCircleOnItsExactPath() {
                                 .arg(q.y())));
     }
     QVERIFY2(checked > 100, qPrintable(QString::number(checked)));
+}
+
+void TestPicture::gridLinesAreWholePixelsAtTheirMetres() {
+    // every 1, 2 or 5 x 10^k m at least 40 px apart: each line the device pixels whose middle is
+    // within half the line's width of the metre mark, in the grid's grey (the axes darker), and
+    // white on both sides; at presentation's line scale 2 two pixels wide
+    choosePreset("circle");
+    SceneCanvas* canvas = m_window->canvas();
+    for (double lineScale : {1.0, 2.0}) {
+        CanvasStyle style = canvas->canvasStyle();
+        style.body = BodyDisplay::Marker;
+        style.lineScale = lineScale;
+        canvas->setCanvasStyle(style);
+        canvas->fitEverything();
+        canvas->zoomBy(0.37); // grid lines at a fractional pixel, the path small in the middle
+        QCoreApplication::processEvents();
+        const QImage image = canvas->grab().toImage().convertToFormat(QImage::Format_RGB32);
+        QCOMPARE(image.devicePixelRatio(), 1.0);
+        const QTransform map = canvas->worldToPixel();
+        const double scale = map.m11();
+        double step = std::pow(10.0, std::floor(std::log10(40 / scale)));
+        for (double f : {1.0, 2.0, 5.0, 10.0})
+            if (f * std::pow(10.0, std::floor(std::log10(40 / scale))) * scale >= 40) {
+                step = f * std::pow(10.0, std::floor(std::log10(40 / scale)));
+                break;
+            }
+        const int thick = int(lineScale);
+        const QRect area = canvas->drawingArea().toAlignedRect().adjusted(4, 4, -4, -4);
+        int lines = 0, fractional = 0;
+        for (int vertical = 0; vertical < 2; ++vertical)
+            for (int k = -200; k <= 200; ++k) {
+                const QPointF mark =
+                    map.map(vertical ? QPointF(k * step, 0) : QPointF(0, k * step));
+                const double at = vertical ? mark.x() : mark.y();
+                const int first = int(std::round(at - 0.5 * thick));
+                if (first < (vertical ? area.left() : area.top()) + 2 ||
+                    first + thick > (vertical ? area.right() : area.bottom()) - 2)
+                    continue;
+                ++lines;
+                fractional += std::abs(at - std::round(at)) > 0.1 ? 1 : 0;
+                const QRgb grey = k == 0 ? qRgb(200, 200, 200) : qRgb(232, 232, 232);
+                // along the line, where nothing else is drawn: most samples
+                int samples = 0, right = 0;
+                const int from = vertical ? area.top() : area.left();
+                const int to = vertical ? area.bottom() : area.right();
+                for (int along = from; along <= to; along += 7) {
+                    auto pixel = [&](int across) {
+                        return vertical ? image.pixel(across, along) : image.pixel(along, across);
+                    };
+                    ++samples;
+                    bool ok = pixel(first - 1) == qRgb(255, 255, 255) &&
+                              pixel(first + thick) == qRgb(255, 255, 255);
+                    for (int i = 0; i < thick; ++i)
+                        ok = ok && pixel(first + i) == grey;
+                    right += ok ? 1 : 0;
+                }
+                QVERIFY2(right >= samples * 3 / 4,
+                         qPrintable(QStringLiteral("line scale %1, %2 line %3 m at %4 px: %5 of "
+                                                   "%6 samples are the grid's pixels")
+                                        .arg(lineScale)
+                                        .arg(vertical ? "vertical" : "horizontal")
+                                        .arg(k * step)
+                                        .arg(at)
+                                        .arg(right)
+                                        .arg(samples)));
+            }
+        QVERIFY2(
+            lines >= 8 && fractional >= 4,
+            qPrintable(
+                QStringLiteral("%1 lines, %2 at a fractional pixel").arg(lines).arg(fractional)));
+    }
 }
 
 QTEST_MAIN(TestPicture)
