@@ -158,6 +158,8 @@ class SceneCanvas : public QWidget {
     /// The trails up to now, as far as they reach area [px].
     void paintTrails(QPainter& p, const MotionSample& now, const QRegion& area) const;
     void paintLegend(QPainter& p) const;
+    /// The legend's strip, from a layer made once per size, style and shown bodies.
+    void paintLegendLayer(QPainter& p);
     void paintTimeReadout(QPainter& p, double tEnd) const;
     void paintBackground();
     /// The static layer onto the widget within region: the cached background, or while following

@@ -305,8 +305,36 @@ void SceneCanvas::paintBackground() {
     paintScaleBar(p);
     if (m_document->solution()) {
         paintPath(p, worldTransform());
-        paintLegend(p);
+        // the draw-mode hint is painted with the legend; a layer at a fractional device pixel
+        // ratio would land between device pixels
+        if (m_drawMode || dpr != std::round(dpr))
+            paintLegend(p);
+        else
+            paintLegendLayer(p);
     }
+}
+
+void SceneCanvas::paintLegendLayer(QPainter& p) {
+    if (!m_legendVisible)
+        return;
+    // the legend depends on neither zoom nor centre: one layer serves every view
+    BackgroundKey key = backgroundKey();
+    key.scale = 0;
+    key.centre = {};
+    const qreal dpr = key.dpr;
+    // two rows above the legend's band hold the antialiased edge of its top line
+    const int top = height() - legendBandPx() - 2;
+    if (!(key == m_legendKey) || m_legendLayer.isNull()) {
+        m_legendKey = key;
+        m_legendLayer = QPixmap(QSize(width(), height() - top) * dpr);
+        m_legendLayer.setDevicePixelRatio(dpr);
+        m_legendLayer.fill(Qt::transparent);
+        QPainter l(&m_legendLayer);
+        l.setRenderHint(QPainter::Antialiasing, true);
+        l.translate(0, -top);
+        paintLegend(l);
+    }
+    p.drawPixmap(0, top, m_legendLayer);
 }
 
 bool SceneCanvas::followsWithWorldLayer() const {
@@ -376,21 +404,7 @@ void SceneCanvas::paintStaticLayer(QPainter& p, const QRegion& region, const Mot
     }
     p.setRenderHint(QPainter::Antialiasing, true);
     paintScaleBar(p);
-    if (!m_legendVisible)
-        return;
-    // two rows above the legend's band hold the antialiased edge of its top line
-    const int top = height() - legendBandPx() - 2;
-    if (!(key == m_legendKey) || m_legendLayer.isNull()) {
-        m_legendKey = key;
-        m_legendLayer = QPixmap(QSize(width(), height() - top) * dpr);
-        m_legendLayer.setDevicePixelRatio(dpr);
-        m_legendLayer.fill(Qt::transparent);
-        QPainter l(&m_legendLayer);
-        l.setRenderHint(QPainter::Antialiasing, true);
-        l.translate(0, -top);
-        paintLegend(l);
-    }
-    p.drawPixmap(0, top, m_legendLayer);
+    paintLegendLayer(p);
 }
 
 } // namespace chaplygin::ui
