@@ -36,10 +36,14 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
 }
 
 QTransform SceneCanvas::worldTransform() const {
+    return worldTransformAt(m_centre);
+}
+
+QTransform SceneCanvas::worldTransformAt(QPointF centre) const {
     QTransform t;
     t.translate(width() / 2.0, height() / 2.0);
     t.scale(m_scale, -m_scale);
-    t.translate(-m_centre.x(), -m_centre.y());
+    t.translate(-centre.x(), -centre.y());
     return t;
 }
 

@@ -137,8 +137,13 @@ class SceneCanvas : public QWidget {
     BodyLook bodyLook() const;
     /// The path's band, the controlled trail and the knife point P again over the bodies drawn
     /// to scale, inside their shapes: no body hides the path (docs/user-guide.md, Animation).
-    void paintPathOverBodies(QPainter& p, const MotionSample& now) const;
+    void paintPathOverBodies(QPainter& p, const MotionSample& now);
+    /// The path's band and marks as the static layer has them, on a transparent layer made once
+    /// per view; origin: the window's pixel p is the layer's p + origin.
+    const QImage& pathLayer(QPoint& origin);
     QTransform worldTransform() const;
+    /// The view's map with its centre at `centre` [m].
+    QTransform worldTransformAt(QPointF centre) const;
     /// Grid lines every 1, 2 or 5 x 10^k m, at least 40 px apart.
     double gridStep() const;
     void paintGrid(QPainter& p, const QTransform& world, const QRectF& area) const;
@@ -243,6 +248,9 @@ class SceneCanvas : public QWidget {
     int m_worldMargin = 0;
     BackgroundKey m_legendKey;
     QPixmap m_legendLayer;
+    BackgroundKey m_pathKey;
+    bool m_pathFollowing = false;
+    QImage m_pathLayer;
     QPixmap m_background;   // grid, path and legend
     QImage m_trailLayer;    // the static layer with the trails up to m_trailsTime drawn on it
     qint64 m_trailBase = 0; // the cache key of the static layer it was made from

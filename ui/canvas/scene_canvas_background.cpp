@@ -346,6 +346,7 @@ void SceneCanvas::dropLayers() {
     m_background = {};
     m_worldLayer = {};
     m_legendLayer = {};
+    m_pathLayer = {};
     m_trailLayer = {};
 }
 

@@ -1,5 +1,6 @@
 #include "canvas/scene_canvas.h"
 
+#include "canvas/masked_layer.h"
 #include "canvas/pin_painter.h"
 #include "canvas/trail_stroke.h"
 #include "document/pin_set.h"
@@ -304,15 +305,44 @@ const std::pair<QPainterPath, QPainterPath>& SceneCanvas::bodyClipShapes() const
     return m_bodyClips;
 }
 
-void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) const {
+const QImage& SceneCanvas::pathLayer(QPoint& origin) {
+    // the layer lies under the static one: the window's pixel p is the layer's p + origin
+    const bool following = followsWithWorldLayer();
+    BackgroundKey key = backgroundKey();
+    QTransform world = worldTransform();
+    QSize size = this->size();
+    origin = {};
+    if (following) {
+        // the world layer's view: drawn at its centre over its margin, shifted as it is
+        key.centre = m_worldCentre;
+        const QPointF shift = (m_centre - m_worldCentre) * m_scale; // [px], y up
+        origin = QPoint(m_worldMargin + qRound(shift.x()), m_worldMargin - qRound(shift.y()));
+        world = worldTransformAt(m_worldCentre) *
+                QTransform::fromTranslate(m_worldMargin, m_worldMargin);
+        size += QSize(2 * m_worldMargin, 2 * m_worldMargin);
+    }
+    if (!(key == m_pathKey) || following != m_pathFollowing ||
+        size != m_pathLayer.size() / key.dpr || m_pathLayer.isNull()) {
+        m_pathKey = key;
+        m_pathFollowing = following;
+        m_pathLayer = QImage(size * key.dpr, QImage::Format_ARGB32_Premultiplied);
+        m_pathLayer.setDevicePixelRatio(key.dpr);
+        m_pathLayer.fill(Qt::transparent);
+        QPainter l(&m_pathLayer);
+        l.setRenderHint(QPainter::Antialiasing, true);
+        paintPath(l, world);
+    }
+    return m_pathLayer;
+}
+
+void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     // an outline or a marker has no fill: the path shows through it
     if (bodyLook().display != BodyDisplay::ToScale)
         return;
     const QTransform world = worldTransform();
     const auto& [shape, ring] = bodyClipShapes();
-    // each body's area and the ring its outline's pen covers, in pixels: one clip at a time (a
-    // union of translucent shapes would cost more than drawing the few segments twice)
-    std::vector<QPainterPath> clips;
+    // each body's area and the ring its outline's pen covers, in pixels
+    std::vector<std::pair<QPainterPath, QPainterPath>> clips;
     auto add = [&](double x, double y, double phi) {
         QTransform pose;
         pose.translate(x, y);
@@ -321,8 +351,7 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) cons
         QPainterPath mapped = map.map(shape);
         if (!mapped.boundingRect().intersects(QRectF(rect())))
             return;
-        clips.push_back(std::move(mapped));
-        clips.push_back(map.map(ring));
+        clips.emplace_back(std::move(mapped), map.map(ring));
     };
     forEachShownPose(now, m_showVakonomic, drawsOpenLoop(), drawsClosedLoop(), add);
     if (clips.empty())
@@ -334,16 +363,32 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) cons
     for (std::size_t i = 0; i < n; ++i)
         line << world.map(controlled.curve->points[i]);
     line << world.map(controlled.end);
+    const qreal dpr = devicePixelRatioF();
+    QPoint origin;
+    const QImage* layer = dpr == std::round(dpr) ? &pathLayer(origin) : nullptr;
     // the band and the controlled trail up to now on it, then the knife at P
-    for (const QPainterPath& clip : clips) {
-        const QRectF box = clip.boundingRect().intersected(QRectF(rect()));
+    for (const auto& [area, outline] : clips) {
+        const QRect box =
+            area.boundingRect().united(outline.boundingRect()).toAlignedRect() & rect();
         if (box.isEmpty())
             continue;
-        p.save();
-        p.setClipPath(clip, Qt::IntersectClip);
-        paintPath(p, world, box);
-        strokePolylineWithin(p, line, controlled.pen, QRegion(box.toAlignedRect()));
-        p.restore();
+        if (!layer) {
+            // a fractional device pixel ratio: drawn under the clips (a layer's pixels would
+            // land between the device's)
+            for (const QPainterPath* clip : {&area, &outline}) {
+                p.save();
+                p.setClipPath(*clip, Qt::IntersectClip);
+                paintPath(p, world, clip->boundingRect().intersected(QRectF(rect())));
+                strokePolylineWithin(p, line, controlled.pen, QRegion(box));
+                p.restore();
+            }
+            continue;
+        }
+        // the layer's band within the box and the trail on it, in the body's area or under its
+        // outline
+        drawMaskedLayer(p, *layer, origin, box, {&area, &outline}, [&](QPainter& c) {
+            strokePolylineWithin(c, line, controlled.pen, QRegion(box));
+        });
     }
     p.save();
     const QPointF at = world.map(QPointF(now.x, now.y));

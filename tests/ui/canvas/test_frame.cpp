@@ -1,6 +1,7 @@
 // GUI tests of the animation frame's economies: what a frame repaints and lays out, and that
 // the cached layers draw what direct drawing draws. Offscreen, through the real window.
 #include "canvas/body_sprites.h"
+#include "canvas/masked_layer.h"
 #include "canvas/scene_canvas.h"
 #include "canvas/trail_stroke.h"
 #include "canvas/vector_painter.h"
@@ -183,6 +184,7 @@ class TestFrame : public QObject {
     void framesRepaintWhatMovesAsAFullRepaintWould();
     void followingShiftsTheStaticLayerAsRedrawingWould();
     void trailStrokesWithinAnAreaDrawWhatDrawPolylineDraws();
+    void maskedLayerDrawsWhatClipPathsDraw();
     void fastFramesAfterZoomAndPanRepaintAsAFullRepaintWould();
     void trailLayerKeepsStepAcrossLoopsJumpsAndFollowing();
     void flatPlotsShowWhatQCustomPlotPaints();
@@ -456,6 +458,115 @@ void TestFrame::trailStrokesWithinAnAreaDrawWhatDrawPolylineDraws() {
                 ++compared;
             }
     QCOMPARE(compared, 60);
+}
+
+void TestFrame::maskedLayerDrawsWhatClipPathsDraw() {
+    // the path over a body: a layer's pixels and a stroke on them, kept within a turned ellipse
+    // and the ring of its outline's pen, against drawing both under a clip path of the areas'
+    // union. Away from the areas' edges (1.5 px) the pixels are the same; on the edges the
+    // mask's coverage and the clip's antialiasing may differ
+    for (double zoom : {1.0, 2.0}) {
+        QImage layer(QSize(320, 220) * zoom, QImage::Format_ARGB32_Premultiplied);
+        layer.setDevicePixelRatio(zoom);
+        layer.fill(Qt::transparent);
+        QPolygonF band;
+        for (int i = 0; i <= 200; ++i)
+            band << QPointF(10 + 1.5 * i, 110 + 60 * std::sin(0.03 * i));
+        {
+            QPainter l(&layer);
+            l.setRenderHint(QPainter::Antialiasing, true);
+            QPen pen(QColor(200, 170, 160), 6);
+            pen.setCosmetic(true);
+            l.setPen(pen);
+            l.drawPolyline(band);
+            l.setBrush(QColor(40, 40, 40));
+            l.drawEllipse(QPointF(160, 100), 4, 4);
+        }
+        QTransform pose;
+        pose.translate(170, 105);
+        pose.rotate(27);
+        QPainterPath body;
+        body.addEllipse(QPointF(0, 0), 60, 35);
+        body.moveTo(0, 0);
+        body.arcTo(QRectF(-30, -30, 60, 60), 10, 120);
+        body = pose.map(body);
+        const QPainterPath& shape = body;
+        QPainterPathStroker stroker;
+        stroker.setWidth(5);
+        const QPainterPath ring = stroker.createStroke(body);
+        QPolygonF trail;
+        for (int i = 0; i <= 120; ++i)
+            trail << QPointF(60 + 2 * i, 112 + 55 * std::sin(0.05 * i + 0.3));
+        QPen trailPen(QColor(20, 60, 140), 2.5);
+        trailPen.setCosmetic(true);
+        auto over = [&](QPainter& c) {
+            c.setPen(trailPen);
+            c.drawPolyline(trail);
+        };
+        const QRect box = body.boundingRect().united(ring.boundingRect()).toAlignedRect();
+        QImage reference(QSize(320, 220) * zoom, QImage::Format_RGB32);
+        reference.setDevicePixelRatio(zoom);
+        reference.fill(QColor(120, 200, 230)); // the body's fill under the path
+        QImage masked = reference;
+        {
+            QPainter p(&reference);
+            p.setRenderHint(QPainter::Antialiasing, true);
+            // one clip, the areas' union: under a clip per area the edges of what is drawn
+            // where the areas overlap would be inked twice
+            p.setClipPath(shape.united(ring));
+            p.drawImage(QPointF(0, 0), layer);
+            over(p);
+        }
+        {
+            QPainter p(&masked);
+            p.setRenderHint(QPainter::Antialiasing, true);
+            drawMaskedLayer(p, layer, QPoint(0, 0), box, {&body, &ring}, over);
+        }
+        // a pixel (in the painter's coordinates) away from every edge: the 8 points 1.5 px
+        // around its middle lie on the same side of both areas as the middle
+        auto awayFromEdges = [&](QPointF c) {
+            for (const QPainterPath* area : {&shape, &ring}) {
+                const bool in = area->contains(c);
+                for (int k = 0; k < 8; ++k)
+                    if (area->contains(c + 1.5 * QPointF(std::cos(k * M_PI / 4),
+                                                         std::sin(k * M_PI / 4))) != in)
+                        return false;
+            }
+            return true;
+        };
+        int inside = 0, edge = 0, edgeDiffering = 0, most = 0;
+        for (int y = 0; y < reference.height(); ++y)
+            for (int x = 0; x < reference.width(); ++x) {
+                const QRgb a = reference.pixel(x, y), b = masked.pixel(x, y);
+                const int d =
+                    std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
+                              std::abs(qBlue(a) - qBlue(b))});
+                const QPointF c = QPointF(x + 0.5, y + 0.5) / zoom;
+                if (awayFromEdges(c)) {
+                    QVERIFY2(d <= 2, qPrintable(QStringLiteral("zoom %1: pixel (%2, %3) away from "
+                                                               "the edges differs by %4")
+                                                    .arg(zoom)
+                                                    .arg(x)
+                                                    .arg(y)
+                                                    .arg(d)));
+                    inside += body.contains(c) || ring.contains(c) ? 1 : 0;
+                } else {
+                    ++edge;
+                    edgeDiffering += d > 24 ? 1 : 0;
+                    most = std::max(most, d);
+                }
+            }
+        const QString what = QStringLiteral("zoom %1: %2 px inside, %3 on the edges, %4 of them "
+                                            "differ by more than 24 levels, at most %5")
+                                 .arg(zoom)
+                                 .arg(inside)
+                                 .arg(edge)
+                                 .arg(edgeDiffering)
+                                 .arg(most);
+        qInfo().noquote() << what;
+        QVERIFY2(inside > 2000 * zoom * zoom, qPrintable(what));
+        QVERIFY2(edge > 1000 * zoom && edgeDiffering == 0, qPrintable(what));
+    }
 }
 
 void TestFrame::fastFramesAfterZoomAndPanRepaintAsAFullRepaintWould() {
