@@ -4,7 +4,26 @@
 #include <QPainter>
 #include <QPainterPath>
 
+#include <algorithm>
+
 namespace chaplygin::ui {
+
+namespace {
+
+// Qt's raster engine hands a blend of more than about 96 spans to its thread pool, waking
+// threads and waiting for them (docs/numerics.md §7): translucent images go in bands of rows
+constexpr int kBandRows = 64;
+
+// image (at the painter's device pixel ratio) drawn at `at` in bands of rows
+void drawInBands(QPainter& p, QPointF at, const QImage& image) {
+    const qreal dpr = image.devicePixelRatio();
+    for (int top = 0; top < image.height(); top += kBandRows) {
+        const int rows = std::min(kBandRows, image.height() - top);
+        p.drawImage(at + QPointF(0, top / dpr), image, QRect(0, top, image.width(), rows));
+    }
+}
+
+} // namespace
 
 void drawMaskedLayer(QPainter& p, const QImage& layer, QPoint origin, const QRect& box,
                      std::initializer_list<const QPainterPath*> areas,
@@ -34,9 +53,9 @@ void drawMaskedLayer(QPainter& p, const QImage& layer, QPoint origin, const QRec
         over(c);
         c.resetTransform();
         c.setCompositionMode(QPainter::CompositionMode_DestinationIn);
-        c.drawImage(QPointF(0, 0), mask);
+        drawInBands(c, QPointF(0, 0), mask);
     }
-    p.drawImage(box.topLeft(), piece);
+    drawInBands(p, box.topLeft(), piece);
 }
 
 } // namespace chaplygin::ui
