@@ -141,6 +141,8 @@ class SceneCanvas : public QWidget {
     /// The path's band and marks as the static layer has them, on a transparent layer made once
     /// per view; origin: the window's pixel p is the layer's p + origin.
     const QImage& pathLayer(QPoint& origin);
+    /// Following: the world layer's pixel under the window's (0, 0).
+    QPoint worldLayerOrigin() const;
     QTransform worldTransform() const;
     /// The view's map with its centre at `centre` [m].
     QTransform worldTransformAt(QPointF centre) const;

@@ -342,6 +342,12 @@ bool SceneCanvas::followsWithWorldLayer() const {
     return m_follow && !m_drawMode && dpr == std::round(dpr) && m_document->solution();
 }
 
+QPoint SceneCanvas::worldLayerOrigin() const {
+    // the world moves left and down as the centre goes right and up
+    const QPointF shift = (m_centre - m_worldCentre) * m_scale; // [px], y up
+    return {m_worldMargin + qRound(shift.x()), m_worldMargin - qRound(shift.y())};
+}
+
 void SceneCanvas::dropLayers() {
     m_background = {};
     m_worldLayer = {};
@@ -375,15 +381,14 @@ void SceneCanvas::paintStaticLayer(QPainter& p, const QRegion& region, const Mot
         return;
     }
     BackgroundKey key = backgroundKey();
-    key.centre = {};                                      // the world layer moves with the centre
-    QPointF shift = (m_centre - m_worldCentre) * m_scale; // [px], y up
+    key.centre = {}; // the world layer moves with the centre
+    const QPointF shift = (m_centre - m_worldCentre) * m_scale; // [px], y up
     const int margin = std::max(width(), height()) / 2;
     if (!(key == m_worldKey) || m_worldLayer.isNull() || std::abs(shift.x()) > m_worldMargin ||
         std::abs(shift.y()) > m_worldMargin) {
         m_worldKey = key;
         m_worldCentre = m_centre;
         m_worldMargin = margin;
-        shift = {};
         const QSize big = size() + QSize(2 * margin, 2 * margin);
         m_worldLayer = QPixmap(big * dpr);
         m_worldLayer.setDevicePixelRatio(dpr);
@@ -394,8 +399,7 @@ void SceneCanvas::paintStaticLayer(QPainter& p, const QRegion& region, const Mot
         paintGrid(w, world, QRectF(QPointF(0, 0), QSizeF(big)));
         paintPath(w, world);
     }
-    // the world moves left and down as the centre goes right and up
-    const QPoint source(m_worldMargin + qRound(shift.x()), m_worldMargin - qRound(shift.y()));
+    const QPoint source = worldLayerOrigin();
     if (now) {
         updateTrailLayer(*now, m_worldLayer, source);
         blitRegion(p, inside, m_trailLayer, source);

@@ -315,8 +315,7 @@ const QImage& SceneCanvas::pathLayer(QPoint& origin) {
     if (following) {
         // the world layer's view: drawn at its centre over its margin, shifted as it is
         key.centre = m_worldCentre;
-        const QPointF shift = (m_centre - m_worldCentre) * m_scale; // [px], y up
-        origin = QPoint(m_worldMargin + qRound(shift.x()), m_worldMargin - qRound(shift.y()));
+        origin = worldLayerOrigin();
         world = worldTransformAt(m_worldCentre) *
                 QTransform::fromTranslate(m_worldMargin, m_worldMargin);
         size += QSize(2 * m_worldMargin, 2 * m_worldMargin);
