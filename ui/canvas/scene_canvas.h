@@ -143,6 +143,8 @@ class SceneCanvas : public QWidget {
     const QImage& pathLayer(QPoint& origin);
     /// Following: the world layer's pixel under the window's (0, 0).
     QPoint worldLayerOrigin() const;
+    /// Following: the map from metres to the world layer's pixels.
+    QTransform worldLayerTransform() const;
     QTransform worldTransform() const;
     /// The view's map with its centre at `centre` [m].
     QTransform worldTransformAt(QPointF centre) const;

@@ -342,6 +342,11 @@ bool SceneCanvas::followsWithWorldLayer() const {
     return m_follow && !m_drawMode && dpr == std::round(dpr) && m_document->solution();
 }
 
+QTransform SceneCanvas::worldLayerTransform() const {
+    return worldTransformAt(m_worldCentre) *
+           QTransform::fromTranslate(m_worldMargin, m_worldMargin);
+}
+
 QPoint SceneCanvas::worldLayerOrigin() const {
     // the world moves left and down as the centre goes right and up
     const QPointF shift = (m_centre - m_worldCentre) * m_scale; // [px], y up
@@ -395,7 +400,7 @@ void SceneCanvas::paintStaticLayer(QPainter& p, const QRegion& region, const Mot
         m_worldLayer.fill(Qt::white);
         QPainter w(&m_worldLayer);
         w.setRenderHint(QPainter::Antialiasing, true);
-        const QTransform world = worldTransform() * QTransform::fromTranslate(margin, margin);
+        const QTransform world = worldLayerTransform();
         paintGrid(w, world, QRectF(QPointF(0, 0), QSizeF(big)));
         paintPath(w, world);
     }

@@ -316,12 +316,11 @@ const QImage& SceneCanvas::pathLayer(QPoint& origin) {
         // the world layer's view: drawn at its centre over its margin, shifted as it is
         key.centre = m_worldCentre;
         origin = worldLayerOrigin();
-        world = worldTransformAt(m_worldCentre) *
-                QTransform::fromTranslate(m_worldMargin, m_worldMargin);
+        world = worldLayerTransform();
         size += QSize(2 * m_worldMargin, 2 * m_worldMargin);
     }
-    if (!(key == m_pathKey) || following != m_pathFollowing ||
-        size != m_pathLayer.size() / key.dpr || m_pathLayer.isNull()) {
+    // the key's size fixes the world layer's margin too
+    if (!(key == m_pathKey) || following != m_pathFollowing || m_pathLayer.isNull()) {
         m_pathKey = key;
         m_pathFollowing = following;
         m_pathLayer = QImage(size * key.dpr, QImage::Format_ARGB32_Premultiplied);
