@@ -1,6 +1,7 @@
 #include "canvas/masked_layer.h"
 
 #include <QImage>
+#include <QPaintDevice>
 #include <QPainter>
 #include <QPainterPath>
 
@@ -30,10 +31,11 @@ void drawMaskedLayer(QPainter& p, const QImage& layer, QPoint origin, const QRec
                      const std::function<void(QPainter&)>& over) {
     if (box.isEmpty())
         return;
-    const qreal dpr = layer.devicePixelRatio();
+    const qreal dpr = p.device()->devicePixelRatio();
     QImage piece(box.size() * dpr, QImage::Format_ARGB32_Premultiplied);
     piece.setDevicePixelRatio(dpr);
-    QImage mask = piece;
+    QImage mask(piece.size(), piece.format());
+    mask.setDevicePixelRatio(dpr);
     mask.fill(Qt::transparent);
     {
         QPainter m(&mask);
@@ -43,11 +45,15 @@ void drawMaskedLayer(QPainter& p, const QImage& layer, QPoint origin, const QRec
             m.fillPath(*area, Qt::black);
     }
     {
+        if (layer.isNull())
+            piece.fill(Qt::transparent);
         QPainter c(&piece);
-        c.setCompositionMode(QPainter::CompositionMode_Source);
-        c.drawImage(QPointF(0, 0), layer,
-                    QRectF(QPointF(box.topLeft() + origin) * dpr, QSizeF(box.size()) * dpr));
-        c.setCompositionMode(QPainter::CompositionMode_SourceOver);
+        if (!layer.isNull()) {
+            c.setCompositionMode(QPainter::CompositionMode_Source);
+            c.drawImage(QPointF(0, 0), layer,
+                        QRectF(QPointF(box.topLeft() + origin) * dpr, QSizeF(box.size()) * dpr));
+            c.setCompositionMode(QPainter::CompositionMode_SourceOver);
+        }
         c.setRenderHint(QPainter::Antialiasing, true);
         c.translate(-box.topLeft());
         over(c);

@@ -82,6 +82,9 @@ class SceneCanvas : public QWidget {
     BodyDisplay shownBodyDisplay() const;
     /// Forgets the cached layers (static layer, trails): the next paint draws everything anew.
     void dropLayers();
+    /// Whether the last paint drew the path over the bodies from the path's layer (a view
+    /// painted before) rather than within each body's box (a view's first paint).
+    bool pathOverBodiesFromLayer() const { return m_pathOverBodiesFromLayer; }
 
   public slots:
     void setTime(double t);
@@ -139,7 +142,9 @@ class SceneCanvas : public QWidget {
     /// to scale, inside their shapes: no body hides the path (docs/user-guide.md, Animation).
     void paintPathOverBodies(QPainter& p, const MotionSample& now);
     /// The path's band and marks as the static layer has them, on a transparent layer made once
-    /// per view; origin: the window's pixel p is the layer's p + origin.
+    /// per view when the view is painted a second time; origin: the window's pixel p is the
+    /// layer's p + origin. Null at a view's first paint (a zoom step): the band within each
+    /// body's box costs less than the whole band, which a view seen once would not repay.
     const QImage& pathLayer(QPoint& origin);
     /// Following: the world layer's pixel under the window's (0, 0).
     QPoint worldLayerOrigin() const;
@@ -255,6 +260,9 @@ class SceneCanvas : public QWidget {
     BackgroundKey m_pathKey;
     bool m_pathFollowing = false;
     QImage m_pathLayer;
+    BackgroundKey m_pathSeenKey; // the view of the last paint without the layer
+    bool m_pathSeenFollowing = false;
+    bool m_pathOverBodiesFromLayer = false;
     QPixmap m_background;   // grid, path and legend
     QImage m_trailLayer;    // the static layer with the trails up to m_trailsTime drawn on it
     qint64 m_trailBase = 0; // the cache key of the static layer it was made from

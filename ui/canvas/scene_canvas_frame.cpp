@@ -321,6 +321,12 @@ const QImage& SceneCanvas::pathLayer(QPoint& origin) {
     }
     // the key's size fixes the world layer's margin too
     if (!(key == m_pathKey) || following != m_pathFollowing || m_pathLayer.isNull()) {
+        if (!(key == m_pathSeenKey) || following != m_pathSeenFollowing) {
+            m_pathSeenKey = key;
+            m_pathSeenFollowing = following;
+            static const QImage none;
+            return none;
+        }
         m_pathKey = key;
         m_pathFollowing = following;
         m_pathLayer = QImage(size * key.dpr, QImage::Format_ARGB32_Premultiplied);
@@ -364,6 +370,7 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     const qreal dpr = devicePixelRatioF();
     QPoint origin;
     const QImage* layer = dpr == std::round(dpr) ? &pathLayer(origin) : nullptr;
+    m_pathOverBodiesFromLayer = layer && !layer->isNull();
     // the band and the controlled trail up to now on it, then the knife at P
     for (const auto& [area, outline] : clips) {
         const QRect box =
@@ -382,9 +389,11 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
             }
             continue;
         }
-        // the layer's band within the box and the trail on it, in the body's area or under its
-        // outline
+        // the layer's band within the box (or the band drawn there, at a view's first paint)
+        // and the trail on it, in the body's area or under its outline
         drawMaskedLayer(p, *layer, origin, box, {&area, &outline}, [&](QPainter& c) {
+            if (layer->isNull())
+                paintPath(c, world, QRectF(box));
             strokePolylineWithin(c, line, controlled.pen, QRegion(box));
         });
     }
