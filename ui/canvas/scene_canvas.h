@@ -159,6 +159,8 @@ class SceneCanvas : public QWidget {
     void paintScaleBar(QPainter& p) const;
     /// The path's band; with `within` [px] only the segments that reach it.
     void paintPath(QPainter& p, const QTransform& world, const QRectF& within = {}) const;
+    /// Whether a segment of the path's band reaches `within` [px].
+    bool bandReaches(const QTransform& world, const QRectF& within) const;
     /// A trail to draw: its flattened curve up to the parameter `limit` (time, or arc length for
     /// the controlled body), then its end now.
     struct Trail {

@@ -103,6 +103,34 @@ void SceneCanvas::paintScaleBar(QPainter& p) const {
                Qt::AlignCenter, label);
 }
 
+namespace {
+
+// whether the segment from `from` to `to` [px], drawn `reach` px wide on each side, reaches
+// `within`
+bool segmentReaches(QPointF from, QPointF to, double reach, const QRectF& within) {
+    return QRectF(from, to).normalized().adjusted(-reach, -reach, reach, reach).intersects(within);
+}
+
+// half the band's width, and more [px]
+double bandReach(double lineScale) {
+    return 3 * lineScale + 2;
+}
+
+} // namespace
+
+bool SceneCanvas::bandReaches(const QTransform& world, const QRectF& within) const {
+    const FlatCurve& flat = curves().path();
+    const double reach = bandReach(m_style.lineScale);
+    QPointF to = flat.points.empty() ? QPointF() : world.map(flat.points[0]);
+    for (std::size_t i = 1; i < flat.points.size(); ++i) {
+        const QPointF from = to;
+        to = world.map(flat.points[i]);
+        if (segmentReaches(from, to, reach, within))
+            return true;
+    }
+    return false;
+}
+
 void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& within) const {
     const auto& solution = m_document->solution();
     // a wide pale band, so that the trail on top of it stays visible: one polyline per run of
@@ -125,7 +153,7 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
         }
         run.clear();
     };
-    const double reach = 3 * m_style.lineScale + 2; // half the band's width, and more
+    const double reach = bandReach(m_style.lineScale);
     // each point mapped once: `from` is point i - 1 in pixels, `to` point i
     QPointF to = flat.points.empty() ? QPointF() : world.map(flat.points[0]);
     for (std::size_t i = 1; i < flat.points.size(); ++i) {
@@ -133,8 +161,7 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
         to = world.map(flat.points[i]);
         if (!within.isNull()) {
             // only the segments that reach `within`: a run ends at a segment left out
-            const QRectF segment = QRectF(from, to).normalized();
-            if (!segment.adjusted(-reach, -reach, reach, reach).intersects(within)) {
+            if (!segmentReaches(from, to, reach, within)) {
                 flush();
                 continue;
             }
@@ -296,8 +323,12 @@ void SceneCanvas::paintBackground() {
     if (key == m_backgroundKey && !m_background.isNull())
         return;
     m_backgroundKey = key;
-    m_background = QPixmap(size() * dpr);
-    m_background.setDevicePixelRatio(dpr);
+    // the last view's pixels are painted over: a new 8 MB image at 1920 x 1080 costs its pages'
+    // first touch at every zoom step
+    if (m_background.size() != size() * dpr) {
+        m_background = QPixmap(size() * dpr);
+        m_background.setDevicePixelRatio(dpr);
+    }
     m_background.fill(Qt::white);
     QPainter p(&m_background);
     p.setRenderHint(QPainter::Antialiasing, true);

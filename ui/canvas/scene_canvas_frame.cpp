@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <optional>
 
 // the canvas's moving layer, painted every frame over the static one: trails, bodies, arrows
@@ -115,6 +116,18 @@ void forEachShownPose(const MotionSample& now, bool vakonomic, bool openLoop, bo
         f(now.fb.x, now.fb.y, now.fb.phi);
 }
 
+// `to` becomes an RGB32 copy of `from`'s pixels, in its own memory when that has the size (a
+// new image at every zoom step would cost its pages' first touch)
+void copyPixels(const QImage& from, QImage& to) {
+    const QImage source =
+        from.format() == QImage::Format_RGB32 ? from : from.convertToFormat(QImage::Format_RGB32);
+    if (to.size() != source.size() || to.format() != QImage::Format_RGB32)
+        to = QImage(source.size(), QImage::Format_RGB32);
+    const auto bytes = std::size_t(std::min(to.bytesPerLine(), source.bytesPerLine()));
+    for (int y = 0; y < source.height(); ++y)
+        std::memcpy(to.scanLine(y), source.constScanLine(y), bytes);
+}
+
 } // namespace
 
 QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& now,
@@ -146,7 +159,7 @@ void SceneCanvas::updateTrailLayer(const MotionSample& now, const QPixmap& base,
     const QRect extent(-origin, (QSizeF(base.size()) / dpr).toSize());
     QRegion area;
     if (m_trailLayer.isNull() || m_trailBase != base.cacheKey() || m_time < m_trailsTime) {
-        m_trailLayer = base.toImage().convertToFormat(QImage::Format_RGB32);
+        copyPixels(base.toImage(), m_trailLayer);
         m_trailLayer.setDevicePixelRatio(dpr);
         m_trailBase = base.cacheKey();
         area = extent;
@@ -375,7 +388,8 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     for (const auto& [area, outline] : clips) {
         const QRect box =
             area.boundingRect().united(outline.boundingRect()).toAlignedRect() & rect();
-        if (box.isEmpty())
+        // the controlled trail lies on the band: where no band is, there is nothing to draw
+        if (box.isEmpty() || !bandReaches(world, QRectF(box)))
             continue;
         if (!layer) {
             // a fractional device pixel ratio: drawn under the clips (a layer's pixels would
