@@ -1,7 +1,9 @@
 """Reference counts and lifetime: a Solution keeps what it needs (its own copy of the scene and the
 tabulated path), so it outlives the Scene it was solved from; sample() returns arrays that own
-their data and outlive the Solution; nothing is leaked by sampling."""
+their data (or, from 4 MB, their mapping) and outlive the Solution; nothing is leaked by
+sampling."""
 import gc
+import os
 import sys
 import tracemalloc
 
@@ -41,6 +43,38 @@ def test_arrays_own_their_data_and_outlive_the_solution(cl):
     del solution
     gc.collect()
     assert values["x"][0] == 2.0
+
+
+def resident_bytes():
+    with open("/proc/self/statm") as statm:
+        return int(statm.read().split()[1]) * os.sysconf("SC_PAGE_SIZE")
+
+
+def test_long_arrays_hold_their_own_mapping_and_give_it_back(cl):
+    # 2^20 times: an 8 MB column, mapped for itself; the same values as short arrays give, of the
+    # times' shape, writeable, alive after the Solution and the dict, unmapped with the last view
+    solution = cl.Scene.preset("catenary").solve()
+    t = np.linspace(0, solution.t_end, 2**20).reshape(2**10, 2**10)
+    before = resident_bytes()
+    values = solution.sample(t, columns=["x", "psi"])
+    x = values["x"]
+    assert x.shape == t.shape and x.dtype == np.float64
+    assert x.flags.c_contiguous and x.flags.writeable and x.base is not None
+    assert not np.shares_memory(x, values["psi"])
+    short = solution.sample(t[::97, ::89], columns=["x", "psi"])
+    assert short["x"].flags.owndata
+    assert np.array_equal(x[::97, ::89], short["x"])
+    assert np.array_equal(values["psi"][::97, ::89], short["psi"])
+    assert resident_bytes() - before >= 2 * 8 * 2**20  # both columns written
+    corner = x[-1:, -1:]  # a view keeps the whole mapping
+    del solution, values, x
+    gc.collect()
+    corner[0, 0] = 1.5
+    assert corner[0, 0] == 1.5
+    held = resident_bytes()
+    del corner
+    gc.collect()
+    assert held - resident_bytes() >= 8 * 2**20  # the x column's mapping is given back
 
 
 def test_sampling_holds_no_references(cl):
