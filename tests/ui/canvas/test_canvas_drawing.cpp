@@ -3,6 +3,7 @@
 // it stands in for (docs/numerics.md §7). Offscreen, on images.
 #include "canvas/masked_layer.h"
 #include "canvas/trail_stroke.h"
+#include "pixel_difference.h"
 
 #include <QImage>
 #include <QPainter>
@@ -94,9 +95,7 @@ void TestCanvasDrawing::trailStrokesWithinAnAreaDrawWhatDrawPolylineDraws() {
                 for (int y = 0; y < reference.height(); ++y)
                     for (int x = 0; x < reference.width(); ++x) {
                         QRgb a = reference.pixel(x, y), b = culled.pixel(x, y);
-                        int d =
-                            std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
-                                      std::abs(qBlue(a) - qBlue(b))});
+                        int d = test::channelDifference(a, b);
                         inked += a != qRgb(255, 255, 255) ? 1 : 0;
                         differing += d > 0 ? 1 : 0;
                         most = std::max(most, d);
@@ -197,9 +196,7 @@ void TestCanvasDrawing::maskedLayerDrawsWhatClipPathsDraw() {
         for (int y = 0; y < reference.height(); ++y)
             for (int x = 0; x < reference.width(); ++x) {
                 const QRgb a = reference.pixel(x, y), b = masked.pixel(x, y);
-                const int d =
-                    std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
-                              std::abs(qBlue(a) - qBlue(b))});
+                const int d = test::channelDifference(a, b);
                 const QPointF c = QPointF(x + 0.5, y + 0.5) / zoom;
                 if (awayFromEdges(c)) {
                     QVERIFY2(d <= 2, qPrintable(QStringLiteral("zoom %1: pixel (%2, %3) away from "

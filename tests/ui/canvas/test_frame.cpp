@@ -6,6 +6,7 @@
 #include "document/scene_document.h"
 #include "event_counter.h"
 #include "gui_test_support.h"
+#include "pixel_difference.h"
 #include "plots/flat_plot.h"
 #include "plots/plots_panel.h"
 #include "scene/presets.h"
@@ -66,8 +67,7 @@ bool showsAFullRepaint(MainWindow& window) {
     for (int y = 0; y < full.height(); ++y)
         for (int x = 0; x < full.width(); ++x) {
             QRgb a = shown.pixel(x, y), b = full.pixel(x, y);
-            int d = std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
-                              std::abs(qBlue(a) - qBlue(b))});
+            int d = test::channelDifference(a, b);
             if (d > 4)
                 return false;
             differing += d > 0 ? 1 : 0;
@@ -355,8 +355,7 @@ void TestFrame::followingShiftsTheStaticLayerAsRedrawingWould() {
     for (int y = 0; y < drawn.height(); ++y)
         for (int x = 0; x < drawn.width(); ++x) {
             QRgb a = following.pixel(x, y), b = drawn.pixel(x, y);
-            int d = std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
-                              std::abs(qBlue(a) - qBlue(b))});
+            int d = test::channelDifference(a, b);
             differing += d > 0 ? 1 : 0;
             most = std::max(most, d);
         }
@@ -428,9 +427,7 @@ void TestFrame::pathOverBodiesAtAViewsFirstPaintIsWhatItsLayerDraws() {
         for (int y = 0; y < first.height(); ++y)
             for (int x = 0; x < first.width(); ++x) {
                 const QRgb a = first.pixel(x, y), b = second.pixel(x, y);
-                const int d =
-                    std::max({std::abs(qRed(a) - qRed(b)), std::abs(qGreen(a) - qGreen(b)),
-                              std::abs(qBlue(a) - qBlue(b))});
+                const int d = test::channelDifference(a, b);
                 largest = std::max(largest, d);
                 differing += d > 0 ? 1 : 0;
             }
