@@ -197,7 +197,7 @@ void SceneCanvas::updateMoving(double from, QPointF centre) {
     // being drawn, a trail that shrinks
     const auto& solution = m_document->solution();
     bool steady = solution && from <= m_time && !m_movingPainted.isNull() && m_stroke.empty() &&
-                  m_dragVertex < 0 && PinSet::of(m_document)->count() == 0;
+                  m_dragVertex < 0 && m_document->pins()->count() == 0;
     QPoint shift; // [px] how far the scene's pixels move
     if (steady && !m_follow) {
         steady = !m_background.isNull() && backgroundKey() == m_backgroundKey;
@@ -236,14 +236,14 @@ QPointF SceneCanvas::pinKeyOrigin() const {
     QPointF origin(10, 42);
     // below the draw-mode hint, which shares the corner under the time line
     const QRectF hint = drawHintBounds();
-    const QRectF key = chaplygin::ui::pinKeyBounds(*PinSet::of(m_document), {}, font());
+    const QRectF key = chaplygin::ui::pinKeyBounds(*m_document->pins(), {}, font());
     if (!hint.isEmpty() && !key.isEmpty())
         origin.setY(std::max(origin.y(), hint.bottom() + 4 - key.top()));
     return origin;
 }
 
 QRectF SceneCanvas::pinKeyBounds() const {
-    return chaplygin::ui::pinKeyBounds(*PinSet::of(m_document), pinKeyOrigin(), font());
+    return chaplygin::ui::pinKeyBounds(*m_document->pins(), pinKeyOrigin(), font());
 }
 
 void SceneCanvas::paintEvent(QPaintEvent* e) {
@@ -258,7 +258,7 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         p.save();
         p.setClipRect(drawingArea());
         curves(); // at this scale, for the pins too
-        paintPinnedRuns(p, *PinSet::of(m_document), m_curves, worldTransform(), m_time,
+        paintPinnedRuns(p, *m_document->pins(), m_curves, worldTransform(), m_time,
                         pinKeyOrigin());
         const SystemSpec& spec = solution->scene().system;
         const QTransform world = worldTransform();

@@ -12,19 +12,9 @@ namespace chaplygin::ui {
 
 namespace {
 constexpr int kPinFreeSamples = 2; // the pins' plots and trails show the controlled motion only
-const char* const kObjectName = "pinSet";
 } // namespace
 
-PinSet::PinSet(SceneDocument* document) : QObject(document), m_document(document) {
-    setObjectName(QString::fromLatin1(kObjectName));
-}
-
-PinSet* PinSet::of(SceneDocument* document) {
-    if (auto* existing = document->findChild<PinSet*>(QString::fromLatin1(kObjectName),
-                                                      Qt::FindDirectChildrenOnly))
-        return existing;
-    return new PinSet(document);
-}
+PinSet::PinSet(SceneDocument* document) : QObject(document), m_document(document) {}
 
 void PinSet::check(SceneDocument& document, const Scene& scene) {
     for (std::size_t i = 0; i < scene.pins.size(); ++i) {

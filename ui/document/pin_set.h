@@ -28,8 +28,8 @@ class PinSet : public QObject {
         QString error; ///< why it does not solve
     };
 
-    /// The pin set of a document, created on first use as the document's child.
-    static PinSet* of(SceneDocument* document);
+    /// The pin set of a document (SceneDocument::pins), its child.
+    explicit PinSet(SceneDocument* document);
 
     /// Solves every pin of a scene; throws InputError("scene file /pins/N", ...) for the first
     /// one that does not solve (to vet a file before it replaces the current scene).
@@ -43,7 +43,6 @@ class PinSet : public QObject {
     static QColor color(int index);
 
   private:
-    explicit PinSet(SceneDocument* document);
     void sync();
 
     SceneDocument* m_document;

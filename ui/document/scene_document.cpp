@@ -1,5 +1,7 @@
 #include "document/scene_document.h"
 
+#include "document/pin_set.h"
+
 #include "common/input_error.h"
 
 #include <QtConcurrent/QtConcurrentRun>
@@ -16,7 +18,8 @@ constexpr int kPathWaitMs = 8; // how long a path request may hold the UI thread
 } // namespace
 
 SceneDocument::SceneDocument(QObject* parent, bool persistent)
-    : QObject(parent), m_persistent(persistent), m_undo(new QUndoStack(this)) {
+    : QObject(parent), m_persistent(persistent), m_undo(new QUndoStack(this)),
+      m_pins(new PinSet(this)) {
     connect(m_undo, &QUndoStack::cleanChanged, this,
             [this](bool clean) { emit modifiedChanged(!clean); });
     if (m_persistent) {
@@ -156,7 +159,7 @@ void SceneDocument::setFileName(const QString& name) {
 void SceneDocument::recompute() {
     m_dirty = false;
     m_lastRecompute.start();
-    QString error;
+    SceneError error;
     std::shared_ptr<const Solution> checked = std::move(m_checked);
     try {
         // only the cheap stages rerun when the path is cached; a checked scene is not solved twice
@@ -168,11 +171,11 @@ void SceneDocument::recompute() {
         m_series = collectSeries(*solution, kFreeSamples);
         m_solution = std::move(solution);
     } catch (const InputError& e) {
-        error = QString::fromStdString(e.what());
+        error = SceneError::of(e);
     } catch (const std::exception& e) {
-        error = tr("internal error: %1").arg(QString::fromUtf8(e.what()));
+        error = SceneError::other(tr("internal error: %1").arg(QString::fromUtf8(e.what())));
     }
-    if (error != m_error || !error.isEmpty()) {
+    if (!(error == m_error) || !error.isEmpty()) {
         m_error = error;
         emit errorChanged(m_error);
     }

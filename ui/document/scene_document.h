@@ -1,6 +1,7 @@
 #pragma once
 #include "document/autosave.h"
 #include "document/plot_series.h"
+#include "document/scene_error.h"
 #include "scene/scene.h"
 #include "scene/solution.h"
 
@@ -28,9 +29,13 @@ namespace chaplygin::ui {
 /// are coalesced: setScene() only marks the document dirty, and one recompute runs with the latest
 /// scene on the next turn of the event loop, at most one per 16 ms frame while a slider moves. A
 /// scene that fails leaves the last valid Solution in place and reports the InputError.
+class PinSet;
+
 class SceneDocument : public QObject {
     Q_OBJECT
   public:
+    /// The scene's pinned runs, solved lazily.
+    PinSet* pins() const { return m_pins; }
     /// persistent: the program's own window, which keeps the recent files in QSettings and a copy
     /// of the unsaved scene on disk (Autosave); off for tests and screenshots.
     explicit SceneDocument(QObject* parent = nullptr, bool persistent = false);
@@ -87,7 +92,9 @@ class SceneDocument : public QObject {
     /// What the plots draw, gathered once per recompute.
     const PlotSeries& series() const { return m_series; }
     /// The message of the last failed recompute; empty when the scene is valid.
-    const QString& error() const { return m_error; }
+    const QString& error() const { return m_error.message; }
+    /// The latest scene's error with the part of the scene at fault.
+    const SceneError& sceneError() const { return m_error; }
 
     /// Marks the scene for a coalesced recompute (latest value wins).
     void setScene(const Scene& scene);
@@ -119,7 +126,7 @@ class SceneDocument : public QObject {
     /// A new valid solution (and series) is in place.
     void solutionChanged();
     /// error is empty when the latest scene solved.
-    void errorChanged(const QString& error);
+    void errorChanged(const chaplygin::ui::SceneError& error);
     void fileNameChanged(const QString& name);
     /// The scene was set by an edit, an undo or redo, or a load; pathChanged when its path (or
     /// preset) differs from the one before, so that views showing the path refresh.
@@ -146,6 +153,7 @@ class SceneDocument : public QObject {
 
     bool m_persistent;
     QUndoStack* m_undo;
+    PinSet* m_pins;
     Autosave* m_autosave = nullptr;
     bool m_applied = false; // whether a scene has been applied yet
     Scene m_scene;
@@ -154,7 +162,7 @@ class SceneDocument : public QObject {
     QElapsedTimer m_lastRecompute;
     std::shared_ptr<const Solution> m_solution;
     PlotSeries m_series;
-    QString m_error;
+    SceneError m_error;
     QString m_fileName;
     std::vector<std::pair<PathSource, std::shared_ptr<const Path>>> m_pathCache;
     std::shared_ptr<const Solution> m_checked; // solved by check(), taken by the next recompute

@@ -75,9 +75,10 @@ void SceneDocument::open(const QString& path) {
 void SceneDocument::save(const QString& path) {
     flush();
     if (!m_error.isEmpty())
-        throw InputError(
-            tr("cannot save '%1'").arg(path).toStdString(),
-            tr("the scene does not solve (%1); fix it or undo first").arg(m_error).toStdString());
+        throw InputError(tr("cannot save '%1'").arg(path).toStdString(),
+                         tr("the scene does not solve (%1); fix it or undo first")
+                             .arg(m_error.message)
+                             .toStdString());
     saveSceneFile(path, m_scene);
     markSavedAs(path);
 }

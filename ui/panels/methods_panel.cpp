@@ -70,7 +70,7 @@ MethodsPanel::MethodsPanel(SceneDocument* document, QWidget* parent)
     m_table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
     m_table->setMaximumHeight(m_table->horizontalHeader()->sizeHint().height() * 4);
     m_table->setTabKeyNavigation(false); // Tab leaves the table
-    installPlotExportMenu(
+    m_plotMenu = installPlotExportMenu(
         m_plot, [] { return QStringLiteral("work_precision"); },
         [this](const QString& error) { m_status->setText(error); });
 

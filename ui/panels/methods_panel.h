@@ -10,6 +10,7 @@
 #include <optional>
 
 class QCustomPlot;
+class QMenu;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -35,6 +36,8 @@ class MethodsPanel : public QWidget {
     /// The last finished sweep (complete or cancelled), if any.
     const std::optional<WorkPrecisionReport>& report() const { return m_report; }
     QCustomPlot* plot() const { return m_plot; }
+    /// The diagram's context menu ("Export this plot…").
+    QMenu* plotMenu() const { return m_plotMenu; }
     QProgressBar* progressBar() const { return m_progress; }
     QPushButton* runButton() const { return m_run; }
     QPushButton* cancelButton() const { return m_cancel; }
@@ -71,6 +74,7 @@ class MethodsPanel : public QWidget {
     QLabel* m_status;
     QLabel* m_references;
     QCustomPlot* m_plot;
+    QMenu* m_plotMenu;
     QTableWidget* m_table;
     std::optional<WorkPrecisionReport> m_report;
     Scene m_runScene;

@@ -32,20 +32,8 @@ void exportPlotFile(QCustomPlot& plot, const QString& path) {
     writeFileAtomically(path.toStdString(), bytes.toStdString());
 }
 
-QMenu* plotExportMenu(QCustomPlot* plot) {
-    return plot->findChild<QMenu*>(QStringLiteral("plotExportMenu"));
-}
-
-QAction* fitAllAction(QCustomPlot* plot) {
-    QMenu* menu = plotExportMenu(plot);
-    return menu ? menu->findChild<QAction*>(QStringLiteral("fitAllCurves")) : nullptr;
-}
-
-void installFitAllAction(QCustomPlot* plot) {
-    QMenu* menu = plotExportMenu(plot);
-    if (!menu)
-        return;
-    QAction* action = menu->addAction(QObject::tr("Fit all curves"));
+QAction* installFitAllAction(QCustomPlot* plot, QMenu& menu) {
+    QAction* action = menu.addAction(QObject::tr("Fit all curves"));
     action->setObjectName(QStringLiteral("fitAllCurves"));
     action->setToolTip(QObject::tr("Show the free and vakonomic curves whole instead of clipping "
                                    "them at the frame"));
@@ -54,10 +42,11 @@ void installFitAllAction(QCustomPlot* plot) {
         setFitAllCurves(*plot, on);
         plot->replot(QCustomPlot::rpQueuedReplot);
     });
+    return action;
 }
 
-void installPlotExportMenu(QCustomPlot* plot, std::function<QString()> stem,
-                           std::function<void(const QString&)> onError) {
+QMenu* installPlotExportMenu(QCustomPlot* plot, std::function<QString()> stem,
+                             std::function<void(const QString&)> onError) {
     auto* menu = new QMenu(plot);
     menu->setObjectName(QStringLiteral("plotExportMenu"));
     QAction* action = menu->addAction(QObject::tr("Export this plot\u2026"));
@@ -76,6 +65,7 @@ void installPlotExportMenu(QCustomPlot* plot, std::function<QString()> stem,
     plot->setContextMenuPolicy(Qt::CustomContextMenu);
     QObject::connect(plot, &QWidget::customContextMenuRequested, menu,
                      [plot, menu](const QPoint& pos) { menu->popup(plot->mapToGlobal(pos)); });
+    return menu;
 }
 
 } // namespace chaplygin::ui

@@ -14,19 +14,14 @@ namespace chaplygin::ui {
 /// cannot be written.
 void exportPlotFile(QCustomPlot& plot, const QString& path);
 
-/// Gives the plot a context menu "Export this plot…" (a save dialog proposing stem()).
-/// onError receives the message when the export fails.
-void installPlotExportMenu(QCustomPlot* plot, std::function<QString()> stem,
-                           std::function<void(const QString&)> onError);
+/// Gives the plot a context menu "Export this plot…" (a save dialog proposing stem()) and
+/// returns it (the plot's child). onError receives the message when the export fails.
+QMenu* installPlotExportMenu(QCustomPlot* plot, std::function<QString()> stem,
+                             std::function<void(const QString&)> onError);
 
-/// Adds "Fit all curves" to the plot's context menu (after installPlotExportMenu): checked, the
-/// value axis holds every curve, not only the controlled ones (fitTimeAxes); the choice is the
-/// plot's and outlives its redrawing.
-void installFitAllAction(QCustomPlot* plot);
-/// That action (for tests), or null.
-QAction* fitAllAction(QCustomPlot* plot);
-
-/// The context menu installPlotExportMenu shows (for tests).
-QMenu* plotExportMenu(QCustomPlot* plot);
+/// Adds "Fit all curves" to the plot's context menu `menu` (installPlotExportMenu's) and
+/// returns it: checked, the value axis holds every curve, not only the controlled ones
+/// (fitTimeAxes); the choice is the plot's and outlives its redrawing.
+QAction* installFitAllAction(QCustomPlot* plot, QMenu& menu);
 
 } // namespace chaplygin::ui

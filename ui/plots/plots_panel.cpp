@@ -31,10 +31,10 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
         m_grid->addWidget(plot, i / 2, i % 2);
         m_plots[i] = plot;
         plot->installEventFilter(this); // the legend follows the plot's width
-        installPlotExportMenu(
+        m_menus[i] = installPlotExportMenu(
             plot, [i] { return plotFileStem(kKinds[i]); },
             [this](const QString& error) { emit exportFailed(error); });
-        installFitAllAction(plot);
+        m_fitAll[i] = installFitAllAction(plot, *m_menus[i]);
     }
     m_errorPlot = new FlatPlot;
     m_errorPlot->setObjectName(plotFileStem(PlotKind::TrackingError));
@@ -126,7 +126,7 @@ bool PlotsPanel::eventFilter(QObject* watched, QEvent* event) {
 void PlotsPanel::refresh() {
     for (int i = 0; i < 4; ++i) {
         drawPlot(*m_plots[i], kKinds[i], m_document->series());
-        addPinnedSeries(*m_plots[i], kKinds[i], *PinSet::of(m_document));
+        addPinnedSeries(*m_plots[i], kKinds[i], *m_document->pins());
         fitLegendToWidth(*m_plots[i]);
         m_plots[i]->replot(QCustomPlot::rpQueuedReplot);
     }

@@ -5,7 +5,9 @@
 
 #include <array>
 
+class QAction;
 class QCustomPlot;
+class QMenu;
 class QGridLayout;
 
 namespace chaplygin::ui {
@@ -24,6 +26,10 @@ class PlotsPanel : public QWidget {
     explicit PlotsPanel(SceneDocument* document, QWidget* parent = nullptr);
 
     QCustomPlot* plot(int index) const { return m_plots[index]; }
+    /// A time plot's context menu ("Export this plot…", "Fit all curves") and its "Fit all
+    /// curves" action.
+    QMenu* contextMenu(int index) const { return m_menus[index]; }
+    QAction* fitAllAction(int index) const { return m_fitAll[index]; }
     double cursorTime() const { return m_time; }
     /// The time cursor drawn over a plot.
     QWidget* cursor(int index) const { return m_cursors[index]; }
@@ -60,6 +66,8 @@ class PlotsPanel : public QWidget {
 
     SceneDocument* m_document;
     std::array<QCustomPlot*, 4> m_plots{};
+    std::array<QMenu*, 4> m_menus{};
+    std::array<QAction*, 4> m_fitAll{};
     std::array<QWidget*, 4> m_cursors{};
     QCustomPlot* m_errorPlot = nullptr;
     std::array<QWidget*, 2> m_errorCursors{};

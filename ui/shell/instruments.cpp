@@ -92,7 +92,7 @@ void CompareMenu::sync() {
     m_clear->setEnabled(!s.pins.empty());
 }
 
-void installInstruments(MainWindow* window) {
+void installInstruments(MainWindow* window, QMenu& viewMenu, QDockWidget& accuracyDock) {
     SceneDocument* doc = window->document();
     auto* notes = new NotesPanel;
     auto* notesDock = new QDockWidget(MainWindow::tr("Notes"), window);
@@ -102,14 +102,11 @@ void installInstruments(MainWindow* window) {
     auto* equationsDock = new QDockWidget(MainWindow::tr("Equations"), window);
     equationsDock->setObjectName(QStringLiteral("equationsDock"));
     equationsDock->setWidget(equations);
-    auto* accuracy = window->findChild<QDockWidget*>(QStringLiteral("accuracyDock"));
     window->addDockWidget(Qt::RightDockWidgetArea, notesDock);
     window->addDockWidget(Qt::RightDockWidgetArea, equationsDock);
-    if (accuracy) {
-        window->tabifyDockWidget(accuracy, notesDock);
-        window->tabifyDockWidget(notesDock, equationsDock);
-        accuracy->raise();
-    }
+    window->tabifyDockWidget(&accuracyDock, notesDock);
+    window->tabifyDockWidget(notesDock, equationsDock);
+    accuracyDock.raise();
     QObject::connect(doc, &SceneDocument::solutionChanged, notes,
                      [doc, notes] { notes->setNote(QString::fromStdString(doc->scene().note)); });
     // presenting: the equations are not needed, the notes only when the scene has one
@@ -143,13 +140,12 @@ void installInstruments(MainWindow* window) {
                              equations->html();
                      });
 
-    if (auto* view = window->menuBar()->findChild<QMenu*>(QStringLiteral("viewMenu"))) {
-        QAction* first = view->actions().value(0);
-        view->insertAction(first, notesDock->toggleViewAction());
-        view->insertAction(first, equationsDock->toggleViewAction());
-        view->addSeparator();
-        view->addMenu(new VectorsMenu(window));
-    }
+    QMenu* view = &viewMenu;
+    QAction* first = view->actions().value(0);
+    view->insertAction(first, notesDock->toggleViewAction());
+    view->insertAction(first, equationsDock->toggleViewAction());
+    view->addSeparator();
+    view->addMenu(new VectorsMenu(window));
     auto* compare = new CompareMenu(window);
     QList<QAction*> menus = window->menuBar()->actions();
     window->menuBar()->insertMenu(menus.isEmpty() ? nullptr : menus.last(), compare);

@@ -1,6 +1,8 @@
 #pragma once
 #include <QMenu>
 
+class QDockWidget;
+
 namespace chaplygin::ui {
 
 class MainWindow;
@@ -39,7 +41,8 @@ class CompareMenu : public QMenu {
 };
 
 /// Adds the teaching instruments to a window: the Notes and Equations docks (right, tabbed
-/// with the Accuracy dock), View > Vectors and the Compare menu. Called once, by the window.
-void installInstruments(MainWindow* window);
+/// with the Accuracy dock), View > Vectors and the Compare menu. Called once, by the window, with
+/// the View menu it extends and the Accuracy dock it tabs with.
+void installInstruments(MainWindow* window, QMenu& viewMenu, QDockWidget& accuracyDock);
 
 } // namespace chaplygin::ui

@@ -127,8 +127,8 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     };
     connect(m_parameters, &ParametersPanel::sceneEdited, this, editParameters);
     connect(m_sweep, &SweepPanel::sceneEdited, this, editParameters);
-    installInstruments(this);
-    installPerturbationControls(this);
+    installInstruments(this, *m_viewMenu, *m_docks.accuracy);
+    installPerturbationControls(this, *m_viewMenu, *m_vakonomicAction, *m_docks.parameters);
 
     if (!m_useSettings)
         resize(1280, 800);
@@ -137,16 +137,15 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     if (firstStart)
         balanceDocks();
     auto* balancer = new DockBalancer(this, m_docks, firstStart, defaultLayout);
-    if (auto* view = menuBar()->findChild<QMenu*>(QStringLiteral("viewMenu"))) {
-        // after the docks' toggles
-        auto* reset = new QAction(tr("&Reset layout"), view);
-        reset->setObjectName(QStringLiteral("resetLayoutAction"));
-        connect(reset, &QAction::triggered, balancer, &DockBalancer::resetLayout);
-        const QList<QAction*> items = view->actions();
-        auto separator = std::find_if(items.begin(), items.end(),
-                                      [](const QAction* a) { return a->isSeparator(); });
-        view->insertAction(separator == items.end() ? nullptr : *separator, reset);
-    }
+    QMenu* view = m_viewMenu;
+    // after the docks' toggles
+    auto* reset = new QAction(tr("&Reset layout"), view);
+    reset->setObjectName(QStringLiteral("resetLayoutAction"));
+    connect(reset, &QAction::triggered, balancer, &DockBalancer::resetLayout);
+    const QList<QAction*> items = view->actions();
+    auto separator =
+        std::find_if(items.begin(), items.end(), [](const QAction* a) { return a->isSeparator(); });
+    view->insertAction(separator == items.end() ? nullptr : *separator, reset);
     loadScene(presetScene("sinusoid"));
 }
 
@@ -333,10 +332,10 @@ bool MainWindow::loadGalleryEntry(const QString& name) {
     return true;
 }
 
-void MainWindow::onDocumentError(const QString& error) {
+void MainWindow::onDocumentError(const SceneError& error) {
     if (!error.isEmpty()) {
-        m_parameters->showError(error);
-        statusBar()->showMessage(error, 8000);
+        m_parameters->showError(error.message);
+        statusBar()->showMessage(error.message, 8000);
     }
 }
 
@@ -390,7 +389,7 @@ bool MainWindow::saveFile(const QString& path) {
 bool MainWindow::exportPlotsTo(const QString& dir, const QStringList& formats) {
     m_document->flush();
     try {
-        exportPlots(*m_document->solution(), dir, formats, PinSet::of(m_document));
+        exportPlots(*m_document->solution(), dir, formats, m_document->pins());
     } catch (const std::exception& e) {
         showFileError(QString::fromStdString(e.what()));
         return false;

@@ -20,6 +20,7 @@ namespace chaplygin::ui {
 class AccuracyReadout;
 class BodyDisplayMenu;
 struct CanvasStyle;
+struct SceneError;
 class ElidedLabel;
 class ExportReport;
 class HelpWindow;
@@ -138,7 +139,7 @@ class MainWindow : public QMainWindow {
     /// The panels show a scene the document has applied.
     void showScene(const Scene& scene, bool pathChanged);
     void onSolutionChanged();
-    void onDocumentError(const QString& error);
+    void onDocumentError(const SceneError& error);
     void onTime(double t);
     void choosePreset(const QString& name);
     /// A typed path is a new scene fitted to the view; a drawn one a new scene in the view it
@@ -173,6 +174,8 @@ class MainWindow : public QMainWindow {
     Docks m_docks;
     std::optional<Scene> m_noteScene; // the scene the accuracy dock's note is about
     QMenu* m_recentMenu = nullptr;
+    QMenu* m_viewMenu = nullptr;
+    QAction* m_vakonomicAction = nullptr; // View > Genuine vakonomic body
     QAction* m_followAction = nullptr;
     ElidedLabel* m_status;
     ExportReport* m_exportReport;

@@ -89,7 +89,7 @@ void MainWindow::buildMenus() {
     edit->addAction(undo);
     edit->addAction(redo);
 
-    QMenu* view = menuBar()->addMenu(tr("&View"));
+    QMenu* view = m_viewMenu = menuBar()->addMenu(tr("&View"));
     view->setObjectName(QStringLiteral("viewMenu"));
     view->addAction(m_docks.path->toggleViewAction());
     view->addAction(m_docks.parameters->toggleViewAction());
@@ -110,7 +110,7 @@ void MainWindow::buildMenus() {
     m_followAction->setShortcut(QKeySequence(tr("Ctrl+B")));
     connect(m_followAction, &QAction::toggled, m_canvas, &SceneCanvas::setFollowBody);
     connect(m_canvas, &SceneCanvas::followBodyChanged, m_followAction, &QAction::setChecked);
-    QAction* vakonomic = view->addAction(tr("Genuine &vakonomic body"));
+    QAction* vakonomic = m_vakonomicAction = view->addAction(tr("Genuine &vakonomic body"));
     vakonomic->setObjectName(QStringLiteral("showVakonomicAction"));
     vakonomic->setCheckable(true);
     vakonomic->setChecked(m_canvas->showsVakonomic());

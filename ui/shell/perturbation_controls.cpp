@@ -14,7 +14,8 @@
 
 namespace chaplygin::ui {
 
-void installPerturbationControls(MainWindow* window) {
+void installPerturbationControls(MainWindow* window, QMenu& viewMenu, QAction& showVakonomic,
+                                 QDockWidget& parametersDock) {
     SceneDocument* doc = window->document();
     SceneCanvas* canvas = window->canvas();
     auto* panel = new PerturbationPanel;
@@ -27,21 +28,18 @@ void installPerturbationControls(MainWindow* window) {
     scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     scroll->setWidget(panel);
     dock->setWidget(scroll);
-    auto* parameters = window->findChild<QDockWidget*>(QStringLiteral("parametersDock"));
     window->addDockWidget(Qt::LeftDockWidgetArea, dock);
-    if (parameters) {
-        window->tabifyDockWidget(parameters, dock);
-        parameters->raise();
-    }
+    window->tabifyDockWidget(&parametersDock, dock);
+    parametersDock.raise();
     window->presentation()->addHiddenDock(dock);
     // the panel shows the document's scene after every recompute, an undo among them
     QObject::connect(doc, &SceneDocument::solutionChanged, panel, [doc, panel] {
         panel->setScene(doc->scene());
         panel->showError({});
     });
-    QObject::connect(doc, &SceneDocument::errorChanged, panel, [doc, panel](const QString& e) {
+    QObject::connect(doc, &SceneDocument::errorChanged, panel, [doc, panel](const SceneError& e) {
         panel->setScene(doc->scene());
-        panel->showError(e.contains(QStringLiteral("perturbation")) ? e : QString());
+        panel->showError(e.part == SceneError::Part::Perturbation ? e.message : QString());
     });
     QObject::connect(panel, &PerturbationPanel::sceneEdited, window,
                      [window](const Scene& scene, const QString& text, const QString& key) {
@@ -58,33 +56,28 @@ void installPerturbationControls(MainWindow* window) {
                          window->editScene(next, MainWindow::tr("Push the body"));
                      });
 
-    if (auto* view = window->menuBar()->findChild<QMenu*>(QStringLiteral("viewMenu"))) {
-        QAction* vakonomic = nullptr;
-        for (QAction* a : view->actions())
-            if (a->objectName() == QStringLiteral("showVakonomicAction"))
-                vakonomic = a;
-        const QList<QAction*> actions = view->actions();
-        const qsizetype at = actions.indexOf(vakonomic);
-        QAction* before = at >= 0 ? actions.value(at + 1) : nullptr;
-        QAction* open = new QAction(MainWindow::tr("Pushed body, &open loop"), view);
-        open->setObjectName(QStringLiteral("showOpenLoopAction"));
-        open->setCheckable(true);
-        open->setChecked(canvas->showsOpenLoop());
-        open->setToolTip(MainWindow::tr("With a perturbation: the body that keeps the nominal "
-                                        "\u03bb(t) after the push"));
-        QObject::connect(open, &QAction::toggled, canvas, &SceneCanvas::setShowOpenLoop);
-        QAction* closed = new QAction(MainWindow::tr("Pushed body, &closed loop"), view);
-        closed->setObjectName(QStringLiteral("showClosedLoopAction"));
-        closed->setCheckable(true);
-        closed->setChecked(canvas->showsClosedLoop());
-        closed->setToolTip(
-            MainWindow::tr("With a perturbation: the body the feedback steers back to the path"));
-        QObject::connect(closed, &QAction::toggled, canvas, &SceneCanvas::setShowClosedLoop);
-        view->insertAction(before, open);
-        view->insertAction(before, closed);
-        QAction* first = view->actions().value(0);
-        view->insertAction(first, dock->toggleViewAction());
-    }
+    QMenu* view = &viewMenu;
+    const QList<QAction*> actions = view->actions();
+    const qsizetype at = actions.indexOf(&showVakonomic);
+    QAction* before = at >= 0 ? actions.value(at + 1) : nullptr;
+    QAction* open = new QAction(MainWindow::tr("Pushed body, &open loop"), view);
+    open->setObjectName(QStringLiteral("showOpenLoopAction"));
+    open->setCheckable(true);
+    open->setChecked(canvas->showsOpenLoop());
+    open->setToolTip(MainWindow::tr("With a perturbation: the body that keeps the nominal "
+                                    "\u03bb(t) after the push"));
+    QObject::connect(open, &QAction::toggled, canvas, &SceneCanvas::setShowOpenLoop);
+    QAction* closed = new QAction(MainWindow::tr("Pushed body, &closed loop"), view);
+    closed->setObjectName(QStringLiteral("showClosedLoopAction"));
+    closed->setCheckable(true);
+    closed->setChecked(canvas->showsClosedLoop());
+    closed->setToolTip(
+        MainWindow::tr("With a perturbation: the body the feedback steers back to the path"));
+    QObject::connect(closed, &QAction::toggled, canvas, &SceneCanvas::setShowClosedLoop);
+    view->insertAction(before, open);
+    view->insertAction(before, closed);
+    QAction* first = view->actions().value(0);
+    view->insertAction(first, dock->toggleViewAction());
 }
 
 } // namespace chaplygin::ui

@@ -418,7 +418,7 @@ void TestFraming::pinKeyStaysClearOfTheDrawHint() {
     scene.pins.push_back(pin);
     m_window->loadScene(scene);
     m_window->document()->flush();
-    QCOMPARE(PinSet::of(m_window->document())->count(), 2);
+    QCOMPARE(m_window->document()->pins()->count(), 2);
     SceneCanvas* canvas = m_window->canvas();
     for (QSize size : {QSize(1024, 768), QSize(1280, 800), QSize(1920, 1080)}) {
         m_window->resize(size);

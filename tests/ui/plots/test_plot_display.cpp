@@ -92,7 +92,7 @@ void TestPlotDisplay::plotContextMenuExports() {
     QCustomPlot* plot = m_window->plotsPanel()->plot(2);
     const QSize shown = plot->size();
     QCOMPARE(plot->contextMenuPolicy(), Qt::CustomContextMenu);
-    QMenu* menu = plotExportMenu(plot);
+    QMenu* menu = m_window->plotsPanel()->contextMenu(2);
     QVERIFY(menu && !menu->actions().isEmpty());
     test::DialogScript dialog;
     dialog.install();
@@ -114,7 +114,7 @@ void TestPlotDisplay::plotContextMenuExports() {
     }
     QVERIFY(!QFile::exists(m_dir.filePath(QStringLiteral("x.txt"))));
     // the Methods diagram has the same menu
-    QVERIFY(plotExportMenu(m_window->methodsPanel()->plot()));
+    QVERIFY(m_window->methodsPanel()->plotMenu());
 }
 
 void TestPlotDisplay::plotTitleDoesNotOverlapTicks() {

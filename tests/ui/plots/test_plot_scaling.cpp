@@ -155,9 +155,9 @@ void TestPlotScaling::fitAllCurvesShowsEveryCurveAndIsUndone() {
     PlotsPanel* plots = m_window->plotsPanel();
     const Solution& s = *m_window->document()->solution();
     QCustomPlot* psi = plots->plot(0);
-    QAction* fitAll = fitAllAction(psi);
+    QAction* fitAll = plots->fitAllAction(0);
     QVERIFY(fitAll && fitAll->isCheckable() && !fitAll->isChecked());
-    QVERIFY(plotExportMenu(psi)->actions().contains(fitAll)); // in the plot's context menu
+    QVERIFY(plots->contextMenu(0)->actions().contains(fitAll)); // in the plot's context menu
     fitAll->setChecked(true);
     plots->replotNow();
     const QCPRange all = psi->axisRect()->axis(QCPAxis::atLeft)->range();
@@ -174,7 +174,7 @@ void TestPlotScaling::fitAllCurvesShowsEveryCurveAndIsUndone() {
     QVERIFY(clipMarks(*psi->axisRect()).isEmpty());
     QVERIFY(psi->axisRect()->axis(QCPAxis::atLeft)->range().lower <=
             extentOf(*m_window->document()->solution(), vakPsi).lo);
-    QVERIFY(!fitAllAction(plots->plot(2))->isChecked());
+    QVERIFY(!plots->fitAllAction(2)->isChecked());
     QVERIFY(!clipMarks(*plots->plot(2)->axisRect()).isEmpty());
     fitAll->setChecked(false);
     checkFollows(psi->axisRect()->axis(QCPAxis::atLeft)->range(),
@@ -191,7 +191,7 @@ void TestPlotScaling::pinnedRunsSetTheRangeToo() {
     scene.pins.push_back(pin);
     m_window->loadScene(scene);
     m_window->document()->flush();
-    PinSet* pins = PinSet::of(m_window->document());
+    PinSet* pins = m_window->document()->pins();
     QCOMPARE(pins->count(), 1);
     const Solution& pinned = *pins->run(0).solution;
     Extent both = extentOf(*m_window->document()->solution(), controlledPsi);

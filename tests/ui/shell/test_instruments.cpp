@@ -288,7 +288,7 @@ void TestInstruments::pinsUpToFiveOnCanvasAndPlots() {
     QVERIFY(!pin->isEnabled()); // five is the most
     pin->trigger();
     QCOMPARE(int(m_window->document()->scene().pins.size()), 5);
-    PinSet* pins = PinSet::of(m_window->document());
+    PinSet* pins = m_window->document()->pins();
     QCOMPARE(pins->count(), 5);
     QCOMPARE(pins->label(0), QStringLiteral("b = 1 m"));
     QCOMPARE(pins->label(1), QStringLiteral("b = 0.6 m"));
@@ -358,18 +358,18 @@ void TestInstruments::pinsSavedLoadedClearedAndUndone() {
     QCOMPARE(onDisk.pins[0].system.params.at("b"), 0.5);
     compareMenu()->clearAction()->trigger();
     m_window->document()->flush();
-    QCOMPARE(PinSet::of(m_window->document())->count(), 0);
+    QCOMPARE(m_window->document()->pins()->count(), 0);
     QVERIFY(!compareMenu()->clearAction()->isEnabled());
     // clearing is one undo step
     m_window->undoStack()->undo();
     m_window->document()->flush();
-    QCOMPARE(PinSet::of(m_window->document())->count(), 3);
+    QCOMPARE(m_window->document()->pins()->count(), 3);
     m_window->undoStack()->redo();
     m_window->document()->flush();
-    QCOMPARE(PinSet::of(m_window->document())->count(), 0);
+    QCOMPARE(m_window->document()->pins()->count(), 0);
     // loading recomputes them
     QVERIFY(m_window->openFile(path));
-    PinSet* pins = PinSet::of(m_window->document());
+    PinSet* pins = m_window->document()->pins();
     QCOMPARE(pins->count(), 3);
     QVERIFY(pins->run(0).solution);
     QCOMPARE(pins->run(0).solution->system().b, 0.5);
@@ -383,7 +383,7 @@ void TestInstruments::pinsSavedLoadedClearedAndUndone() {
     QVERIFY(!m_window->openFile(bad));
     QVERIFY2(m_window->lastFileError().contains(QStringLiteral("/pins/1")),
              qPrintable(m_window->lastFileError()));
-    QCOMPARE(PinSet::of(m_window->document())->count(), 3);
+    QCOMPARE(m_window->document()->pins()->count(), 3);
 }
 
 void TestInstruments::notesEditedSavedLoadedAndShown() {

@@ -321,7 +321,7 @@ void TestRoughEdges::exportedPlotsShowThePinnedRuns() {
     // three runs pinned at b = 0.5, 1 and 2 m: the Plots dock shows them, and so do the files
     QVERIFY(m_window->openFile(QStringLiteral(CHAPLYGIN_SOURCE_DIR) +
                                QStringLiteral("/docs/images/scenes/pins-three-b.json")));
-    PinSet* pins = PinSet::of(m_window->document());
+    PinSet* pins = m_window->document()->pins();
     QVERIFY(pins->count() > 0);
     const QString dir = m_dir.filePath(QStringLiteral("pinned"));
     QVERIFY(m_window->exportPlotsTo(dir, {QStringLiteral("svg")}));
@@ -330,7 +330,7 @@ void TestRoughEdges::exportedPlotsShowThePinnedRuns() {
         QVERIFY2(svg.open(QIODevice::ReadOnly), stem);
         const QString text = QString::fromUtf8(svg.readAll());
         for (int i = 0; i < pins->count(); ++i)
-            QVERIFY2(text.contains(PinSet::of(m_window->document())->label(i).toHtmlEscaped()),
+            QVERIFY2(text.contains(m_window->document()->pins()->label(i).toHtmlEscaped()),
                      qPrintable(QStringLiteral("%1: %2").arg(QLatin1String(stem), pins->label(i))));
     }
 }
