@@ -1,27 +1,37 @@
 #include "canvas/scene_canvas.h"
 
 #include "canvas/body_painter.h"
+#include "canvas/draw_tool.h"
+#include "canvas/edit_points_tool.h"
+#include "canvas/pan_tool.h"
 #include "document/scene_document.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QWheelEvent>
 
+#include <QLineF>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace chaplygin::ui {
 
 namespace {
 
-constexpr double kStrokeSpacingPx = 10;    // drawn points closer than this are dropped
-constexpr double kVertexPickPx = 8;        // how near a click must be to grab a vertex
 constexpr int kTopPx = 26, kLegendPx = 78; // the time line and the legend, before the scale
 
 } // namespace
 
 SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
-    : QWidget(parent), m_document(document) {
+    : QWidget(parent), m_document(document), m_view(*this),
+      m_drawTool(new DrawTool(m_view, m_look.style, this)),
+      m_editTool(new EditPointsTool(
+          m_view, m_look.style, [this] { return drawnPoints(); }, this)),
+      m_pushTool(new PushTool(
+          m_view, m_look.style, [this](QPointF p) { return grabAt(p); }, this)),
+      m_panTool(new PanTool(m_view, this)) {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setAutoFillBackground(false);
@@ -33,53 +43,57 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
     setAccessibleDescription(tr("The animation: the prescribed path, the controlled body and the "
                                 "free motion from the same start"));
     connect(document, &SceneDocument::solutionChanged, this, &SceneCanvas::onSolutionChanged);
-}
-
-QTransform SceneCanvas::worldTransform() const {
-    return worldTransformAt(m_centre);
-}
-
-QTransform SceneCanvas::worldTransformAt(QPointF centre) const {
-    QTransform t;
-    t.translate(width() / 2.0, height() / 2.0);
-    t.scale(m_scale, -m_scale);
-    t.translate(-centre.x(), -centre.y());
-    return t;
+    for (CanvasTool* tool : allTools())
+        connect(tool, &CanvasTool::changed, this, qOverload<>(&QWidget::update));
+    // a stroke drawn or a point moved keeps the view where the path stays in it
+    connect(m_drawTool, &DrawTool::pathDrawn, this, [this](const auto& points) {
+        m_view.setKeepViewForNextPath(true);
+        emit pathDrawn(points);
+    });
+    connect(m_editTool, &EditPointsTool::pointsEdited, this, [this](const auto& points) {
+        m_view.setKeepViewForNextPath(true);
+        emit pointsEdited(points);
+    });
+    connect(m_pushTool, &PushTool::pushDragged, this, &SceneCanvas::pushDragged);
+    connect(m_panTool, &PanTool::panned, this, [this] {
+        setFollowBody(false);
+        update();
+    });
 }
 
 const CanvasCurves& SceneCanvas::curves() const {
-    m_curves.update(m_document->solution(), m_scale * devicePixelRatioF());
+    m_curves.update(m_document->solution(), m_view.scale() * devicePixelRatioF());
     return m_curves;
 }
 
 QPointF SceneCanvas::toPixel(QPointF world) const {
-    return worldTransform().map(world);
+    return m_view.toPixel(world);
 }
 
 QPointF SceneCanvas::toWorld(QPointF pixel) const {
-    return worldTransform().inverted().map(pixel);
+    return m_view.toWorld(pixel);
 }
 
 void SceneCanvas::onSolutionChanged() {
     // a new path is fitted, but a stroke the user drew or a point moved keeps the view where
     // the path stays in it; a parameter change keeps the view steady while a slider moves
-    if (m_document->solution()->path() != m_fittedPath) {
-        if (m_keepView)
+    if (m_document->solution()->path() != m_view.fittedPath()) {
+        if (m_view.keepsViewForNextPath())
             keepPathInView();
-        else if (m_autoFit)
-            m_fitAll ? fitEverything() : fitScene();
-        m_keepView = false;
+        else if (m_view.autoFit())
+            m_view.fitsEverything() ? fitEverything() : fitScene();
+        m_view.setKeepViewForNextPath(false);
     }
-    if (m_follow)
+    if (m_view.follows())
         centreOnBody();
     update();
 }
 
 void SceneCanvas::setTime(double t) {
     double from = m_time;
-    QPointF centre = m_centre;
+    QPointF centre = m_view.centre();
     m_time = t;
-    if (m_follow)
+    if (m_view.follows())
         centreOnBody();
     updateMoving(from, centre);
 }
@@ -89,9 +103,7 @@ void SceneCanvas::centreOnBody() {
     if (!solution)
         return;
     MotionSample m = solution->at(std::clamp(m_time, 0.0, solution->tEnd()));
-    // on the pixel grid, so that the view moves by whole pixels and the static layer is shifted
-    // rather than drawn again
-    m_centre = QPointF(std::round(m.x * m_scale) / m_scale, std::round(m.y * m_scale) / m_scale);
+    m_view.centreOn({m.x, m.y});
 }
 
 QRectF SceneCanvas::pathBounds() const {
@@ -121,13 +133,14 @@ QRectF SceneCanvas::pathBounds() const {
 BodyDisplay SceneCanvas::shownBodyDisplay() const {
     const auto& solution = m_document->solution();
     if (!solution)
-        return m_style.body == BodyDisplay::Automatic ? BodyDisplay::ToScale : m_style.body;
-    return ui::shownBodyDisplay(m_style.body, solution->scene().system, solution->system(),
+        return m_look.style.body == BodyDisplay::Automatic ? BodyDisplay::ToScale
+                                                           : m_look.style.body;
+    return ui::shownBodyDisplay(m_look.style.body, solution->scene().system, solution->system(),
                                 pathBounds());
 }
 
 BodyLook SceneCanvas::bodyLook() const {
-    return {shownBodyDisplay(), m_style.bodyOpacity, m_style.lineScale};
+    return {shownBodyDisplay(), m_look.style.bodyOpacity, m_look.style.lineScale};
 }
 
 QRectF SceneCanvas::sceneBounds() const {
@@ -150,7 +163,7 @@ QRectF SceneCanvas::sceneBounds() const {
     extend(s.pathX, s.pathY);
     extend(s.x, s.y);
     extend(s.freeX, s.freeY);
-    if (m_showVakonomic)
+    if (m_look.vakonomic)
         extend(s.vakX, s.vakY);
     if (drawsOpenLoop())
         extend(s.pertX, s.pertY);
@@ -166,19 +179,20 @@ QRectF SceneCanvas::sceneBounds() const {
 }
 
 int SceneCanvas::topBandPx() const {
-    return int(std::lround(kTopPx * m_style.lineScale * (m_style.largeTime ? 1.7 : 1.0)));
+    return int(std::lround(kTopPx * m_look.style.lineScale * (m_look.style.largeTime ? 1.7 : 1.0)));
 }
 
 bool SceneCanvas::compactLegend() const {
     // presenting without pushed bodies: the path and the vakonomic body in a second column
-    return m_style.largeTime && !drawsOpenLoop() && !drawsClosedLoop();
+    return m_look.style.largeTime && !drawsOpenLoop() && !drawsClosedLoop();
 }
 
 int SceneCanvas::legendBandPx() const {
-    if (!m_legendVisible)
+    if (!m_look.legend)
         return 0;
     // four rows of 16 px, or two in the compact legend, and 14 px around them
-    return int(std::lround((compactLegend() ? kLegendPx - 32 : kLegendPx) * m_style.lineScale));
+    return int(
+        std::lround((compactLegend() ? kLegendPx - 32 : kLegendPx) * m_look.style.lineScale));
 }
 
 QRectF SceneCanvas::drawingArea() const {
@@ -186,48 +200,34 @@ QRectF SceneCanvas::drawingArea() const {
 }
 
 void SceneCanvas::setCanvasStyle(const CanvasStyle& style) {
-    m_style = style.sanitized();
-    m_vectors.setLineScale(m_style.lineScale);
+    m_look.style = style.sanitized();
+    m_vectors.setLineScale(m_look.style.lineScale);
     refit();
     update();
 }
 
 CanvasLook SceneCanvas::look() const {
-    return {.style = m_style,
-            .vakonomic = m_showVakonomic,
-            .openLoop = m_showOpenLoop,
-            .closedLoop = m_showClosedLoop,
-            .legend = m_legendVisible};
+    return m_look;
 }
 
 void SceneCanvas::setLook(const CanvasLook& look) {
-    m_showVakonomic = look.vakonomic;
-    m_showOpenLoop = look.openLoop;
-    m_showClosedLoop = look.closedLoop;
-    m_legendVisible = look.legend;
+    m_look.vakonomic = look.vakonomic;
+    m_look.openLoop = look.openLoop;
+    m_look.closedLoop = look.closedLoop;
+    m_look.legend = look.legend;
     setCanvasStyle(look.style);
 }
 
 void SceneCanvas::setLegendVisible(bool visible) {
-    m_legendVisible = visible;
+    m_look.legend = visible;
     refit();
     update();
 }
 
 void SceneCanvas::frame(const QRectF& box, double margin, double minScale) {
     // the scene goes between the time line at the top and the legend at the bottom
-    const QRectF area = drawingArea();
-    const double w = std::max(area.width(), 100.0), h = std::max(area.height(), 100.0);
-    const double room = std::min(w, h) * 0.4; // a margin never takes more than this
-    const double ww = w - 2 * std::min(margin, room), hh = h - 2 * std::min(margin, room);
-    const double fit =
-        std::min(ww / std::max(box.width(), 1e-9), hh / std::max(box.height(), 1e-9));
-    // a view far from the origin (a path at 1e308 m) keeps scale times its centre finite
-    const double far = std::max({std::abs(box.center().x()), std::abs(box.center().y()), 1.0});
-    m_scale = std::clamp(std::min(std::max(fit, minScale), 1e300 / far), 1e-3, 1e5);
-    m_centre = box.center() + QPointF(0, (area.center().y() - height() / 2.0) / m_scale);
-    m_fittedPath = m_document->solution()->path();
-    m_autoFit = true;
+    m_view.frame(box, drawingArea(), margin, minScale);
+    m_view.setFittedPath(m_document->solution()->path());
     setFollowBody(false);
     update();
 }
@@ -237,12 +237,12 @@ void SceneCanvas::fitScene() {
     const QRectF path = pathBounds();
     if (!solution || path.isNull())
         return;
-    m_fitAll = false;
+    m_view.setFitsEverything(false);
     // the controlled body around the path: its extent [m] to scale or as an outline, the
     // marker's pixels
     const bool marker = shownBodyDisplay() == BodyDisplay::Marker;
     const double body = marker ? 0 : bodyExtent(solution->scene().system, solution->system());
-    const double markerPx = marker ? 2.5 * kMarkerRadiusPx * m_style.lineScale : 0;
+    const double markerPx = marker ? 2.5 * kMarkerRadiusPx * m_look.style.lineScale : 0;
     const QRectF area = drawingArea();
     const double w = std::max(area.width(), 100.0), h = std::max(area.height(), 100.0);
     // a margin of 5 % of the drawing area on each side
@@ -259,16 +259,16 @@ void SceneCanvas::fitEverything() {
     const QRectF box = sceneBounds();
     if (!solution || box.isNull())
         return;
-    m_fitAll = true;
+    m_view.setFitsEverything(true);
     const QRectF area = drawingArea();
     frame(box, 0.025 * std::min(std::max(area.width(), 100.0), std::max(area.height(), 100.0)), 0);
 }
 
 void SceneCanvas::refit() {
-    if (m_follow)
+    if (m_view.follows())
         centreOnBody();
-    else if (m_autoFit)
-        m_fitAll ? fitEverything() : fitScene();
+    else if (m_view.autoFit())
+        m_view.fitsEverything() ? fitEverything() : fitScene();
 }
 
 void SceneCanvas::keepPathInView() {
@@ -276,10 +276,10 @@ void SceneCanvas::keepPathInView() {
     const QRectF path = pathBounds();
     if (!solution || path.isNull())
         return;
-    m_fittedPath = solution->path();
+    m_view.setFittedPath(solution->path());
     const QRectF pixels = QRectF(toPixel(path.topLeft()), toPixel(path.bottomRight())).normalized();
-    if (m_follow || drawingArea().adjusted(-1, -1, 1, 1).contains(pixels)) {
-        m_autoFit = false; // the view the user drew in: a resize does not refit it either
+    if (m_view.follows() || drawingArea().adjusted(-1, -1, 1, 1).contains(pixels)) {
+        m_view.setAutoFit(false); // the view the user drew in: a resize does not refit it either
         update();
         return;
     }
@@ -287,63 +287,82 @@ void SceneCanvas::keepPathInView() {
 }
 
 void SceneCanvas::setFollowBody(bool follow) {
-    if (follow == m_follow)
+    if (!m_view.setFollows(follow))
         return;
-    m_follow = follow;
-    if (m_follow) {
-        m_autoFit = false;
+    if (follow)
         centreOnBody();
-    }
-    emit followBodyChanged(m_follow);
+    emit followBodyChanged(follow);
     update();
 }
 
 void SceneCanvas::setDrawMode(bool on) {
     m_drawMode = on;
-    m_stroke.clear();
+    m_drawTool->cancel();
     setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
     update();
 }
 
+std::array<CanvasTool*, 4> SceneCanvas::allTools() const {
+    return {m_editTool, m_drawTool, m_pushTool, m_panTool};
+}
+
+std::vector<CanvasTool*> SceneCanvas::tools() const {
+    if (m_drawMode)
+        return {m_editTool, m_drawTool, m_panTool};
+    return {m_pushTool, m_panTool};
+}
+
+void SceneCanvas::updateCursor() {
+    for (CanvasTool* tool : allTools())
+        if (tool->active()) {
+            setCursor(tool->cursor());
+            return;
+        }
+    setCursor(m_drawMode ? Qt::CrossCursor : Qt::ArrowCursor);
+}
+
 void SceneCanvas::setShowVakonomic(bool show) {
-    m_showVakonomic = show;
+    m_look.vakonomic = show;
     update();
 }
 
 void SceneCanvas::setShowOpenLoop(bool show) {
-    m_showOpenLoop = show;
+    m_look.openLoop = show;
     update();
 }
 
 void SceneCanvas::setShowClosedLoop(bool show) {
-    m_showClosedLoop = show;
+    m_look.closedLoop = show;
     update();
 }
 
 bool SceneCanvas::drawsOpenLoop() const {
-    return m_showOpenLoop && m_document->series().perturbed;
+    return m_look.openLoop && m_document->series().perturbed;
 }
 
 bool SceneCanvas::drawsClosedLoop() const {
-    return m_showClosedLoop && m_document->series().perturbed;
+    return m_look.closedLoop && m_document->series().perturbed;
 }
 
-bool SceneCanvas::onControlledBody(QPointF pixel) const {
+PushTool::Grab SceneCanvas::grabAt(QPointF pixel) const {
     const auto& solution = m_document->solution();
     if (!solution)
-        return false;
-    const MotionSample m = solution->at(std::clamp(m_time, 0.0, solution->tEnd()));
+        return {};
+    const double t = std::clamp(m_time, 0.0, solution->tEnd());
+    const MotionSample m = solution->at(t);
     const BodyLook look = bodyLook();
-    const QRectF box = BodySprites::pixelBounds(worldTransform(), m_scale, solution->scene().system,
-                                                solution->system(), {m.x, m.y, m.phi}, look);
+    const QRectF box =
+        BodySprites::pixelBounds(worldTransform(), m_view.scale(), solution->scene().system,
+                                 solution->system(), {m.x, m.y, m.phi}, look);
     // the body's box, at least a finger's width around P
     const QPointF p = toPixel({m.x, m.y});
-    return box.contains(pixel) || QLineF(p, pixel).length() <= 12 * m_style.lineScale;
+    if (!box.contains(pixel) && QLineF(p, pixel).length() > 12 * m_look.style.lineScale)
+        return {};
+    return {.onBody = true, .t = t, .phi = m.phi};
 }
 
 void SceneCanvas::zoomBy(double factor) {
-    m_autoFit = false;
-    m_scale = std::clamp(m_scale * factor, 1e-3, 1e5);
+    m_view.zoomBy(factor);
     update();
 }
 
@@ -358,122 +377,35 @@ std::vector<std::pair<double, double>> SceneCanvas::drawnPoints() const {
     return solution->scene().path.points;
 }
 
-int SceneCanvas::vertexAt(QPointF pos) const {
-    const auto points = drawnPoints();
-    int best = -1;
-    double bestDistance = kVertexPickPx;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        double d = QLineF(toPixel({points[i].first, points[i].second}), pos).length();
-        if (d <= bestDistance) {
-            bestDistance = d;
-            best = int(i);
-        }
-    }
-    return best;
-}
-
 void SceneCanvas::wheelEvent(QWheelEvent* e) {
     // zoom about the point under the cursor
-    QPointF pos = e->position();
-    QPointF before = toWorld(pos);
-    zoomBy(std::pow(1.0015, e->angleDelta().y()));
-    QPointF after = toWorld(pos);
-    m_centre += before - after;
+    m_view.zoomAbout(e->position(), std::pow(1.0015, e->angleDelta().y()));
     setFollowBody(false);
     update();
     e->accept();
 }
 
 void SceneCanvas::mousePressEvent(QMouseEvent* e) {
-    m_lastMouse = e->position();
-    int vertex = m_drawMode ? vertexAt(e->position()) : -1;
-    if (vertex >= 0 && e->button() == Qt::LeftButton) {
-        m_dragVertex = vertex;
-        m_editPoints = drawnPoints();
-    } else if (vertex >= 0 && e->button() == Qt::RightButton) {
-        auto points = drawnPoints();
-        if (points.size() > 2) {
-            points.erase(points.begin() + vertex);
-            emit pointsEdited(points);
-        }
-    } else if (m_drawMode && e->button() == Qt::LeftButton) {
-        m_stroke = {toWorld(e->position())};
-    } else if (e->button() == Qt::LeftButton && onControlledBody(e->position())) {
-        // grab and push (docs/physics.md §9): the drag's sideways part is the push
-        const auto& solution = m_document->solution();
-        m_pushing = true;
-        m_pushTime = std::clamp(m_time, 0.0, solution->tEnd());
-        m_pushPhi = solution->at(m_pushTime).phi;
-        m_pushFrom = toWorld(e->position());
-        m_pushTo = e->position();
-        setCursor(Qt::SizeAllCursor);
-    } else {
-        m_panning = true;
-        setCursor(Qt::ClosedHandCursor);
-    }
+    for (CanvasTool* tool : tools())
+        if (tool->press(*e))
+            break;
+    updateCursor();
     e->accept();
 }
 
 void SceneCanvas::mouseMoveEvent(QMouseEvent* e) {
-    if (m_dragVertex >= 0) {
-        QPointF w = toWorld(e->position());
-        m_editPoints[std::size_t(m_dragVertex)] = {w.x(), w.y()};
-        update();
-    } else if (m_drawMode && !m_stroke.empty() && (e->buttons() & Qt::LeftButton)) {
-        if (QLineF(toPixel(m_stroke.back()), e->position()).length() >= kStrokeSpacingPx) {
-            m_stroke.push_back(toWorld(e->position()));
-            update();
-        }
-    } else if (m_pushing) {
-        m_pushTo = e->position();
-        update();
-    } else if (m_panning) {
-        QPointF d = e->position() - m_lastMouse;
-        m_centre -= QPointF(d.x() / m_scale, -d.y() / m_scale);
-        m_lastMouse = e->position();
-        m_autoFit = false;
-        setFollowBody(false);
-        update();
-    }
+    // the gestures under way in the order of their priority: editing a point, a stroke, a push,
+    // panning
+    for (CanvasTool* tool : allTools())
+        if (tool->active() && tool->move(*e))
+            return;
 }
 
 void SceneCanvas::mouseReleaseEvent(QMouseEvent* e) {
-    if (m_dragVertex >= 0 && e->button() == Qt::LeftButton) {
-        QPointF w = toWorld(e->position());
-        m_editPoints[std::size_t(m_dragVertex)] = {w.x(), w.y()};
-        m_dragVertex = -1;
-        update();
-        m_keepView = true;
-        emit pointsEdited(m_editPoints);
-        return;
-    }
-    if (m_drawMode && e->button() == Qt::LeftButton && !m_stroke.empty()) {
-        if (QLineF(toPixel(m_stroke.back()), e->position()).length() >= kStrokeSpacingPx / 2)
-            m_stroke.push_back(toWorld(e->position()));
-        std::vector<std::pair<double, double>> points;
-        for (QPointF w : m_stroke)
-            points.emplace_back(w.x(), w.y());
-        m_stroke.clear();
-        update();
-        if (points.size() >= 3) {
-            m_keepView = true;
-            emit pathDrawn(points);
-        }
-    }
-    if (m_pushing && e->button() == Qt::LeftButton) {
-        m_pushing = false;
-        setCursor(m_drawMode ? Qt::CrossCursor : Qt::ArrowCursor);
-        // the drag's component along the heading's left normal [m]
-        const QPointF d = toWorld(e->position()) - m_pushFrom;
-        const double left = -d.x() * std::sin(m_pushPhi) + d.y() * std::cos(m_pushPhi);
-        if (QLineF(toPixel(m_pushFrom), e->position()).length() >= 3)
-            emit pushDragged(m_pushTime, left);
-        update();
-    }
-    if (m_panning) {
-        m_panning = false;
-        setCursor(m_drawMode ? Qt::CrossCursor : Qt::ArrowCursor);
-    }
+    for (CanvasTool* tool : allTools())
+        if (tool->active())
+            tool->release(*e);
+    updateCursor();
 }
 
 void SceneCanvas::keyPressEvent(QKeyEvent* e) {
@@ -492,10 +424,10 @@ void SceneCanvas::keyPressEvent(QKeyEvent* e) {
             fitScene();
         break;
     case Qt::Key_B:
-        setFollowBody(!m_follow);
+        setFollowBody(!m_view.follows());
         break;
     case Qt::Key_L:
-        setLegendVisible(!m_legendVisible);
+        setLegendVisible(!m_look.legend);
         break;
     case Qt::Key_Left:
     case Qt::Key_Right:
@@ -504,8 +436,7 @@ void SceneCanvas::keyPressEvent(QKeyEvent* e) {
         // arrows pan by a tenth of the view
         double dx = e->key() == Qt::Key_Left ? -1 : e->key() == Qt::Key_Right ? 1 : 0;
         double dy = e->key() == Qt::Key_Down ? -1 : e->key() == Qt::Key_Up ? 1 : 0;
-        m_centre += QPointF(dx * width(), dy * height()) * (0.1 / m_scale);
-        m_autoFit = false;
+        m_view.moveCentre(QPointF(dx * width(), dy * height()) * (0.1 / m_view.scale()));
         setFollowBody(false);
         update();
         break;

@@ -1,8 +1,12 @@
 #pragma once
+#include "canvas/body_clip_shapes.h"
 #include "canvas/body_painter.h"
 #include "canvas/body_sprites.h"
 #include "canvas/canvas_style.h"
+#include "canvas/canvas_view.h"
 #include "canvas/curve_flattening.h"
+#include "canvas/layer_cache.h"
+#include "canvas/push_tool.h"
 #include "canvas/vector_layer.h"
 #include "paths/path_source.h"
 #include "scene/solution.h"
@@ -15,6 +19,7 @@
 #include <QPointF>
 #include <QWidget>
 
+#include <array>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -22,33 +27,39 @@
 namespace chaplygin::ui {
 
 class SceneDocument;
+class CanvasTool;
+class DrawTool;
+class EditPointsTool;
+class PanTool;
 
 /// The animation canvas: the prescribed path coloured by curvature, the controlled body to scale
 /// at its pose with its trail, and a translucent ghost of the free motion with its own trail.
-/// Wheel zooms about the cursor, dragging pans; in draw mode the left button draws a path.
+/// It composes its parts and paints: the view (CanvasView: the metres-to-pixels map, fits,
+/// follow, zoom), the mouse's tools of each mode (CanvasTool: draw and edit points in draw mode,
+/// push and pan otherwise) and the cached layers (LayerCache).
 class SceneCanvas : public QWidget {
     Q_OBJECT
   public:
     explicit SceneCanvas(SceneDocument* document, QWidget* parent = nullptr);
 
     double time() const { return m_time; }
-    bool followsBody() const { return m_follow; }
+    bool followsBody() const { return m_view.follows(); }
     bool drawMode() const { return m_drawMode; }
     /// Whether the genuine vakonomic body (a third body) is drawn.
-    bool showsVakonomic() const { return m_showVakonomic; }
+    bool showsVakonomic() const { return m_look.vakonomic; }
     /// Whether the perturbed bodies are drawn when the scene has a perturbation
     /// (docs/physics.md §9): the open loop and the closed loop.
-    bool showsOpenLoop() const { return m_showOpenLoop; }
-    bool showsClosedLoop() const { return m_showClosedLoop; }
+    bool showsOpenLoop() const { return m_look.openLoop; }
+    bool showsClosedLoop() const { return m_look.closedLoop; }
     /// Whether a push is being dragged from the controlled body.
-    bool pushing() const { return m_pushing; }
+    bool pushing() const { return m_pushTool->active(); }
     /// Pixels per metre.
-    double scale() const { return m_scale; }
+    double scale() const { return m_view.scale(); }
     /// World point (metres) <-> widget pixel.
     QPointF toPixel(QPointF world) const;
     QPointF toWorld(QPointF pixel) const;
     /// The metres-to-pixels map: pixel = transform.map(world), y up in the world.
-    QTransform worldToPixel() const { return worldTransform(); }
+    QTransform worldToPixel() const { return m_view.transform(); }
     /// Every curve drawn, flattened at the current scale (docs/architecture.md, ui/: the desktop
     /// application, Canvas).
     const CanvasCurves& curves() const;
@@ -58,12 +69,12 @@ class SceneCanvas : public QWidget {
     const VectorLayer& vectorLayer() const { return m_vectors; }
     QSize minimumSizeHint() const override { return {240, 180}; }
 
-    const CanvasStyle& canvasStyle() const { return m_style; }
+    const CanvasStyle& canvasStyle() const { return m_look.style; }
     void setCanvasStyle(const CanvasStyle& style);
     /// The style and the bodies and keys shown, to draw another canvas the same way.
     CanvasLook look() const;
     void setLook(const CanvasLook& look);
-    bool legendVisible() const { return m_legendVisible; }
+    bool legendVisible() const { return m_look.legend; }
     /// The part of the widget the scene is drawn in: between the time line and the legend.
     QRectF drawingArea() const;
     /// The box of the draw-mode hint's text under the time line; empty outside draw mode.
@@ -77,7 +88,7 @@ class SceneCanvas : public QWidget {
     QRectF sceneBounds() const;
     /// Whether the view refits to everything that moves (fitEverything) rather than to the path
     /// and the controlled body (fitScene) on a resize or a new path.
-    bool fitsEverything() const { return m_fitAll; }
+    bool fitsEverything() const { return m_view.fitsEverything(); }
     /// The bodies' display drawn now: the chosen one, or what Automatic picks for this scene.
     BodyDisplay shownBodyDisplay() const;
     /// Forgets the cached layers (static layer, trails): the next paint draws everything anew.
@@ -103,7 +114,7 @@ class SceneCanvas : public QWidget {
     void keepPathInView();
     /// The next new path (a stroke, a moved point, other corners) keeps the view
     /// (keepPathInView) instead of being fitted.
-    void keepViewForNextPath() { m_keepView = true; }
+    void keepViewForNextPath() { m_view.setKeepViewForNextPath(true); }
     void setFollowBody(bool follow);
     void setDrawMode(bool on);
     void zoomBy(double factor);
@@ -134,27 +145,30 @@ class SceneCanvas : public QWidget {
 
   private:
     void onSolutionChanged();
-    /// The view that frames box [m] in the drawing area, with a margin of `margin` [px] on each
-    /// side, at no less than minScale.
+    /// Frames box [m] in the drawing area with a margin of `margin` [px] on each side, at no
+    /// less than minScale; the view then refits to the path on a resize.
     void frame(const QRectF& box, double margin, double minScale);
     BodyLook bodyLook() const;
+    /// The tools the mouse reaches in the current mode, in the order they are offered a press.
+    std::vector<CanvasTool*> tools() const;
+    /// Every tool, in the order of their gestures' priority: editing a point, a stroke, a push,
+    /// panning.
+    std::array<CanvasTool*, 4> allTools() const;
+    /// After a gesture began or ended: the cursor of the gesture under way, else the mode's.
+    void updateCursor();
     /// The path's band, the controlled trail and the knife point P again over the bodies drawn
     /// to scale, inside their shapes: no body hides the path (docs/user-guide.md, Animation).
     void paintPathOverBodies(QPainter& p, const MotionSample& now);
-    /// The path's band and marks as the static layer has them, on a transparent layer made once
-    /// per view when the view is painted a second time; origin: the window's pixel p is the
-    /// layer's p + origin. Null at a view's first paint (a zoom step): the band within each
-    /// body's box costs less than the whole band, which a view seen once would not repay.
+    /// The path's band and marks as the static layer has them, from the layer cache; origin:
+    /// the window's pixel p is the layer's p + origin. Null at a view's first paint (a zoom
+    /// step): the band within each body's box costs less than the whole band, which a view
+    /// seen once would not repay.
     const QImage& pathLayer(QPoint& origin);
     /// Following: the world layer's pixel under the window's (0, 0).
     QPoint worldLayerOrigin() const;
     /// Following: the map from metres to the world layer's pixels.
     QTransform worldLayerTransform() const;
-    QTransform worldTransform() const;
-    /// The view's map with its centre at `centre` [m].
-    QTransform worldTransformAt(QPointF centre) const;
-    /// Grid lines every 1, 2 or 5 x 10^k m, at least 40 px apart.
-    double gridStep() const;
+    QTransform worldTransform() const { return m_view.transform(); }
     void paintGrid(QPainter& p, const QTransform& world, const QRectF& area) const;
     void paintScaleBar(QPainter& p) const;
     /// The path's band; with `within` [px] only the segments that reach it.
@@ -177,7 +191,8 @@ class SceneCanvas : public QWidget {
     /// The legend's strip, from a layer made once per size, style and shown bodies.
     void paintLegendLayer(QPainter& p);
     void paintTimeReadout(QPainter& p, double tEnd) const;
-    void paintBackground();
+    /// The static layer (grid, path, legend) from the layer cache.
+    const QPixmap& background();
     /// The static layer onto the widget within region: the cached background, or while following
     /// the body the world layer shifted by whole pixels under the legend and the scale bar; with
     /// the trails up to now in the drawing area, copied from the trail layer.
@@ -203,83 +218,12 @@ class SceneCanvas : public QWidget {
     void centreOnBody();
     /// The vertices of the current drawn path (empty unless it is a polyline).
     std::vector<std::pair<double, double>> drawnPoints() const;
-    /// The vertex within a few pixels of pos, or -1.
-    int vertexAt(QPointF pos) const;
-    void paintVertices(QPainter& p) const;
-
-    SceneDocument* m_document;
-    double m_time = 0;
-    double m_scale = 50; // px per metre
-    QPointF m_centre;    // world point at the widget centre
-    bool m_follow = false;
-    std::shared_ptr<const Path> m_fittedPath; // the path the view was last fitted to
-    bool m_autoFit = true;   // refit on resize and new solutions until the user zooms or pans
-    bool m_fitAll = false;   // the last fit framed everything that moves, not only the path
-    bool m_keepView = false; // the next new path is the user's stroke or edit: keep the view
-    mutable const Solution* m_boundsOf = nullptr; // the solution m_pathBounds belongs to
-    mutable QRectF m_pathBounds;
-    bool m_drawMode = false;
-    bool m_showVakonomic = true;
-    bool m_showOpenLoop = true, m_showClosedLoop = true;
-    bool m_panning = false;
-    bool m_pushing = false; // dragging the controlled body: a push
-    QPointF m_pushFrom;     // world point pressed
-    QPointF m_pushTo;       // pixel under the mouse while pushing
-    double m_pushTime = 0, m_pushPhi = 0;
     /// Whether the scene's perturbed bodies are there and drawn.
     bool drawsOpenLoop() const;
     bool drawsClosedLoop() const;
-    /// Whether a pixel lies on the controlled body at the current time.
-    bool onControlledBody(QPointF pixel) const;
-    QPointF m_lastMouse;
-    std::vector<QPointF> m_stroke; // world points of the stroke being drawn
-    int m_dragVertex = -1;         // the vertex being dragged, or -1
-    std::vector<std::pair<double, double>> m_editPoints;
-    struct BackgroundKey {
-        const Solution* solution = nullptr;
-        QSize size;
-        double scale = 0;
-        QPointF centre;
-        bool drawMode = false;
-        qreal dpr = 0;
-        bool vakonomic = true;
-        CanvasStyle style;
-        bool legend = true;
-        bool openLoop = true, closedLoop = true;
-        bool operator==(const BackgroundKey&) const = default;
-    };
-    BackgroundKey backgroundKey() const;
-    BackgroundKey m_backgroundKey;
-    QRect m_movingPainted; // the box of what moves, as last painted
-    // following the body: grid and path drawn once over a margin around the view, then shifted
-    // by whole pixels (the followed centre snaps to the pixel grid); the legend on its own
-    BackgroundKey m_worldKey;
-    QPixmap m_worldLayer;
-    QPointF m_worldCentre;
-    int m_worldMargin = 0;
-    BackgroundKey m_legendKey;
-    QPixmap m_legendLayer;
-    BackgroundKey m_pathKey;
-    bool m_pathFollowing = false;
-    QImage m_pathLayer;
-    BackgroundKey m_pathSeenKey; // the view of the last paint without the layer
-    bool m_pathSeenFollowing = false;
-    bool m_pathOverBodiesFromLayer = false;
-    QPixmap m_background;   // grid, path and legend
-    QImage m_trailLayer;    // the static layer with the trails up to m_trailsTime drawn on it
-    qint64 m_trailBase = 0; // the cache key of the static layer it was made from
-    double m_trailsTime = 0;
-    VectorLayer m_vectors;
-    BodySprites m_bodies;
-    mutable CanvasCurves m_curves;
-    /// The body's shape and the ring its outline's pen covers, in metres (body coordinates): the
-    /// clips of paintPathOverBodies, made once per solution, zoom and line scale.
-    const std::pair<QPainterPath, QPainterPath>& bodyClipShapes() const;
-    mutable const Solution* m_bodyClipOf = nullptr;
-    mutable double m_bodyClipScale = 0, m_bodyClipPen = 0;
-    mutable std::pair<QPainterPath, QPainterPath> m_bodyClips;
-    CanvasStyle m_style;
-    bool m_legendVisible = true;
+    /// The controlled body under a pixel at the current time, for a push.
+    PushTool::Grab grabAt(QPointF pixel) const;
+    LayerKey layerKey() const;
     int topBandPx() const;
     /// The draw-mode hint's font and text box (painted in paintLegend).
     QFont drawHintFont() const;
@@ -291,6 +235,25 @@ class SceneCanvas : public QWidget {
     /// The legend in two rows of two columns (presentation mode, no pushed bodies), not four
     /// rows: the drawing area keeps the height.
     bool compactLegend() const;
+
+    SceneDocument* m_document;
+    double m_time = 0;
+    CanvasView m_view;
+    CanvasLook m_look; // the style, the bodies shown and the legend
+    bool m_drawMode = false;
+    DrawTool* m_drawTool;
+    EditPointsTool* m_editTool;
+    PushTool* m_pushTool;
+    PanTool* m_panTool;
+    mutable const Solution* m_boundsOf = nullptr; // the solution m_pathBounds belongs to
+    mutable QRectF m_pathBounds;
+    QRect m_movingPainted; // the box of what moves, as last painted
+    LayerCache m_layers;
+    bool m_pathOverBodiesFromLayer = false;
+    VectorLayer m_vectors;
+    BodySprites m_bodies;
+    mutable CanvasCurves m_curves;
+    BodyClipShapes m_bodyClips;
 };
 
 } // namespace chaplygin::ui

@@ -35,26 +35,14 @@ QColor pale(const QColor& c) {
 
 } // namespace
 
-double SceneCanvas::gridStep() const {
-    // grid lines every 1, 2 or 5 x 10^k metres, at least 40 px apart
-    double decade = std::pow(10.0, std::floor(std::log10(40.0 / m_scale)));
-    double step = decade;
-    for (double f : {1.0, 2.0, 5.0, 10.0})
-        if (f * decade * m_scale >= 40) {
-            step = f * decade;
-            break;
-        }
-    return step;
-}
-
 void SceneCanvas::paintGrid(QPainter& p, const QTransform& world, const QRectF& area) const {
-    double step = gridStep();
+    double step = m_view.gridStep();
     const QTransform toWorld = world.inverted();
     QPointF a = toWorld.map(area.bottomLeft()), b = toWorld.map(area.topRight());
     // each line a run of whole device pixels, filled: a stroked line at a fractional position
     // is two half-toned pixels wide, laid out by the cosmetic stroker pixel by pixel
     const double s = std::abs(p.deviceTransform().m11());
-    const double thick = std::max(1.0, std::round(m_style.lineScale)); // [device px]
+    const double thick = std::max(1.0, std::round(m_look.style.lineScale)); // [device px]
     p.save();
     p.setRenderHint(QPainter::Antialiasing, false);
     p.setPen(Qt::NoPen);
@@ -85,21 +73,21 @@ void SceneCanvas::paintGrid(QPainter& p, const QTransform& world, const QRectF& 
 }
 
 void SceneCanvas::paintScaleBar(QPainter& p) const {
-    double step = gridStep();
+    double step = m_view.gridStep();
     // scale bar, top right: one grid step
-    double len = step * m_scale;
+    double len = step * m_view.scale();
     QPointF right(width() - 14, topBandPx() - 2), left = right - QPointF(len, 0);
-    p.setPen(m_style.pen(QColor(60, 60, 60), 1.5));
+    p.setPen(m_look.style.pen(QColor(60, 60, 60), 1.5));
     p.drawLine(left, right);
     p.drawLine(left, left - QPointF(0, 5));
     p.drawLine(right, right - QPointF(0, 5));
     QFont f = font();
-    f.setPointSizeF(8 * m_style.lineScale);
+    f.setPointSizeF(8 * m_look.style.lineScale);
     p.setFont(f);
     QString label =
         step >= 1 ? QStringLiteral("%1 m").arg(step) : QStringLiteral("%1 cm").arg(step * 100);
-    p.drawText(QRectF(left.x() - 40, left.y() - 8 - 14 * m_style.lineScale, len + 80,
-                      14 * m_style.lineScale),
+    p.drawText(QRectF(left.x() - 40, left.y() - 8 - 14 * m_look.style.lineScale, len + 80,
+                      14 * m_look.style.lineScale),
                Qt::AlignCenter, label);
 }
 
@@ -120,7 +108,7 @@ double bandReach(double lineScale) {
 
 bool SceneCanvas::bandReaches(const QTransform& world, const QRectF& within) const {
     const FlatCurve& flat = curves().path();
-    const double reach = bandReach(m_style.lineScale);
+    const double reach = bandReach(m_look.style.lineScale);
     QPointF to = flat.points.empty() ? QPointF() : world.map(flat.points[0]);
     for (std::size_t i = 1; i < flat.points.size(); ++i) {
         const QPointF from = to;
@@ -137,8 +125,8 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
     // one colour, through the flattened curve
     const FlatCurve& flat = curves().path();
     auto colourOf = [&](std::size_t i) {
-        if (m_style.highContrast)
-            return m_style.path().rgb();
+        if (m_look.style.highContrast)
+            return m_look.style.path().rgb();
         const double kappa = 0.5 * (flat.kappa[i - 1] + flat.kappa[i]);
         return pale(curvatureColor(std::isnan(kappa) ? 0 : kappa)).rgb();
     };
@@ -146,14 +134,14 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
     QRgb runColour = 0;
     auto flush = [&] {
         if (run.size() > 1) {
-            QPen pen = m_style.pen(QColor(runColour), 6);
+            QPen pen = m_look.style.pen(QColor(runColour), 6);
             pen.setCapStyle(Qt::FlatCap);
             p.setPen(pen);
             p.drawPolyline(run);
         }
         run.clear();
     };
-    const double reach = bandReach(m_style.lineScale);
+    const double reach = bandReach(m_look.style.lineScale);
     // each point mapped once: `from` is point i - 1 in pixels, `to` point i
     QPointF to = flat.points.empty() ? QPointF() : world.map(flat.points[0]);
     for (std::size_t i = 1; i < flat.points.size(); ++i) {
@@ -178,13 +166,13 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
     for (const PathPiece& piece : solution->path()->pieces()) {
         if (piece.kind != PathPiece::Kind::Pivot)
             continue;
-        p.setPen(m_style.pen(QColor(120, 60, 160), 1.5));
+        p.setPen(m_look.style.pen(QColor(120, 60, 160), 1.5));
         p.setBrush(Qt::NoBrush);
         p.drawEllipse(world.map(QPointF{piece.x, piece.y}), 5, 5);
     }
     // start (filled) and end (open) of the path
     const Path& path = *solution->path();
-    p.setPen(m_style.pen(QColor(40, 40, 40), 1.5));
+    p.setPen(m_look.style.pen(QColor(40, 40, 40), 1.5));
     p.setBrush(QColor(40, 40, 40));
     p.drawEllipse(world.map(QPointF{path.start().x, path.start().y}), 4, 4);
     p.setBrush(Qt::white);
@@ -194,14 +182,14 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
 
 void SceneCanvas::paintLegend(QPainter& p) const {
     // the legend has its own strip under the drawing area: nothing moves under it
-    const double k = m_style.lineScale;
+    const double k = m_look.style.lineScale;
     QFont f = font();
     f.setPointSizeF(9 * k);
     p.setFont(f);
-    if (m_legendVisible) {
+    if (m_look.legend) {
         QRectF band(0, height() - legendBandPx(), width(), legendBandPx());
         p.fillRect(band, QColor(246, 246, 246));
-        p.setPen(m_style.pen(QColor(200, 200, 200), 1));
+        p.setPen(m_look.style.pen(QColor(200, 200, 200), 1));
         p.drawLine(band.topLeft(), band.topRight());
         double y = band.top() + 8 * k, dy = 16 * k, x = 10, len = 24 * k;
         // the perturbed bodies in a second column (docs/physics.md §9); the compact legend puts
@@ -211,26 +199,26 @@ void SceneCanvas::paintLegend(QPainter& p) const {
         const double x2 = 0.5 * width();
         const double pathX = compact ? x2 : x, pathY = compact ? y : y + 2 * dy;
         const double vakY = compact ? y + dy : y + 3 * dy;
-        p.setPen(m_style.pen(m_style.controlled().darker(150), 2));
+        p.setPen(m_look.style.pen(m_look.style.controlled().darker(150), 2));
         p.drawLine(QPointF(x, y), QPointF(x + len, y));
-        p.setPen(m_style.pen(m_style.free(), 2, Qt::DashLine));
+        p.setPen(m_look.style.pen(m_look.style.free(), 2, Qt::DashLine));
         p.drawLine(QPointF(x, y + dy), QPointF(x + len, y + dy));
-        if (m_showVakonomic) {
-            p.setPen(m_style.pen(m_style.vakonomic(), 2, Qt::DashDotLine));
+        if (m_look.vakonomic) {
+            p.setPen(m_look.style.pen(m_look.style.vakonomic(), 2, Qt::DashDotLine));
             p.drawLine(QPointF(pathX, vakY), QPointF(pathX + len, vakY));
         }
         if (drawsOpenLoop()) {
-            p.setPen(m_style.pen(m_style.openLoop(), 2, Qt::DotLine));
+            p.setPen(m_look.style.pen(m_look.style.openLoop(), 2, Qt::DotLine));
             p.drawLine(QPointF(x2, y), QPointF(x2 + len, y));
         }
         if (drawsClosedLoop()) {
-            p.setPen(m_style.pen(m_style.closedLoop(), 2, Qt::DashDotDotLine));
+            p.setPen(m_look.style.pen(m_look.style.closedLoop(), 2, Qt::DashDotDotLine));
             p.drawLine(QPointF(x2, y + dy), QPointF(x2 + len, y + dy));
         }
         for (int i = 0; i < 24; ++i) {
-            QColor c =
-                m_style.highContrast ? m_style.path() : pale(curvatureColor((i - 11.5) / 4.0));
-            QPen pen = m_style.pen(c, 6);
+            QColor c = m_look.style.highContrast ? m_look.style.path()
+                                                 : pale(curvatureColor((i - 11.5) / 4.0));
+            QPen pen = m_look.style.pen(c, 6);
             pen.setCapStyle(Qt::FlatCap);
             p.setPen(pen);
             p.drawLine(QPointF(pathX + i * k, pathY), QPointF(pathX + (i + 1) * k, pathY));
@@ -259,12 +247,12 @@ void SceneCanvas::paintLegend(QPainter& p) const {
             text(1, tr("pushed, closed loop: feedback steers it back"),
                  tr("pushed, closed loop (feedback)"), x2 + len + 6);
         const double right = x2 + len + 6;
-        if (m_showVakonomic)
+        if (m_look.vakonomic)
             text(compact ? 1 : 3, tr("genuine vakonomic body: \u03bb obeys its own equation (21)"),
                  tr("vakonomic body, equation (21)"), compact ? right : -1);
         const QString briefPath = tr("path (\u25cf start, \u25a1 end)");
         text(compact ? 0 : 2,
-             m_style.highContrast
+             m_look.style.highContrast
                  ? briefPath
                  : tr("path (\u25cf start, \u25a1 end), coloured by its curvature \u03ba: red "
                       "right turn, grey straight, blue left turn"),
@@ -278,7 +266,7 @@ void SceneCanvas::paintLegend(QPainter& p) const {
 
 QFont SceneCanvas::drawHintFont() const {
     QFont f = font();
-    f.setPointSizeF(9 * m_style.lineScale);
+    f.setPointSizeF(9 * m_look.style.lineScale);
     return f;
 }
 
@@ -292,7 +280,8 @@ QRectF SceneCanvas::drawHintBox() const {
     const QRectF area(8, topBandPx(), width() - 16, 1e4);
     const QRectF used =
         QFontMetricsF(drawHintFont()).boundingRect(area, kDrawHintFlags, drawHintText());
-    return QRectF(8, topBandPx(), width() - 16, std::max(used.height(), 20 * m_style.lineScale));
+    return QRectF(8, topBandPx(), width() - 16,
+                  std::max(used.height(), 20 * m_look.style.lineScale));
 }
 
 QRectF SceneCanvas::drawHintBounds() const {
@@ -302,39 +291,28 @@ QRectF SceneCanvas::drawHintBounds() const {
         .boundingRect(drawHintBox(), kDrawHintFlags, drawHintText());
 }
 
-SceneCanvas::BackgroundKey SceneCanvas::backgroundKey() const {
+LayerKey SceneCanvas::layerKey() const {
     return {m_document->solution().get(),
             size(),
-            m_scale,
-            m_centre,
+            m_view.scale(),
+            m_view.centre(),
             m_drawMode,
             devicePixelRatioF(),
-            m_showVakonomic,
-            m_style,
-            m_legendVisible,
+            m_look.vakonomic,
+            m_look.style,
+            m_look.legend,
             drawsOpenLoop(),
             drawsClosedLoop()};
 }
 
-void SceneCanvas::paintBackground() {
+const QPixmap& SceneCanvas::background() {
     // grid, path and legend change only with the view or the solution: cached between frames
-    BackgroundKey key = backgroundKey();
-    qreal dpr = key.dpr;
-    if (key == m_backgroundKey && !m_background.isNull())
-        return;
-    m_backgroundKey = key;
-    // the last view's pixels are painted over: a new 8 MB image at 1920 x 1080 costs its pages'
-    // first touch at every zoom step
-    if (m_background.size() != size() * dpr) {
-        m_background = QPixmap(size() * dpr);
-        m_background.setDevicePixelRatio(dpr);
-    }
-    m_background.fill(Qt::white);
-    QPainter p(&m_background);
-    p.setRenderHint(QPainter::Antialiasing, true);
-    paintGrid(p, worldTransform(), rect());
-    paintScaleBar(p);
-    if (m_document->solution()) {
+    return m_layers.background(layerKey(), [this](QPainter& p) {
+        const qreal dpr = devicePixelRatioF();
+        paintGrid(p, worldTransform(), rect());
+        paintScaleBar(p);
+        if (!m_document->solution())
+            return;
         paintPath(p, worldTransform());
         // the draw-mode hint is painted with the legend; a layer at a fractional device pixel
         // ratio would land between device pixels
@@ -342,54 +320,43 @@ void SceneCanvas::paintBackground() {
             paintLegend(p);
         else
             paintLegendLayer(p);
-    }
+    });
 }
 
 void SceneCanvas::paintLegendLayer(QPainter& p) {
-    if (!m_legendVisible)
+    if (!m_look.legend)
         return;
     // the legend depends on neither zoom nor centre: one layer serves every view
-    BackgroundKey key = backgroundKey();
+    LayerKey key = layerKey();
     key.scale = 0;
     key.centre = {};
-    const qreal dpr = key.dpr;
     // two rows above the legend's band hold the antialiased edge of its top line
     const int top = height() - legendBandPx() - 2;
-    if (!(key == m_legendKey) || m_legendLayer.isNull()) {
-        m_legendKey = key;
-        m_legendLayer = QPixmap(QSize(width(), height() - top) * dpr);
-        m_legendLayer.setDevicePixelRatio(dpr);
-        m_legendLayer.fill(Qt::transparent);
-        QPainter l(&m_legendLayer);
-        l.setRenderHint(QPainter::Antialiasing, true);
+    p.drawPixmap(0, top, m_layers.legend(key, QSize(width(), height() - top), [&](QPainter& l) {
         l.translate(0, -top);
         paintLegend(l);
-    }
-    p.drawPixmap(0, top, m_legendLayer);
+    }));
 }
 
 bool SceneCanvas::followsWithWorldLayer() const {
     const qreal dpr = devicePixelRatioF();
-    return m_follow && !m_drawMode && dpr == std::round(dpr) && m_document->solution();
+    return m_view.follows() && !m_drawMode && dpr == std::round(dpr) && m_document->solution();
 }
 
 QTransform SceneCanvas::worldLayerTransform() const {
-    return worldTransformAt(m_worldCentre) *
-           QTransform::fromTranslate(m_worldMargin, m_worldMargin);
+    const int margin = m_layers.worldMargin();
+    return m_view.transformAt(m_layers.worldCentre()) * QTransform::fromTranslate(margin, margin);
 }
 
 QPoint SceneCanvas::worldLayerOrigin() const {
     // the world moves left and down as the centre goes right and up
-    const QPointF shift = (m_centre - m_worldCentre) * m_scale; // [px], y up
-    return {m_worldMargin + qRound(shift.x()), m_worldMargin - qRound(shift.y())};
+    const QPointF shift = (m_view.centre() - m_layers.worldCentre()) * m_view.scale(); // y up
+    const int margin = m_layers.worldMargin();
+    return {margin + qRound(shift.x()), margin - qRound(shift.y())};
 }
 
 void SceneCanvas::dropLayers() {
-    m_background = {};
-    m_worldLayer = {};
-    m_legendLayer = {};
-    m_pathLayer = {};
-    m_trailLayer = {};
+    m_layers.drop();
 }
 
 void SceneCanvas::paintStaticLayer(QPainter& p, const QRegion& region, const MotionSample* now) {
@@ -397,16 +364,16 @@ void SceneCanvas::paintStaticLayer(QPainter& p, const QRegion& region, const Mot
     // the trails within the drawing area, the static layer around it
     const QRegion inside = region & drawingArea().toAlignedRect();
     if (!followsWithWorldLayer()) {
-        paintBackground();
+        const QPixmap& base = background();
         if (now && dpr == std::round(dpr)) {
-            updateTrailLayer(*now, m_background, {});
-            blitRegion(p, inside, m_trailLayer);
-            blitRegion(p, region - inside, m_background);
+            updateTrailLayer(*now, base, {});
+            blitRegion(p, inside, m_layers.trailLayer());
+            blitRegion(p, region - inside, base);
             return;
         }
         // a fractional device pixel ratio: the trails drawn on the widget, as a layer at that
         // ratio would not draw them
-        blitRegion(p, region, m_background);
+        blitRegion(p, region, base);
         if (now) {
             p.save();
             p.setRenderHint(QPainter::Antialiasing, true);
@@ -416,32 +383,22 @@ void SceneCanvas::paintStaticLayer(QPainter& p, const QRegion& region, const Mot
         }
         return;
     }
-    BackgroundKey key = backgroundKey();
+    LayerKey key = layerKey();
     key.centre = {}; // the world layer moves with the centre
-    const QPointF shift = (m_centre - m_worldCentre) * m_scale; // [px], y up
-    const int margin = std::max(width(), height()) / 2;
-    if (!(key == m_worldKey) || m_worldLayer.isNull() || std::abs(shift.x()) > m_worldMargin ||
-        std::abs(shift.y()) > m_worldMargin) {
-        m_worldKey = key;
-        m_worldCentre = m_centre;
-        m_worldMargin = margin;
-        const QSize big = size() + QSize(2 * margin, 2 * margin);
-        m_worldLayer = QPixmap(big * dpr);
-        m_worldLayer.setDevicePixelRatio(dpr);
-        m_worldLayer.fill(Qt::white);
-        QPainter w(&m_worldLayer);
-        w.setRenderHint(QPainter::Antialiasing, true);
-        const QTransform world = worldLayerTransform();
-        paintGrid(w, world, QRectF(QPointF(0, 0), QSizeF(big)));
-        paintPath(w, world);
-    }
+    const QPixmap& world =
+        m_layers.worldLayer(key, m_view.centre(), m_view.scale(), std::max(width(), height()) / 2,
+                            [this](QPainter& w, QSize big) {
+                                const QTransform map = worldLayerTransform();
+                                paintGrid(w, map, QRectF(QPointF(0, 0), QSizeF(big)));
+                                paintPath(w, map);
+                            });
     const QPoint source = worldLayerOrigin();
     if (now) {
-        updateTrailLayer(*now, m_worldLayer, source);
-        blitRegion(p, inside, m_trailLayer, source);
-        blitRegion(p, region - inside, m_worldLayer, source);
+        updateTrailLayer(*now, world, source);
+        blitRegion(p, inside, m_layers.trailLayer(), source);
+        blitRegion(p, region - inside, world, source);
     } else {
-        blitRegion(p, region, m_worldLayer, source);
+        blitRegion(p, region, world, source);
     }
     p.setRenderHint(QPainter::Antialiasing, true);
     paintScaleBar(p);

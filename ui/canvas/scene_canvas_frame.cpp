@@ -1,5 +1,7 @@
 #include "canvas/scene_canvas.h"
 
+#include "canvas/draw_tool.h"
+#include "canvas/edit_points_tool.h"
 #include "canvas/masked_layer.h"
 #include "canvas/pin_painter.h"
 #include "canvas/trail_stroke.h"
@@ -9,11 +11,9 @@
 #include <QPaintEvent>
 #include <QPainter>
 #include <QPainterPath>
-#include <QPainterPathStroker>
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <optional>
 
 // the canvas's moving layer, painted every frame over the static one: trails, bodies, arrows
@@ -24,38 +24,43 @@ std::vector<SceneCanvas::Trail> SceneCanvas::trails(const MotionSample& now) con
     // the curves flattened at this scale, each up to now (docs/architecture.md, ui/: the desktop
     // application, Canvas): the controlled body runs along the path, up to its arc length
     const CanvasCurves& c = curves();
-    QColor free = m_style.free();
-    free.setAlpha(m_style.highContrast ? 255 : 150);
-    const double w = m_style.trailWidth;
+    QColor free = m_look.style.free();
+    free.setAlpha(m_look.style.highContrast ? 255 : 150);
+    const double w = m_look.style.trailWidth;
     std::vector<Trail> out;
     out.push_back({&c.free(),
                    m_time,
                    {now.free.x, now.free.y},
                    false,
-                   m_style.pen(free, std::max(0.75 * w, 1.5), Qt::DashLine)});
-    if (m_showVakonomic)
-        out.push_back({&c.vakonomic(),
-                       m_time,
-                       {now.vak.x, now.vak.y},
-                       false,
-                       m_style.pen(m_style.vakonomic(), std::max(0.75 * w, 1.5), Qt::DashDotLine)});
-    if (drawsOpenLoop())
-        out.push_back({&c.openLoop(),
-                       m_time,
-                       {now.pert.x, now.pert.y},
-                       false,
-                       m_style.pen(m_style.openLoop(), std::max(0.75 * w, 1.5), Qt::DotLine)});
-    if (drawsClosedLoop())
+                   m_look.style.pen(free, std::max(0.75 * w, 1.5), Qt::DashLine)});
+    if (m_look.vakonomic)
         out.push_back(
-            {&c.closedLoop(),
+            {&c.vakonomic(),
              m_time,
-             {now.fb.x, now.fb.y},
+             {now.vak.x, now.vak.y},
              false,
-             m_style.pen(m_style.closedLoop(), std::max(0.75 * w, 1.5), Qt::DashDotDotLine)});
+             m_look.style.pen(m_look.style.vakonomic(), std::max(0.75 * w, 1.5), Qt::DashDotLine)});
+    if (drawsOpenLoop())
+        out.push_back(
+            {&c.openLoop(),
+             m_time,
+             {now.pert.x, now.pert.y},
+             false,
+             m_look.style.pen(m_look.style.openLoop(), std::max(0.75 * w, 1.5), Qt::DotLine)});
+    if (drawsClosedLoop())
+        out.push_back({&c.closedLoop(),
+                       m_time,
+                       {now.fb.x, now.fb.y},
+                       false,
+                       m_look.style.pen(m_look.style.closedLoop(), std::max(0.75 * w, 1.5),
+                                        Qt::DashDotDotLine)});
     // the controlled body's last, on top: where another trail starts along the path, the path
     // stays visible
-    out.push_back(
-        {&c.path(), now.s, {now.x, now.y}, true, m_style.pen(m_style.controlled().darker(150), w)});
+    out.push_back({&c.path(),
+                   now.s,
+                   {now.x, now.y},
+                   true,
+                   m_look.style.pen(m_look.style.controlled().darker(150), w)});
     return out;
 }
 
@@ -77,7 +82,7 @@ void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now, const QRegio
 std::vector<QRectF> SceneCanvas::trailEndsBounds(const MotionSample& now, double from) const {
     const QTransform world = worldTransform();
     std::vector<QRectF> boxes;
-    const double pad = 2 * std::max(m_style.trailWidth, 1.5) * m_style.lineScale + 3;
+    const double pad = 2 * std::max(m_look.style.trailWidth, 1.5) * m_look.style.lineScale + 3;
     // the controlled trail's parameter is the arc length: where the body was at `from`
     const double since = std::min(from, m_time);
     const double sinceS = since < m_time ? m_document->solution()->at(since).s : now.s;
@@ -116,18 +121,6 @@ void forEachShownPose(const MotionSample& now, bool vakonomic, bool openLoop, bo
         f(now.fb.x, now.fb.y, now.fb.phi);
 }
 
-// `to` becomes an RGB32 copy of `from`'s pixels, in its own memory when that has the size (a
-// new image at every zoom step would cost its pages' first touch)
-void copyPixels(const QImage& from, QImage& to) {
-    const QImage source =
-        from.format() == QImage::Format_RGB32 ? from : from.convertToFormat(QImage::Format_RGB32);
-    if (to.size() != source.size() || to.format() != QImage::Format_RGB32)
-        to = QImage(source.size(), QImage::Format_RGB32);
-    const auto bytes = std::size_t(std::min(to.bytesPerLine(), source.bytesPerLine()));
-    for (int y = 0; y < source.height(); ++y)
-        std::memcpy(to.scanLine(y), source.constScanLine(y), bytes);
-}
-
 } // namespace
 
 QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& now,
@@ -140,9 +133,10 @@ QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& no
     const SystemSpec& spec = solution.scene().system;
     const BodyLook look = bodyLook();
     auto body = [&](double x, double y, double phi) {
-        add(BodySprites::pixelBounds(world, m_scale, spec, solution.system(), {x, y, phi}, look));
+        add(BodySprites::pixelBounds(world, m_view.scale(), spec, solution.system(), {x, y, phi},
+                                     look));
     };
-    forEachShownPose(now, m_showVakonomic, drawsOpenLoop(), drawsClosedLoop(), body);
+    forEachShownPose(now, m_look.vakonomic, drawsOpenLoop(), drawsClosedLoop(), body);
     add(m_vectors.bounds(m_document->solution(), m_document->scene().vectors, now, world));
     // only the widget is painted: a body far outside the view (a wild zoom) must not overflow int
     if (!std::isfinite(box.x()) || !std::isfinite(box.y()) || !std::isfinite(box.width()) ||
@@ -157,14 +151,12 @@ void SceneCanvas::updateTrailLayer(const MotionSample& now, const QPixmap& base,
     const qreal dpr = base.devicePixelRatio();
     // the layer's extent in the widget's pixels
     const QRect extent(-origin, (QSizeF(base.size()) / dpr).toSize());
+    const LayerCache::TrailUpdate update = m_layers.bringTrailLayerTo(base, m_time);
     QRegion area;
-    if (m_trailLayer.isNull() || m_trailBase != base.cacheKey() || m_time < m_trailsTime) {
-        copyPixels(base.toImage(), m_trailLayer);
-        m_trailLayer.setDevicePixelRatio(dpr);
-        m_trailBase = base.cacheKey();
+    if (update.anew) {
         area = extent;
-    } else if (m_time > m_trailsTime) {
-        for (const QRectF& r : trailEndsBounds(now, m_trailsTime)) {
+    } else if (m_time > update.since) {
+        for (const QRectF& r : trailEndsBounds(now, update.since)) {
             if (!std::isfinite(r.x()) || !std::isfinite(r.y()) || !std::isfinite(r.width()) ||
                 !std::isfinite(r.height())) {
                 area = extent;
@@ -173,10 +165,9 @@ void SceneCanvas::updateTrailLayer(const MotionSample& now, const QPixmap& base,
             area += r.intersected(QRectF(extent)).toAlignedRect();
         }
     }
-    m_trailsTime = m_time;
     if (area.isEmpty())
         return;
-    QPainter p(&m_trailLayer);
+    QPainter p(&m_layers.trailLayer());
     p.translate(origin);
     p.setClipRegion(area);
     // where the ends moved, the base's pixels first
@@ -196,19 +187,21 @@ void SceneCanvas::updateMoving(double from, QPointF centre) {
     // whole pixels), the static layer, the pins (their runs move too), a stroke or a vertex
     // being drawn, a trail that shrinks
     const auto& solution = m_document->solution();
-    bool steady = solution && from <= m_time && !m_movingPainted.isNull() && m_stroke.empty() &&
-                  m_dragVertex < 0 && m_document->pins()->count() == 0;
+    bool steady = solution && from <= m_time && !m_movingPainted.isNull() &&
+                  !m_drawTool->active() && !m_editTool->active() &&
+                  m_document->pins()->count() == 0;
     QPoint shift; // [px] how far the scene's pixels move
-    if (steady && !m_follow) {
-        steady = !m_background.isNull() && backgroundKey() == m_backgroundKey;
+    if (steady && !m_view.follows()) {
+        steady = m_layers.hasBackground(layerKey());
     } else if (steady) {
-        BackgroundKey key = backgroundKey();
+        LayerKey key = layerKey();
         key.centre = {};
         // the centre snaps to the pixel grid: the scene moves by whole pixels, y up
-        const QPointF moved((centre.x() - m_centre.x()) * m_scale,
-                            (m_centre.y() - centre.y()) * m_scale);
+        const QPointF now = m_view.centre();
+        const QPointF moved((centre.x() - now.x()) * m_view.scale(),
+                            (now.y() - centre.y()) * m_view.scale());
         shift = moved.toPoint();
-        steady = followsWithWorldLayer() && key == m_worldKey && !m_worldLayer.isNull() &&
+        steady = followsWithWorldLayer() && m_layers.hasWorldLayer(key) &&
                  std::abs(moved.x() - shift.x()) < 1e-6 && std::abs(moved.y() - shift.y()) < 1e-6;
     }
     if (!steady) {
@@ -258,98 +251,56 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         p.save();
         p.setClipRect(drawingArea());
         curves(); // at this scale, for the pins too
-        paintPinnedRuns(p, *m_document->pins(), m_curves, worldTransform(), m_time,
-                        pinKeyOrigin());
+        paintPinnedRuns(p, *m_document->pins(), m_curves, worldTransform(), m_time, pinKeyOrigin());
         const SystemSpec& spec = solution->scene().system;
         const QTransform world = worldTransform();
         // the translucent ghost on top, so that both stay visible where they overlap
         const BodyLook look = bodyLook();
         auto body = [&](const BodyPose& pose, const QColor& color, bool ghost) {
-            m_bodies.paint(p, world, m_scale, spec, solution->system(), pose, color, ghost, look);
+            m_bodies.paint(p, world, m_view.scale(), spec, solution->system(), pose, color, ghost,
+                           look);
         };
-        body({now->x, now->y, now->phi}, m_style.controlled(), false);
-        body({now->free.x, now->free.y, now->free.phi}, m_style.free(), true);
-        if (m_showVakonomic)
-            body({now->vak.x, now->vak.y, now->vak.phi}, m_style.vakonomic(), true);
+        body({now->x, now->y, now->phi}, m_look.style.controlled(), false);
+        body({now->free.x, now->free.y, now->free.phi}, m_look.style.free(), true);
+        if (m_look.vakonomic)
+            body({now->vak.x, now->vak.y, now->vak.phi}, m_look.style.vakonomic(), true);
         if (drawsOpenLoop())
-            body({now->pert.x, now->pert.y, now->pert.phi}, m_style.openLoop(), true);
+            body({now->pert.x, now->pert.y, now->pert.phi}, m_look.style.openLoop(), true);
         if (drawsClosedLoop())
-            body({now->fb.x, now->fb.y, now->fb.phi}, m_style.closedLoop(), true);
+            body({now->fb.x, now->fb.y, now->fb.phi}, m_look.style.closedLoop(), true);
         paintPathOverBodies(p, *now);
         p.restore();
-        m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform(), m_scale,
-                        drawingArea(), e->region());
+        m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform(),
+                        m_view.scale(), drawingArea(), e->region());
         paintTimeReadout(p, solution->tEnd());
         m_movingPainted = movingBounds(*solution, *now, m_time);
     } else {
         m_movingPainted = {};
     }
-    if (m_pushing) {
-        // the push being dragged: a line from where the body was grabbed
-        p.setPen(m_style.pen(m_style.closedLoop().darker(140), 2, Qt::DashLine));
-        p.drawLine(toPixel(m_pushFrom), m_pushTo);
+    // what the gestures show: a push being dragged, the drawn path's points, a stroke
+    m_pushTool->paint(p);
+    if (m_drawMode) {
+        m_editTool->paint(p);
+        m_drawTool->paint(p);
     }
-    if (m_drawMode)
-        paintVertices(p);
-    if (m_stroke.size() > 1) {
-        QPolygonF line;
-        for (QPointF w : m_stroke)
-            line << toPixel(w);
-        p.setPen(m_style.pen(QColor(40, 40, 40), 2));
-        p.drawPolyline(line);
-    }
-}
-
-const std::pair<QPainterPath, QPainterPath>& SceneCanvas::bodyClipShapes() const {
-    const Solution* solution = m_document->solution().get();
-    const double penPx = 3 * m_style.lineScale + 2;
-    if (solution != m_bodyClipOf || m_scale != m_bodyClipScale || penPx != m_bodyClipPen) {
-        m_bodyClipOf = solution;
-        m_bodyClipScale = m_scale;
-        m_bodyClipPen = penPx;
-        // the pose and the view map these with a rotation, a uniform scale and a flip: the
-        // ring's width in metres is the pen's in pixels over the scale
-        QPainterPath shape = bodyShape(solution->scene().system, solution->system());
-        QPainterPathStroker pen;
-        pen.setWidth(penPx / m_scale);
-        QPainterPath ring = pen.createStroke(shape);
-        m_bodyClips = {std::move(shape), std::move(ring)};
-    }
-    return m_bodyClips;
 }
 
 const QImage& SceneCanvas::pathLayer(QPoint& origin) {
     // the layer lies under the static one: the window's pixel p is the layer's p + origin
     const bool following = followsWithWorldLayer();
-    BackgroundKey key = backgroundKey();
+    LayerKey key = layerKey();
     QTransform world = worldTransform();
     QSize size = this->size();
     origin = {};
     if (following) {
         // the world layer's view: drawn at its centre over its margin, shifted as it is
-        key.centre = m_worldCentre;
+        key.centre = m_layers.worldCentre();
         origin = worldLayerOrigin();
         world = worldLayerTransform();
-        size += QSize(2 * m_worldMargin, 2 * m_worldMargin);
+        const int margin = m_layers.worldMargin();
+        size += QSize(2 * margin, 2 * margin);
     }
-    // the key's size fixes the world layer's margin too
-    if (!(key == m_pathKey) || following != m_pathFollowing || m_pathLayer.isNull()) {
-        if (!(key == m_pathSeenKey) || following != m_pathSeenFollowing) {
-            m_pathSeenKey = key;
-            m_pathSeenFollowing = following;
-            static const QImage none;
-            return none;
-        }
-        m_pathKey = key;
-        m_pathFollowing = following;
-        m_pathLayer = QImage(size * key.dpr, QImage::Format_ARGB32_Premultiplied);
-        m_pathLayer.setDevicePixelRatio(key.dpr);
-        m_pathLayer.fill(Qt::transparent);
-        QPainter l(&m_pathLayer);
-        l.setRenderHint(QPainter::Antialiasing, true);
-        paintPath(l, world);
-    }
-    return m_pathLayer;
+    return m_layers.pathLayer(key, following, size, [&](QPainter& l) { paintPath(l, world); });
 }
 
 void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
@@ -357,7 +308,8 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     if (bodyLook().display != BodyDisplay::ToScale)
         return;
     const QTransform world = worldTransform();
-    const auto& [shape, ring] = bodyClipShapes();
+    const auto& [shape, ring] =
+        m_bodyClips.of(*m_document->solution(), m_view.scale(), 3 * m_look.style.lineScale + 2);
     // each body's area and the ring its outline's pen covers, in pixels
     std::vector<std::pair<QPainterPath, QPainterPath>> clips;
     auto add = [&](double x, double y, double phi) {
@@ -370,7 +322,7 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
             return;
         clips.emplace_back(std::move(mapped), map.map(ring));
     };
-    forEachShownPose(now, m_showVakonomic, drawsOpenLoop(), drawsClosedLoop(), add);
+    forEachShownPose(now, m_look.vakonomic, drawsOpenLoop(), drawsClosedLoop(), add);
     if (clips.empty())
         return;
     const Trail controlled = trails(now).back();
@@ -413,8 +365,9 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     }
     p.save();
     const QPointF at = world.map(QPointF(now.x, now.y));
-    const QPointF along = QPointF(std::cos(now.phi), -std::sin(now.phi)) * 9 * m_style.lineScale;
-    p.setPen(m_style.pen(m_style.controlled().darker(170), 3.5));
+    const QPointF along =
+        QPointF(std::cos(now.phi), -std::sin(now.phi)) * 9 * m_look.style.lineScale;
+    p.setPen(m_look.style.pen(m_look.style.controlled().darker(170), 3.5));
     p.drawLine(at - along, at + along);
     p.restore();
 }
@@ -422,9 +375,9 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
 void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
     QFont f = font();
     p.setPen(Qt::black);
-    if (m_style.largeTime) {
+    if (m_look.style.largeTime) {
         // presentation: the time large enough for the back of the room
-        f.setPointSizeF(9 * m_style.lineScale * 2);
+        f.setPointSizeF(9 * m_look.style.lineScale * 2);
         f.setBold(true);
         p.setFont(f);
         const QString now = tr("t = %1 s").arg(m_time, 0, 'f', 2);
@@ -432,37 +385,20 @@ void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
         p.drawText(band, Qt::AlignLeft | Qt::AlignVCenter, now);
         double after =
             10 + p.fontMetrics().horizontalAdvance(now) + p.fontMetrics().averageCharWidth();
-        f.setPointSizeF(9 * m_style.lineScale);
+        f.setPointSizeF(9 * m_look.style.lineScale);
         f.setBold(false);
         p.setFont(f);
         p.drawText(band.adjusted(after - 10, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter,
                    tr("of %1 s").arg(tEnd, 0, 'f', 2));
         return;
     }
-    f.setPointSizeF(9 * m_style.lineScale);
+    f.setPointSizeF(9 * m_look.style.lineScale);
     p.setFont(f);
     p.drawText(QRectF(8, 6, width() - 16, topBandPx()), Qt::AlignLeft,
                tr("t = %1 s of %2 s    scale %3 px/m")
                    .arg(m_time, 0, 'f', 2)
                    .arg(tEnd, 0, 'f', 2)
-                   .arg(m_scale, 0, 'g', 3));
-}
-
-void SceneCanvas::paintVertices(QPainter& p) const {
-    const auto points = m_dragVertex >= 0 ? m_editPoints : drawnPoints();
-    if (m_dragVertex >= 0) {
-        QPolygonF line;
-        for (const auto& [x, y] : points)
-            line << toPixel({x, y});
-        p.setPen(m_style.pen(QColor(60, 60, 60), 1, Qt::DashLine));
-        p.drawPolyline(line);
-    }
-    p.setPen(m_style.pen(QColor(60, 60, 60), 1));
-    p.setBrush(QColor(255, 255, 255, 220));
-    for (const auto& [x, y] : points) {
-        QPointF c = toPixel({x, y});
-        p.drawRect(QRectF(c.x() - 3, c.y() - 3, 6, 6));
-    }
+                   .arg(m_view.scale(), 0, 'g', 3));
 }
 
 } // namespace chaplygin::ui

@@ -1,0 +1,26 @@
+#pragma once
+#include <QPainterPath>
+
+#include <utility>
+
+namespace chaplygin {
+class Solution;
+}
+
+namespace chaplygin::ui {
+
+/// A body's shape and the ring its outline's pen covers, in metres (body coordinates): the
+/// clips of the path drawn again over a body to scale, made once per solution, zoom and pen.
+class BodyClipShapes {
+  public:
+    /// For the solution's body at `scale` [px/m] with an outline pen of penPx [px].
+    const std::pair<QPainterPath, QPainterPath>& of(const Solution& solution, double scale,
+                                                    double penPx);
+
+  private:
+    const Solution* m_solution = nullptr;
+    double m_scale = 0, m_penPx = 0;
+    std::pair<QPainterPath, QPainterPath> m_shapes;
+};
+
+} // namespace chaplygin::ui
