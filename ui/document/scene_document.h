@@ -47,19 +47,32 @@ class SceneDocument : public QObject {
     QUndoStack* undoStack() const { return m_undo; }
     /// Whether the scene differs from its file (or from the scene it was loaded as).
     bool isModified() const { return !m_undo->isClean(); }
-    /// Replaces the scene as a new document (File > New and Open, a scene given at start): the
-    /// undo stack starts empty and the solution is computed at once. A scene that does not solve
-    /// throws InputError and changes nothing.
-    void load(const Scene& scene);
+    /// How a whole scene comes in (load, loadNow).
+    struct LoadOptions {
+        /// The undo step's text for a known scene (a preset, a gallery scene): one step that is
+        /// no modification (see loadKnown). Empty: a new document (File > New and Open, a scene
+        /// given at start), its undo history cleared.
+        QString description;
+        /// Called when the scene is the document's, solved.
+        std::function<void()> loaded;
+        /// Called with the reason when the scene is refused; the current scene stays.
+        std::function<void(const SceneError&)> refused;
+    };
+    /// The one use case of a whole scene coming in: presets, gallery scenes, files. Its path is
+    /// built on the path worker as a typed path's is (a quick one before this returns); the
+    /// scene is then vetted (solved with its pins: a scene that does not solve never replaces
+    /// the current one), installed and solved, and `loaded` is called, or `refused`. A newer
+    /// load or path request supersedes an older one, whose callbacks are never called.
+    void load(const Scene& scene, LoadOptions options);
+    /// load() finished before this returns, for the callers that report a refusal to their own
+    /// caller (a file, a scene given at start, a gallery entry whose refusal is its lesson):
+    /// throws InputError naming the place and changes nothing.
+    void loadNow(const Scene& scene, const QString& description = {});
     /// Changes the scene as one undo step (latest value wins for the recompute); consecutive
     /// edits with the same non-empty mergeKey merge into one step (one slider drag). A scene
     /// equal to the current one is no step.
     void edit(const Scene& scene, const QString& description, const QString& mergeKey = {});
-    /// A preset or a gallery scene as one undo step that is no modification: the document is
-    /// then that known scene, untitled, and clean if it was clean before; unsaved changes made
-    /// before it stay a step back, and the document stays modified. Undo gives the scene and the
-    /// file name back. A scene equal to the current one is no step.
-    void loadKnown(const Scene& scene, const QString& description);
+
     /// A change of the system's parameters: checked first (deriveSystem), so that an impossible
     /// value is refused with its message (returned) and never becomes an undo step.
     QString editParameters(const Scene& scene, const QString& description,
@@ -135,8 +148,16 @@ class SceneDocument : public QObject {
     void recentFilesChanged();
 
   private:
+    /// A preset or a gallery scene as one undo step that is no modification: the document is
+    /// then that known scene, untitled, and clean if it was clean before; unsaved changes made
+    /// before it stay a step back, and the document stays modified. Undo gives the scene and the
+    /// file name back. A scene equal to the current one is no step.
+    void loadKnown(const Scene& scene, const QString& description);
     /// Sets the scene from an edit, an undo or a load; emits sceneApplied.
     void apply(const Scene& scene);
+    /// The end of a load, its path built: vets the scene, installs it as a new document or as
+    /// a known scene (description), solves it; throws InputError and changes nothing.
+    void install(const Scene& scene, const QString& description);
     /// The document is now the file at path: clean, and first in the recent files.
     void markSavedAs(const QString& path);
     void keepCopy();

@@ -20,12 +20,40 @@ void SceneDocument::apply(const Scene& scene) {
     emit sceneApplied(scene, pathChanged);
 }
 
-void SceneDocument::load(const Scene& scene) {
+void SceneDocument::install(const Scene& scene, const QString& description) {
     check(scene); // a scene that does not solve never replaces the current one
     PinSet::check(*this, scene);
-    m_undo->clear();
-    apply(scene);
+    if (description.isEmpty()) {
+        m_undo->clear();
+        apply(scene);
+    } else {
+        loadKnown(scene, description);
+    }
     flush();
+}
+
+void SceneDocument::load(const Scene& scene, LoadOptions options) {
+    requestPath(scene.path, [this, scene, options = std::move(options)](const QString& error) {
+        SceneError refusal = error.isEmpty() ? SceneError() : SceneError::ofPath(error);
+        if (refusal.isEmpty()) {
+            try {
+                install(scene, options.description);
+            } catch (const InputError& e) {
+                refusal = SceneError::of(e);
+            }
+        }
+        if (!refusal.isEmpty()) {
+            if (options.refused)
+                options.refused(refusal);
+        } else if (options.loaded) {
+            options.loaded();
+        }
+    });
+}
+
+void SceneDocument::loadNow(const Scene& scene, const QString& description) {
+    pathFor(scene.path);
+    install(scene, description);
 }
 
 void SceneDocument::edit(const Scene& scene, const QString& description, const QString& mergeKey) {
@@ -68,7 +96,7 @@ void SceneDocument::markSavedAs(const QString& path) {
 }
 
 void SceneDocument::open(const QString& path) {
-    load(openSceneFile(path));
+    loadNow(openSceneFile(path));
     markSavedAs(path);
 }
 
@@ -92,7 +120,7 @@ QStringList SceneDocument::recentFiles() const {
 }
 
 void SceneDocument::restore(const Autosave::Orphan& orphan) {
-    load(Autosave::readOrphan(orphan));
+    loadNow(Autosave::readOrphan(orphan));
     setFileName(orphan.fileName);
     m_undo->resetClean();
     keepCopy();

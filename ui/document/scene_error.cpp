@@ -20,6 +20,10 @@ SceneError SceneError::of(const InputError& e) {
     return {part, where, QString::fromStdString(e.what())};
 }
 
+SceneError SceneError::ofPath(const QString& message) {
+    return {Part::Path, QStringLiteral("path"), message};
+}
+
 SceneError SceneError::other(const QString& message) {
     return {Part::Other, QString(), message};
 }

@@ -26,6 +26,8 @@ struct SceneError {
     /// The part the core's place names: "perturbation push_dy" is the perturbation's,
     /// "parameter b" the system's, "x = 0.3" or "points" the path's.
     static SceneError of(const InputError& e);
+    /// The path worker's refusal of a path (its message names the place).
+    static SceneError ofPath(const QString& message);
     /// An error of no field (a failure that is not the input's).
     static SceneError other(const QString& message);
     bool operator==(const SceneError&) const = default;

@@ -231,7 +231,7 @@ void MainWindow::showScene(const Scene& scene, bool pathChanged) {
 }
 
 void MainWindow::loadScene(const Scene& scene) {
-    m_document->load(scene);
+    m_document->loadNow(scene);
     m_playback->seek(0);
     m_canvas->fitScene();
 }
@@ -242,16 +242,22 @@ void MainWindow::editScene(const Scene& scene, const QString& description,
 }
 
 void MainWindow::choosePreset(const QString& name) {
+    // its path on the path worker, as a typed path's
+    Scene next;
     try {
-        Scene next = presetScene(name.toStdString());
-        m_document->pathFor(next.path);
-        m_document->loadKnown(next, tr("Preset %1").arg(name));
-        m_document->flush();
-        startNewScene();
-        m_canvas->fitScene();
+        next = presetScene(name.toStdString());
     } catch (const InputError& e) {
         m_path->showError(QString::fromStdString(e.what()));
+        return;
     }
+    m_document->load(next,
+                     {.description = tr("Preset %1").arg(name),
+                      .loaded =
+                          [this] {
+                              startNewScene();
+                              m_canvas->fitScene();
+                          },
+                      .refused = [this](const SceneError& e) { m_path->showError(e.message); }});
 }
 
 void MainWindow::setPath(const PathSource& source, const QString& description, PathChange change) {
@@ -310,8 +316,9 @@ bool MainWindow::loadGalleryEntry(const QString& name) {
     const QString explanation = QString::fromStdString(entry.scene.note);
     if (!m_presentation->isActive()) // presenting, the explanation is in the Notes dock
         bringDockForward(this, m_docks.accuracy);
+    // vetted before this returns: a refused entry's refusal is its lesson
     try {
-        m_document->check(entry.scene); // the core's refusal is the lesson of a rejected entry
+        m_document->loadNow(entry.scene, tr("Gallery: %1").arg(title));
     } catch (const InputError& e) {
         const QString refusal = QString::fromStdString(e.what());
         m_noteScene = m_document->scene();
@@ -325,8 +332,6 @@ bool MainWindow::loadGalleryEntry(const QString& name) {
     m_noteScene = entry.scene;
     m_accuracy->setNote(title, explanation);
     statusBar()->clearMessage(); // an earlier refusal no longer applies
-    m_document->loadKnown(entry.scene, tr("Gallery: %1").arg(title));
-    m_document->flush();
     startNewScene();
     m_canvas->fitScene();
     return true;
