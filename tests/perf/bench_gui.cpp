@@ -17,7 +17,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <string>
 
@@ -121,6 +123,18 @@ void sizeWindow(MainWindow& window, long width) {
     window.resize(int(width), width >= 1920 ? 1080 : 800);
 }
 
+// Whether the window is shown at device pixel ratio `dpr`; the process has one ratio, set by
+// --dpr=N (QT_SCALE_FACTOR), so the variants of another ratio skip with the way to run them.
+bool atDevicePixelRatio(benchmark::State& state, const MainWindow& window, long dpr) {
+    if (window.devicePixelRatioF() == double(dpr))
+        return true;
+    const std::string why = "run with --dpr=" + std::to_string(dpr);
+    state.SkipWithError(why.c_str());
+    for (auto _ : state) {
+    }
+    return false;
+}
+
 // the third (vakonomic) body and every arrow of View > Vectors shown
 void showEverything(MainWindow& window) {
     window.canvas()->setShowVakonomic(true);
@@ -137,6 +151,8 @@ void BM_AnimationFrame(benchmark::State& state) {
     sizeWindow(window, state.range(3));
     window.show();
     QCoreApplication::processEvents();
+    if (!atDevicePixelRatio(state, window, state.range(5)))
+        return;
     if (state.range(4) != 0)
         showEverything(window);
     QCoreApplication::processEvents();
@@ -173,14 +189,17 @@ void BM_AnimationFrame(benchmark::State& state) {
 }
 // width 1280 (x800) or 1920 (x1080); everything: the vakonomic body and all five vectors shown
 BENCHMARK(BM_AnimationFrame)
-    ->ArgNames({"speed", "follow", "whole", "width", "everything"})
-    ->ArgsProduct({{1}, {0}, {0}, {1280, 1920}, {0, 1}})
-    ->Args({4, 0, 0, 1280, 1})
-    ->Args({4, 0, 0, 1920, 1})
-    ->Args({1, 1, 0, 1280, 1})
-    ->Args({1, 1, 0, 1920, 1})
-    ->Args({1, 0, 1, 1280, 1})
-    ->Args({1, 0, 1, 1920, 1})
+    ->ArgNames({"speed", "follow", "whole", "width", "everything", "dpr"})
+    ->ArgsProduct({{1}, {0}, {0}, {1280, 1920}, {0, 1}, {1}})
+    ->Args({4, 0, 0, 1280, 1, 1})
+    ->Args({4, 0, 0, 1920, 1, 1})
+    ->Args({1, 1, 0, 1280, 1, 1})
+    ->Args({1, 1, 0, 1920, 1, 1})
+    ->Args({1, 0, 1, 1280, 1, 1})
+    ->Args({1, 0, 1, 1920, 1, 1})
+    // a 3840 x 2160 frame at 1920 logical width (chaplygin-bench --dpr=2)
+    ->Args({1, 0, 0, 1920, 1, 2})
+    ->Args({1, 1, 0, 1920, 1, 2})
     ->Iterations(1200) // 20 s of motion at 60 Hz: every run paints the same frames
     ->Unit(benchmark::kMillisecond);
 
@@ -191,6 +210,8 @@ void BM_ZoomStep(benchmark::State& state) {
     sizeWindow(window, state.range(0));
     window.show();
     QCoreApplication::processEvents();
+    if (!atDevicePixelRatio(state, window, state.range(2)))
+        return;
     showEverything(window);
     window.canvas()->setTime(5);
     window.canvas()->zoomBy(double(state.range(1)));
@@ -203,8 +224,10 @@ void BM_ZoomStep(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_ZoomStep)
-    ->ArgNames({"width", "zoom"})
-    ->ArgsProduct({{1280, 1920}, {1, 20}})
+    ->ArgNames({"width", "zoom", "dpr"})
+    ->ArgsProduct({{1280, 1920}, {1, 20}, {1}})
+    ->Args({1920, 1, 2})
+    ->Args({1920, 20, 2})
     ->Iterations(200)
     ->Unit(benchmark::kMillisecond);
 
@@ -285,6 +308,14 @@ int main(int argc, char** argv) {
     chaplygin::keepFreedMemoryForReuse(); // as the program does (app/main.cpp)
     if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
         qputenv("QT_QPA_PLATFORM", "offscreen");
+    // --dpr=N: every window at device pixel ratio N (the variants with argument dpr:N run)
+    for (int i = 1; i < argc; ++i)
+        if (std::strncmp(argv[i], "--dpr=", 6) == 0) {
+            qputenv("QT_SCALE_FACTOR", argv[i] + 6);
+            std::copy(argv + i + 1, argv + argc, argv + i);
+            --argc;
+            break;
+        }
     QApplication app(argc, argv);
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv))
