@@ -105,6 +105,17 @@ std::string systemParameterList(SystemKind kind) {
     return list;
 }
 
+std::string systemParameterSummary(SystemKind kind) {
+    std::string plain, alternatives;
+    for (const SystemParameter& p : systemParameters(kind)) {
+        if (!p.alternative)
+            plain += (plain.empty() ? "" : ", ") + std::string(p.name);
+        else
+            alternatives += (alternatives.empty() ? "" : " or ") + std::string(p.name);
+    }
+    return alternatives.empty() ? plain : plain + ", and " + alternatives;
+}
+
 std::map<std::string, double> defaultSystemParams(SystemKind kind) {
     std::map<std::string, double> params;
     for (const SystemParameter& p : systemParameters(kind))

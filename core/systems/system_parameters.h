@@ -45,6 +45,9 @@ const SystemParameter* findSystemParameter(SystemKind kind, const std::string& n
 /// "m, a, I, b": the names a system accepts, for messages.
 std::string systemParameterList(SystemKind kind);
 
+/// "m, a, and I or b": what a system takes, its alternatives joined by "or", for help texts.
+std::string systemParameterSummary(SystemKind kind);
+
 /// Sets a parameter as typed. Of two alternatives (the sleigh's I and b) giving one drops the
 /// other, as --param, Sleigh(...), the sweep and the panel's gyration choice all do.
 void setSystemParameter(SystemSpec& spec, const std::string& name, double value);

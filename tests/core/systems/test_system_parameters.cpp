@@ -67,6 +67,9 @@ TEST(SystemParameters, NamesAreTheOnesTheDocumentsGive) {
     EXPECT_EQ(systemParameterList(SystemKind::Sleigh), "m, a, I, b");
     EXPECT_EQ(systemParameterList(SystemKind::Disk), "m, R, I1, I2");
     EXPECT_EQ(systemParameterList(SystemKind::Carriage), "R, a, m, I1, I2, M, I");
+    EXPECT_EQ(systemParameterSummary(SystemKind::Sleigh), "m, a, and I or b");
+    EXPECT_EQ(systemParameterSummary(SystemKind::Disk), "m, R, I1, I2");
+    EXPECT_EQ(systemParameterSummary(SystemKind::Carriage), "R, a, m, I1, I2, M, I");
 }
 
 TEST(SystemParameters, EveryRowIsComplete) {
