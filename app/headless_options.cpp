@@ -6,6 +6,8 @@
 #include "scene/perturbation.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
+#include "scene/speed_choice.h"
+#include "systems/system_parameters.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -175,6 +177,8 @@ void applyPerturbation(const OptionValues& given, Scene& s) {
     s.perturbation = p;
 }
 
+const SpeedSettingWords kCommandLineSpeedWords{"--vT", "--vs", "--mode energy", "--mode speed"};
+
 // --corners, --system, --param, --mode, --vT/--vs and --t-end on top of the base scene
 void applyOverrides(const OptionValues& given, Scene& s) {
     if (auto corners = given.value("--corners")) {
@@ -194,21 +198,11 @@ void applyOverrides(const OptionValues& given, Scene& s) {
             throw InputError("--param", "expects NAME=VALUE, got '" + v + "'");
         std::string name = trim(v.substr(0, eq));
         double value = parseNumber(trim(v.substr(eq + 1)), "--param " + name);
-        if (s.system.kind == SystemKind::Sleigh && (name == "I" || name == "b"))
-            s.system.params.erase(name == "I" ? "b" : "I");
-        s.system.params[name] = value;
+        setSystemParameter(s.system, name, value);
     }
     const auto mode = given.value("--mode"), vT = given.value("--vT"), vS = given.value("--vs");
-    if (mode)
-        s.mode = speedModeFromName(*mode);
-    if (vT && vS)
-        throw InputError("--vT", "give --vT (constant energy) or --vs (constant speed), not both");
-    if (vS && !mode)
-        s.mode = SpeedMode::Speed;
-    if (vT && s.mode == SpeedMode::Speed)
-        throw InputError("--vT", "is the constant-energy speed; in --mode speed give --vs");
-    if (vS && s.mode == SpeedMode::Energy)
-        throw InputError("--vs", "is the constant speed; in --mode energy give --vT");
+    s.mode = chooseSpeedMode(s.mode, mode ? std::optional(speedModeFromName(*mode)) : std::nullopt,
+                             vT.has_value(), vS.has_value(), kCommandLineSpeedWords);
     if (vT)
         s.speed = parseNumber(*vT, "--vT");
     if (vS)

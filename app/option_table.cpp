@@ -1,6 +1,7 @@
 #include "option_table.h"
 
 #include "common/input_error.h"
+#include "systems/system_parameters.h"
 
 #include <algorithm>
 #include <array>
@@ -13,8 +14,17 @@ namespace {
 constexpr unsigned kAllModes = Window | Screenshot | Headless;
 using S = OptionSection;
 
+// --param's help: each system's parameters, from the parameter table
+std::string_view parameterHelp() {
+    static const std::string help =
+        "repeatable. sleigh: " + systemParameterSummary(SystemKind::Sleigh) +
+        ";\ndisk: " + systemParameterSummary(SystemKind::Disk) +
+        "; carriage: " + systemParameterSummary(SystemKind::Carriage);
+    return help;
+}
+
 // clang-format off
-constexpr std::array kOptions = {
+const std::array kOptions = {
     OptionSpec{.name = "--presentation", .argument = "",
                .help = "start in presentation mode (full screen, large type); with\n"
                        "--screenshot, presentation mode at that size",
@@ -71,8 +81,7 @@ constexpr std::array kOptions = {
                .help = "default sleigh",
                .modes = kAllModes, .section = S::System},
     OptionSpec{.name = "--param", .argument = "NAME=VALUE",
-               .help = "repeatable. sleigh: m, a, and I or b;\n"
-                       "disk: m, R, I1, I2; carriage: R, a, m, I1, I2, M, I",
+               .help = parameterHelp(),
                .modes = kAllModes, .section = S::System, .repeatable = true},
     OptionSpec{.name = "--mode", .argument = "energy|speed",
                .help = "constant kinetic energy (default) or constant speed",

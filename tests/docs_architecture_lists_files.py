@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""docs/architecture.md names every source file of core/, ui/, app/ and python/.
+"""docs/architecture.md names every source file of core/, ui/ and app/ (with app/python/).
 
 Usage: docs_architecture_lists_files.py SOURCE_DIR. A .cpp or .h file counts as named when the
 document has its path below its top folder or below the source dir, with or without the
@@ -14,7 +14,7 @@ import os
 import re
 import sys
 
-TOPS = ("core", "ui", "app", "python")
+TOPS = ("core", "ui", "app")
 SOURCE = (".cpp", ".h")
 
 # a path-like name: folders, a name and an optional extension or pair of extensions

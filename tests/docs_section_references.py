@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Every reference to a section of the documentation names a section that exists.
 
-Usage: docs_section_references.py SOURCE_DIR. Scans the text files under core/, ui/, app/, python/, tests/,
+Usage: docs_section_references.py SOURCE_DIR. Scans the text files under core/, ui/, app/ (with app/python/), tests/,
 resources/ and scripts/ (.cpp .h .md .txt .json .ts .py .sh .cmake .in, CMakeLists.txt), the top
 CMakeLists.txt, README.md and docs/*.md for references such as "docs/physics.md §2",
 "numerics.md §3, §5", "(physics.md sec. 1 and 4)" or "(docs/robustness.md, Tests)", and checks them
@@ -19,7 +19,7 @@ import os
 import re
 import sys
 
-SCAN_DIRS = ("core", "ui", "app", "python", "tests", "resources", "scripts")
+SCAN_DIRS = ("core", "ui", "app", "tests", "resources", "scripts")
 EXTENSIONS = (".cpp", ".h", ".md", ".txt", ".json", ".ts", ".py", ".sh", ".cmake", ".in")
 # tests/ui/shell/test_help.cpp asks the help window for a document that does not exist
 DELIBERATELY_MISSING = {"no-such.md"}

@@ -39,16 +39,14 @@ std::vector<OdeValue> valuesOf(const DenseOutput& dense, const std::vector<doubl
     return v;
 }
 
-// positions on the path from the curve parameter
+// positions on the path from the curve parameter, the state's first component
 MethodOutput controlledFrom(const MethodCase& c, const std::vector<OdeValue>& values,
                             const OdeWork& work) {
-    MethodOutput out;
+    std::vector<double> us(values.size());
+    for (std::size_t i = 0; i < values.size(); ++i)
+        us[i] = values[i][0];
+    MethodOutput out = pointsOnCurve(*c.curve, us);
     out.work = work;
-    for (const OdeValue& v : values) {
-        CurvePoint p = c.curve->eval(v[0]);
-        out.x.push_back(p.x);
-        out.y.push_back(p.y);
-    }
     return out;
 }
 
@@ -110,13 +108,10 @@ void addControlled(const MethodCase& c, std::vector<Method>& out) {
     qag.description = "GSL QAG (Gauss-Kronrod 21) of dt/du, Newton for u(t)";
     qag.solve = [](const MethodCase& k, double tol, const std::vector<double>& times) {
         QuadratureTimeLaw law(*k.curve, k.params, tol);
-        MethodOutput o;
-        std::vector<double> us = law.invert(times, o.work);
-        for (double u : us) {
-            CurvePoint p = k.curve->eval(u);
-            o.x.push_back(p.x);
-            o.y.push_back(p.y);
-        }
+        OdeWork work;
+        std::vector<double> us = law.invert(times, work);
+        MethodOutput o = pointsOnCurve(*k.curve, us);
+        o.work = work;
         return o;
     };
     out.push_back(qag);
@@ -246,6 +241,18 @@ void addFree(std::vector<Method>& out) {
 }
 
 } // namespace
+
+MethodOutput pointsOnCurve(const Curve& curve, const std::vector<double>& us) {
+    MethodOutput out;
+    out.x.reserve(us.size());
+    out.y.reserve(us.size());
+    for (double u : us) {
+        const CurvePoint p = curve.eval(u);
+        out.x.push_back(p.x);
+        out.y.push_back(p.y);
+    }
+    return out;
+}
 
 MethodCase::MethodCase(const Scene& s) : MethodCase(s, buildPath(s.path)) {}
 

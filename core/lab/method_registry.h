@@ -46,6 +46,10 @@ struct MethodOutput {
     OdeWork work;
 };
 
+/// P = (x, y) on the curve at each curve parameter u of us: the controlled motion's positions once
+/// a method has found u(t).
+MethodOutput pointsOnCurve(const Curve& curve, const std::vector<double>& us);
+
 /// How a method's accuracy is set: not at all, by a tolerance, or by a fixed step [s].
 enum class SettingKind { None, Tolerance, StepSize };
 

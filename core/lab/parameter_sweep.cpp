@@ -5,6 +5,8 @@
 #include "common/input_error.h"
 #include "paths/path.h"
 #include "scene/solution.h"
+#include "scene/speed_choice.h"
+#include "systems/system_parameters.h"
 
 #include <algorithm>
 #include <array>
@@ -154,10 +156,10 @@ double sweepQuantityValue(const SweepRow& row, SweepQuantity q) {
 }
 
 std::vector<std::string> sweepParameterNames(SystemKind kind, SpeedMode mode) {
-    int n = 0;
-    const char* const* names = systemParameterNames(kind, &n);
-    std::vector<std::string> out(names, names + n);
-    out.push_back(mode == SpeedMode::Energy ? "vT" : "vs");
+    std::vector<std::string> out;
+    for (const SystemParameter& p : systemParameters(kind))
+        out.push_back(p.name);
+    out.push_back(speedParameter(mode).name);
     return out;
 }
 
@@ -189,9 +191,7 @@ Scene sceneWithParameter(const Scene& scene, const std::string& name, double val
         s.speed = value;
         return s;
     }
-    int n = 0;
-    const char* const* names = systemParameterNames(scene.system.kind, &n);
-    if (std::find(names, names + n, name) == names + n) {
+    if (!findSystemParameter(scene.system.kind, name)) {
         std::string list;
         for (const std::string& p : sweepParameterNames(scene.system.kind, scene.mode)) {
             if (!list.empty())
@@ -202,23 +202,17 @@ Scene sceneWithParameter(const Scene& scene, const std::string& name, double val
                                               systemKindName(scene.system.kind) + " (use " + list +
                                               ")");
     }
-    if (scene.system.kind == SystemKind::Sleigh && (name == "I" || name == "b"))
-        s.system.params.erase(name == "I" ? "b" : "I");
-    s.system.params[name] = value;
+    setSystemParameter(s.system, name, value);
     return s;
 }
 
 double sceneParameter(const Scene& scene, const std::string& name) {
     if (name == "vT" || name == "vs")
         return scene.speed;
-    auto it = scene.system.params.find(name);
-    if (it != scene.system.params.end())
-        return it->second;
-    if (scene.system.kind == SystemKind::Sleigh && (name == "b" || name == "I")) {
-        DerivedSystem d = deriveSystem(scene.system);
-        return name == "b" ? d.b : d.inertia();
-    }
-    throw InputError("sweep " + name, "the scene has no parameter " + name);
+    const SystemParameter* p = findSystemParameter(scene.system.kind, name);
+    if (!p || (!p->alternative && !scene.system.params.count(name)))
+        throw InputError("sweep " + name, "the scene has no parameter " + name);
+    return systemParameterValue(scene.system, name);
 }
 
 void validateSweep(const Scene& scene, const SweepSpec& spec) {

@@ -110,11 +110,7 @@ WorkPrecisionReport runWorkPrecision(const Scene& scene, const WorkPrecisionOpti
             // the tightest method, with a different rule (Gauss-Kronrod 61) from the swept one (21)
             QuadratureTimeLaw law(*c.curve, c.params, 1e-14, 61);
             OdeWork work;
-            for (double u : law.invert(tc, work)) {
-                CurvePoint p = c.curve->eval(u);
-                refControlled.x.push_back(p.x);
-                refControlled.y.push_back(p.y);
-            }
+            refControlled = pointsOnCurve(*c.curve, law.invert(tc, work));
             report.controlledReference = "controlled GSL QAG (Gauss-Kronrod 61) + Newton at "
                                          "tolerance 1e-14 (the tightest method)";
         } else {

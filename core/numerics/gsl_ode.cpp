@@ -60,15 +60,27 @@ struct DriverDeleter {
 };
 using DriverPtr = std::unique_ptr<gsl_odeiv2_driver, DriverDeleter>;
 
-} // namespace
+gsl_odeiv2_system systemOf(gsl::OdeAdapter& adapter, int n) {
+    return {&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian, static_cast<std::size_t>(n),
+            &adapter};
+}
 
-GslSolve integrateGsl(const OdeProblem& problem, GslStepper stepper, double t0, const double* y0,
-                      double t1, double tolerance) {
+StepPtr stepOf(GslStepper stepper, int n) {
+    StepPtr step(gsl_odeiv2_step_alloc(stepType(stepper), static_cast<std::size_t>(n)));
+    if (!step)
+        throw std::runtime_error("gsl_odeiv2_step_alloc failed");
+    return step;
+}
+
+// The adaptive solve from t0 to t1: free steps through the driver's own evolve, control and
+// stepper (msadams/msbdf need the driver), never clamped to output times. accepted(t, y, f) sees
+// the start and every accepted step, f = f(t, y).
+template <class Accepted>
+void driveGsl(const OdeProblem& problem, GslStepper stepper, double t0, const double* y0, double t1,
+              double tolerance, OdeWork& work, Accepted accepted) {
     const int n = problem.dimension();
-    GslSolve out{DenseOutput(n), OdeWork{}};
-    gsl::OdeAdapter adapter{&problem, &out.work};
-    gsl_odeiv2_system sys{&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian,
-                          static_cast<std::size_t>(n), &adapter};
+    gsl::OdeAdapter adapter{&problem, &work};
+    gsl_odeiv2_system sys = systemOf(adapter, n);
     gsl::ensureErrorHandlerOff();
     // a first step of tol^(1/4) of the span; the controller adapts it at once
     double h = (t1 - t0) * std::min(0.1, std::pow(tolerance, 0.25));
@@ -76,14 +88,12 @@ GslSolve integrateGsl(const OdeProblem& problem, GslStepper stepper, double t0, 
                                                           tolerance, 1.0, 0.0));
     if (!driver)
         throw std::runtime_error("gsl_odeiv2_driver_alloc failed");
-    std::array<double, kMaxOdeDimension> y{}, f{};
+    OdeValue y{}, f{};
     std::copy_n(y0, n, y.begin());
     double t = t0;
     problem.rhs(t, y.data(), f.data());
-    ++out.work.rhsEvals;
-    out.dense.add(problem, t, y.data(), f.data(), out.work);
-    // free steps through the driver's own evolve, control and stepper (msadams/msbdf need the
-    // driver); never clamped to output times
+    ++work.rhsEvals;
+    accepted(t, y, f);
     gsl_odeiv2_driver* d = driver.get();
     while (t < t1) {
         int status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, &sys, &t, t1, &h, y.data());
@@ -93,12 +103,23 @@ GslSolve integrateGsl(const OdeProblem& problem, GslStepper stepper, double t0, 
         // f(t, y) at the accepted point: every odeiv2 stepper leaves it in the evolve object's
         // dydt_out (already counted), equal bit for bit to a fresh evaluation
         std::copy_n(d->e->dydt_out, n, f.begin());
-        out.dense.add(problem, t, y.data(), f.data(), out.work);
-        if (out.work.rhsEvals > 50'000'000)
+        accepted(t, y, f);
+        if (work.rhsEvals > 50'000'000)
             throw std::runtime_error(gslStepperName(stepper) + ": too many steps");
     }
-    out.work.steps = static_cast<long>(d->e->count);
-    out.work.rejected = static_cast<long>(d->e->failed_steps);
+    work.steps = static_cast<long>(d->e->count);
+    work.rejected = static_cast<long>(d->e->failed_steps);
+}
+
+} // namespace
+
+GslSolve integrateGsl(const OdeProblem& problem, GslStepper stepper, double t0, const double* y0,
+                      double t1, double tolerance) {
+    GslSolve out{DenseOutput(problem.dimension()), OdeWork{}};
+    driveGsl(problem, stepper, t0, y0, t1, tolerance, out.work,
+             [&](double t, const OdeValue& y, const OdeValue& f) {
+                 out.dense.add(problem, t, y.data(), f.data(), out.work);
+             });
     return out;
 }
 
@@ -109,12 +130,9 @@ OdeWork integrateGslFixed(const OdeProblem& problem, GslStepper stepper, double 
     const int n = problem.dimension();
     OdeWork work;
     gsl::OdeAdapter adapter{&problem, &work};
-    gsl_odeiv2_system sys{&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian,
-                          static_cast<std::size_t>(n), &adapter};
+    gsl_odeiv2_system sys = systemOf(adapter, n);
     gsl::ensureErrorHandlerOff();
-    StepPtr step(gsl_odeiv2_step_alloc(stepType(stepper), static_cast<std::size_t>(n)));
-    if (!step)
-        throw std::runtime_error("gsl_odeiv2_step_alloc failed");
+    StepPtr step = stepOf(stepper, n);
     OdeValue err{};
     const double h = (t1 - t0) / static_cast<double>(steps);
     for (long i = 0; i < steps; ++i) {
@@ -137,12 +155,9 @@ std::vector<OdeValue> gslValuesAt(const OdeProblem& problem, GslStepper stepper,
         return out;
     }
     gsl::OdeAdapter adapter{&problem, &solve.work};
-    gsl_odeiv2_system sys{&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian,
-                          static_cast<std::size_t>(n), &adapter};
+    gsl_odeiv2_system sys = systemOf(adapter, n);
     gsl::ensureErrorHandlerOff();
-    StepPtr step(gsl_odeiv2_step_alloc(stepType(stepper), static_cast<std::size_t>(n)));
-    if (!step)
-        throw std::runtime_error("gsl_odeiv2_step_alloc failed");
+    StepPtr step = stepOf(stepper, n);
     OdeValue err{}, dydt{};
     for (std::size_t i = 0; i < times.size(); ++i) {
         const double t = times[i];
@@ -165,43 +180,15 @@ std::vector<OdeValue> gslValuesAt(const OdeProblem& problem, GslStepper stepper,
 GslSteps integrateGslSteps(const OdeProblem& problem, GslStepper stepper, double t0,
                            const double* y0, double t1, double tolerance,
                            const std::function<void(double, const double*)>& accepted) {
-    const int n = problem.dimension();
     GslSteps out;
-    gsl::OdeAdapter adapter{&problem, &out.work};
-    gsl_odeiv2_system sys{&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian,
-                          static_cast<std::size_t>(n), &adapter};
-    gsl::ensureErrorHandlerOff();
-    double h = (t1 - t0) * std::min(0.1, std::pow(tolerance, 0.25));
-    DriverPtr driver(gsl_odeiv2_driver_alloc_standard_new(&sys, stepType(stepper), h, tolerance,
-                                                          tolerance, 1.0, 0.0));
-    if (!driver)
-        throw std::runtime_error("gsl_odeiv2_driver_alloc failed");
-    OdeValue y{}, f{};
-    std::copy_n(y0, n, y.begin());
-    double t = t0;
-    problem.rhs(t, y.data(), f.data());
-    ++out.work.rhsEvals;
-    const auto keep = [&] {
-        out.t.push_back(t);
-        out.y.push_back(y);
-        out.f.push_back(f);
-        if (accepted)
-            accepted(t, y.data());
-    };
-    keep();
-    gsl_odeiv2_driver* d = driver.get();
-    while (t < t1) {
-        int status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, &sys, &t, t1, &h, y.data());
-        if (status != GSL_SUCCESS)
-            throw std::runtime_error(gslStepperName(stepper) + ": " + gsl_strerror(status) +
-                                     " at t = " + std::to_string(t));
-        std::copy_n(d->e->dydt_out, n, f.begin());
-        keep();
-        if (out.work.rhsEvals > 50'000'000)
-            throw std::runtime_error(gslStepperName(stepper) + ": too many steps");
-    }
-    out.work.steps = static_cast<long>(d->e->count);
-    out.work.rejected = static_cast<long>(d->e->failed_steps);
+    driveGsl(problem, stepper, t0, y0, t1, tolerance, out.work,
+             [&](double t, const OdeValue& y, const OdeValue& f) {
+                 out.t.push_back(t);
+                 out.y.push_back(y);
+                 out.f.push_back(f);
+                 if (accepted)
+                     accepted(t, y.data());
+             });
     return out;
 }
 
@@ -219,12 +206,9 @@ void gslStepFrom(const OdeProblem& problem, GslStepper stepper, const GslSteps& 
         return;
     OdeWork work;
     gsl::OdeAdapter adapter{&problem, &work};
-    gsl_odeiv2_system sys{&gsl::OdeAdapter::rhs, &gsl::OdeAdapter::jacobian,
-                          static_cast<std::size_t>(n), &adapter};
+    gsl_odeiv2_system sys = systemOf(adapter, n);
     gsl::ensureErrorHandlerOff();
-    StepPtr step(gsl_odeiv2_step_alloc(stepType(stepper), static_cast<std::size_t>(n)));
-    if (!step)
-        throw std::runtime_error("gsl_odeiv2_step_alloc failed");
+    StepPtr step = stepOf(stepper, n);
     OdeValue err{}, dydt = steps.f[k];
     int status =
         gsl_odeiv2_step_apply(step.get(), tk, t - tk, out, err.data(), dydt.data(), nullptr, &sys);

@@ -1,71 +1,52 @@
 #include "systems/system.h"
 
 #include "common/input_error.h"
+#include "systems/system_parameters.h"
 
 #include <cmath>
-#include <set>
 
 namespace chaplygin {
 namespace {
-
-const char* const kSleighNames[] = {"m", "a", "I", "b"};
-const char* const kDiskNames[] = {"m", "R", "I1", "I2"};
-const char* const kCarriageNames[] = {"R", "a", "m", "I1", "I2", "M", "I"};
 
 std::string where(const std::string& name) {
     return "parameter " + name;
 }
 
-double get(const SystemSpec& spec, const std::string& name) {
+// the value, checked against the bound the parameter table gives it
+double value(const SystemSpec& spec, const std::string& name) {
     auto it = spec.params.find(name);
     if (it == spec.params.end())
         throw InputError(where(name), "missing (the " + systemKindName(spec.kind) + " needs it)");
-    if (!std::isfinite(it->second))
-        throw InputError(where(name), "must be a finite number, got " + formatNumber(it->second));
-    return it->second;
-}
-
-double positive(const SystemSpec& spec, const std::string& name) {
-    double v = get(spec, name);
-    if (!(v > 0))
+    const double v = it->second;
+    if (!std::isfinite(v))
+        throw InputError(where(name), "must be a finite number, got " + formatNumber(v));
+    const SystemParameter* p = findSystemParameter(spec.kind, name);
+    if (p && p->bound == ParameterBound::Positive && !(v > 0))
         throw InputError(where(name), "must be > 0, got " + formatNumber(v));
-    return v;
-}
-
-double nonNegative(const SystemSpec& spec, const std::string& name) {
-    double v = get(spec, name);
-    if (!(v >= 0))
+    if (p && p->bound == ParameterBound::NonNegative && !(v >= 0))
         throw InputError(where(name), "must be >= 0, got " + formatNumber(v));
     return v;
 }
 
 void rejectUnknown(const SystemSpec& spec) {
-    int n = 0;
-    const char* const* names = systemParameterNames(spec.kind, &n);
-    std::set<std::string> allowed(names, names + n);
-    for (const auto& [name, value] : spec.params) {
-        if (!allowed.count(name)) {
-            std::string list;
-            for (int i = 0; i < n; ++i)
-                list += (i ? ", " : "") + std::string(names[i]);
+    for (const auto& [name, v] : spec.params)
+        if (!findSystemParameter(spec.kind, name))
             throw InputError(where(name), "unknown for the " + systemKindName(spec.kind) +
-                                              " (allowed: " + list + ")");
-        }
-    }
+                                              " (allowed: " + systemParameterList(spec.kind) + ")");
 }
 
 DerivedSystem sleigh(const SystemSpec& spec) {
     DerivedSystem d;
-    d.mass = positive(spec, "m");
-    d.a = get(spec, "a");
+    d.mass = value(spec, "m");
+    d.a = value(spec, "a");
     bool hasI = spec.params.count("I") != 0, hasB = spec.params.count("b") != 0;
     if (hasI == hasB)
         throw InputError("parameter I or b", "give exactly one of I and b (b^2 = a^2 + I/m)");
     if (hasI) {
-        double inertia = nonNegative(spec, "I");
+        double inertia = value(spec, "I");
         d.b = std::sqrt(d.a * d.a + inertia / d.mass);
     } else {
-        d.b = positive(spec, "b");
+        d.b = value(spec, "b");
         if (d.b < std::fabs(d.a))
             throw InputError(where("b"), "must be >= |a| = " + formatNumber(std::fabs(d.a)) +
                                              " (b^2 = a^2 + I/m with I >= 0), got " +
@@ -79,8 +60,8 @@ DerivedSystem sleigh(const SystemSpec& spec) {
 
 // vertical rolling disk, paper (A14): b = R sqrt(I2/(I1 + m R^2)), M_eff = m + I1/R^2, a = 0
 DerivedSystem disk(const SystemSpec& spec) {
-    double m = positive(spec, "m"), r = positive(spec, "R");
-    double i1 = nonNegative(spec, "I1"), i2 = positive(spec, "I2");
+    double m = value(spec, "m"), r = value(spec, "R");
+    double i1 = value(spec, "I1"), i2 = value(spec, "I2");
     DerivedSystem d;
     d.mass = m + i1 / (r * r);
     d.a = 0.0;
@@ -93,9 +74,9 @@ DerivedSystem disk(const SystemSpec& spec) {
 // J = I + 2 I2 + 2 a^2 (m + I1/R^2). Here a is half the axle: the centre of mass sits at the
 // axle's centre (App. B), so the CM offset is 0 and b may be smaller than the half-axle.
 DerivedSystem carriage(const SystemSpec& spec) {
-    double r = positive(spec, "R"), a = nonNegative(spec, "a"), m = nonNegative(spec, "m");
-    double i1 = nonNegative(spec, "I1"), i2 = nonNegative(spec, "I2");
-    double bigM = nonNegative(spec, "M"), inertia = nonNegative(spec, "I");
+    double r = value(spec, "R"), a = value(spec, "a"), m = value(spec, "m");
+    double i1 = value(spec, "I1"), i2 = value(spec, "I2");
+    double bigM = value(spec, "M"), inertia = value(spec, "I");
     double wheel = m + i1 / (r * r);
     DerivedSystem d;
     d.mass = bigM + 2 * wheel;
@@ -112,22 +93,6 @@ DerivedSystem carriage(const SystemSpec& spec) {
 }
 
 } // namespace
-
-const char* const* systemParameterNames(SystemKind kind, int* count) {
-    switch (kind) {
-    case SystemKind::Sleigh:
-        *count = 4;
-        return kSleighNames;
-    case SystemKind::Disk:
-        *count = 4;
-        return kDiskNames;
-    case SystemKind::Carriage:
-        *count = 7;
-        return kCarriageNames;
-    }
-    *count = 0;
-    return nullptr;
-}
 
 DerivedSystem deriveSystem(const SystemSpec& spec) {
     rejectUnknown(spec);
@@ -162,20 +127,6 @@ std::string systemKindName(SystemKind kind) {
         return "carriage";
     }
     return "?";
-}
-
-std::map<std::string, double> defaultSystemParams(SystemKind kind) {
-    switch (kind) {
-    case SystemKind::Sleigh:
-        return {{"m", 1.0}, {"a", 0.5}, {"b", 1.0}};
-    case SystemKind::Disk: // uniform disk: I1 = m R^2/2 about the axle, I2 = m R^2/4 about a
-                           // diameter
-        return {{"m", 1.0}, {"R", 0.5}, {"I1", 0.125}, {"I2", 0.0625}};
-    case SystemKind::Carriage:
-        return {{"R", 0.3},      {"a", 0.2}, {"m", 0.5}, {"I1", 0.0225},
-                {"I2", 0.01125}, {"M", 2.0}, {"I", 0.2}};
-    }
-    return {};
 }
 
 } // namespace chaplygin

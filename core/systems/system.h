@@ -40,10 +40,8 @@ DerivedSystem deriveSystem(const SystemSpec& spec);
 SystemKind systemKindFromName(const std::string& name);
 std::string systemKindName(SystemKind kind);
 
-/// The parameter names each system accepts, in display order.
-const char* const* systemParameterNames(SystemKind kind, int* count);
-
-/// Default parameters of each system (SI units), used when a scene does not give them.
+/// Default parameters of each system (SI units), used when a scene does not give them: the
+/// defaults of the parameter table (systems/system_parameters.h).
 std::map<std::string, double> defaultSystemParams(SystemKind kind);
 
 } // namespace chaplygin

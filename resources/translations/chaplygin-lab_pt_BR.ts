@@ -493,6 +493,125 @@ realimentação: %2</translation>
     </message>
 </context>
 <context>
+    <name>SystemParameters</name>
+    <message>
+        <source>mass m</source>
+        <translation>massa m</translation>
+    </message>
+    <message>
+        <source>The sleigh&apos;s mass</source>
+        <translation>A massa do trenó</translation>
+    </message>
+    <message>
+        <source>CM offset a</source>
+        <translation>deslocamento a do CM</translation>
+    </message>
+    <message>
+        <source>How far the centre of mass lies ahead of the knife&apos;s contact point P (negative: behind it)</source>
+        <translation>A que distância o centro de massa fica à frente do ponto de contato P da lâmina (negativo: atrás dele)</translation>
+    </message>
+    <message>
+        <source>moment of inertia I about the CM</source>
+        <translation>momento de inércia I em relação ao CM</translation>
+    </message>
+    <message>
+        <source>The moment of inertia about the centre of mass; b² = a² + I/m</source>
+        <translation>O momento de inércia em relação ao centro de massa; b² = a² + I/m</translation>
+    </message>
+    <message>
+        <source>gyration radius b about P</source>
+        <translation>raio de giração b em relação a P</translation>
+    </message>
+    <message>
+        <source>The radius of gyration about the contact point P; b² = a² + I/m, so b ≥ |a|</source>
+        <translation>O raio de giração em relação ao ponto de contato P; b² = a² + I/m, logo b ≥ |a|</translation>
+    </message>
+    <message>
+        <source>The disk&apos;s mass</source>
+        <translation>A massa do disco</translation>
+    </message>
+    <message>
+        <source>wheel radius R</source>
+        <translation>raio da roda R</translation>
+    </message>
+    <message>
+        <source>The disk&apos;s radius</source>
+        <translation>O raio do disco</translation>
+    </message>
+    <message>
+        <source>wheel inertia I1 about its axle</source>
+        <translation>inércia da roda I1 em relação ao seu eixo</translation>
+    </message>
+    <message>
+        <source>The moment of inertia about the axle (a uniform disk: m R²/2)</source>
+        <translation>O momento de inércia em relação ao eixo (um disco uniforme: m R²/2)</translation>
+    </message>
+    <message>
+        <source>wheel inertia I2 about a diameter</source>
+        <translation>inércia da roda I2 em relação a um diâmetro</translation>
+    </message>
+    <message>
+        <source>The moment of inertia about a vertical diameter (a uniform disk: m R²/4)</source>
+        <translation>O momento de inércia em relação a um diâmetro vertical (um disco uniforme: m R²/4)</translation>
+    </message>
+    <message>
+        <source>The radius of each wheel</source>
+        <translation>O raio de cada roda</translation>
+    </message>
+    <message>
+        <source>Half the axle: each wheel is a from the axle&apos;s centre, where the centre of mass is</source>
+        <translation>Metade do eixo: cada roda fica a a do centro do eixo, onde está o centro de massa</translation>
+    </message>
+    <message>
+        <source>wheel mass m</source>
+        <translation>massa da roda m</translation>
+    </message>
+    <message>
+        <source>The mass of each wheel</source>
+        <translation>A massa de cada roda</translation>
+    </message>
+    <message>
+        <source>Each wheel&apos;s moment of inertia about the axle</source>
+        <translation>O momento de inércia de cada roda em relação ao eixo</translation>
+    </message>
+    <message>
+        <source>Each wheel&apos;s moment of inertia about a vertical diameter</source>
+        <translation>O momento de inércia de cada roda em relação a um diâmetro vertical</translation>
+    </message>
+    <message>
+        <source>carriage body mass M</source>
+        <translation>massa do corpo do carrinho M</translation>
+    </message>
+    <message>
+        <source>The mass of the body without its wheels</source>
+        <translation>A massa do corpo sem as rodas</translation>
+    </message>
+    <message>
+        <source>body&apos;s moment of inertia I about the axle&apos;s centre</source>
+        <translation>momento de inércia I do corpo em relação ao centro do eixo</translation>
+    </message>
+    <message>
+        <source>The body&apos;s moment of inertia about the vertical axis through the axle&apos;s centre</source>
+        <translation>O momento de inércia do corpo em relação ao eixo vertical que passa pelo centro do eixo</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>velocidade</translation>
+    </message>
+    <message>
+        <source>v_T = √(2T/m_eff), the speed the kinetic energy is worth</source>
+        <translation>v_T = √(2T/m_eff), a velocidade que corresponde à energia cinética</translation>
+    </message>
+    <message>
+        <source>v_s, the constant speed of P along the path</source>
+        <translation>v_s, a velocidade constante de P ao longo do caminho</translation>
+    </message>
+    <message>
+        <source>half-axle a (wheels at ±a across the heading)</source>
+        <translation>semieixo a (rodas em ±a, transversais à direção)</translation>
+    </message>
+</context>
+<context>
     <name>VectorPainter</name>
     <message>
         <source>Knife point velocity v_P</source>
@@ -1447,14 +1566,6 @@ O que os estudantes devem observar…</translation>
         <translation>&amp;Modo</translation>
     </message>
     <message>
-        <source>v_T = √(2T/m_eff), the speed the kinetic energy is worth</source>
-        <translation>v_T = √(2T/m_eff), a velocidade que corresponde à energia cinética</translation>
-    </message>
-    <message>
-        <source>v_s, the constant speed of P along the path</source>
-        <translation>v_s, a velocidade constante de P ao longo do caminho</translation>
-    </message>
-    <message>
         <source>speed</source>
         <translation>velocidade</translation>
     </message>
@@ -1487,56 +1598,16 @@ O que os estudantes devem observar…</translation>
         <translation>Velocidade constante</translation>
     </message>
     <message>
-        <source>half-axle a (wheels at ±a across the heading)</source>
-        <translation>semieixo a (rodas em ±a, transversais à direção)</translation>
-    </message>
-    <message>
-        <source>wheel mass m</source>
-        <translation>massa da roda m</translation>
-    </message>
-    <message>
-        <source>body&apos;s moment of inertia I about the axle&apos;s centre</source>
-        <translation>momento de inércia I do corpo em relação ao centro do eixo</translation>
-    </message>
-    <message>
-        <source>mass m</source>
-        <translation>massa m</translation>
-    </message>
-    <message>
-        <source>CM offset a</source>
-        <translation>deslocamento a do CM</translation>
-    </message>
-    <message>
-        <source>gyration radius b about P</source>
-        <translation>raio de giração b em relação a P</translation>
-    </message>
-    <message>
-        <source>moment of inertia I about the CM</source>
-        <translation>momento de inércia I em relação ao CM</translation>
-    </message>
-    <message>
-        <source>wheel radius R</source>
-        <translation>raio da roda R</translation>
-    </message>
-    <message>
-        <source>wheel inertia I1 about its axle</source>
-        <translation>inércia da roda I1 em relação ao seu eixo</translation>
-    </message>
-    <message>
-        <source>wheel inertia I2 about a diameter</source>
-        <translation>inércia da roda I2 em relação a um diâmetro</translation>
-    </message>
-    <message>
-        <source>carriage body mass M</source>
-        <translation>massa do corpo do carrinho M</translation>
-    </message>
-    <message>
         <source>m_eff = %1 kg, CM offset = %2 m, b = %3 m, I about the CM = %4 kg m²</source>
         <translation>m_eff = %1 kg, deslocamento do CM = %2 m, b = %3 m, I em relação ao CM = %4 kg m²</translation>
     </message>
     <message>
         <source>invalid: %1</source>
         <translation>inválido: %1</translation>
+    </message>
+    <message>
+        <source>%1 [%2]: %3; slider %4 … %5 %2</source>
+        <translation>%1 [%2]: %3; controle deslizante %4 … %5 %2</translation>
     </message>
 </context>
 <context>

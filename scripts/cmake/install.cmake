@@ -50,7 +50,7 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 # Depends from the libraries the program links (Qt 6, GSL, muparser, GiNaC), via dpkg-shlibdeps
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-# the Python module (python/CMakeLists.txt) is an extension of the python3 it was built for: that
+# the Python module (app/python/CMakeLists.txt) is an extension of the python3 it was built for: that
 # minor version, and NumPy for its arrays (Debian's python policy for extension modules)
 if(CHAPLYGIN_PYTHON)
   set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3 (>= ${CHAPLYGIN_PYTHON_VERSION}~), \

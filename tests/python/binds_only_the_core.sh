@@ -13,11 +13,11 @@ if echo "$commands" | grep -qiE 'qt6|qtcore|qcustomplot'; then
   echo "chaplygin_lab is compiled with Qt on its include path"; exit 1
 fi
 core_folders=$(cd "$src/core" && ls -d */ | tr -d / | paste -sd '|')
-bad=$(grep -hoE '#include[[:space:]]*"[^"]+"' "$src"/python/*.cpp "$src"/python/*.h |
+bad=$(grep -hoE '#include[[:space:]]*"[^"]+"' "$src"/app/python/*.cpp "$src"/app/python/*.h |
   grep -vE "\"(($core_folders)/[a-z_]+\\.h|bindings\\.h)\"")
-[ -z "$bad" ] || { echo "python/ includes what is not the core: $bad"; exit 1; }
-if grep -lE '#include[[:space:]]*<(Q[A-Za-z]|qcustomplot)' "$src"/python/*; then
-  echo "python/ includes a Qt header"; exit 1
+[ -z "$bad" ] || { echo "app/python/ includes what is not the core: $bad"; exit 1; }
+if grep -lE '#include[[:space:]]*<(Q[A-Za-z]|qcustomplot)' "$src"/app/python/*; then
+  echo "app/python/ includes a Qt header"; exit 1
 fi
 needed=$(readelf -d "$module" | grep NEEDED)
 if echo "$needed" | grep -qiE 'qt|qcustomplot'; then

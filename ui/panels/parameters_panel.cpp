@@ -1,9 +1,11 @@
 #include "panels/parameters_panel.h"
 
 #include "common/input_error.h"
-#include "systems/system.h"
+#include "scene/speed_choice.h"
+#include "systems/system_parameters.h"
 
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -21,49 +23,8 @@ namespace {
 
 constexpr int kSliderSteps = 1000;
 
-struct ParamInfo {
-    const char* label;
-    const char* unit;
-    double lo, hi; // slider range; the spin box accepts more
-};
-
-ParamInfo paramInfo(SystemKind kind, const std::string& name) {
-    if (kind == SystemKind::Carriage && name == "a") // App. B: a is half the axle, not an offset
-        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "half-axle a (wheels at \u00b1"
-                                                                    "a across the heading)"),
-                "m", 0, 2};
-    if (kind == SystemKind::Carriage && name == "m")
-        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "wheel mass m"), "kg", 0, 10};
-    if (kind == SystemKind::Carriage && name == "I")
-        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel",
-                                  "body's moment of inertia I about the axle's centre"),
-                "kg m\u00b2", 0, 10};
-    if (name == "m")
-        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "mass m"), "kg", 0.05, 10};
-    if (name == "a")
-        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "CM offset a"), "m", -2, 2};
-    if (name == "b")
-        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "gyration radius b about P"),
-                "m", 0.05, 5};
-    if (name == "I")
-        return {
-            QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "moment of inertia I about the CM"),
-            "kg m\u00b2", 0, 10};
-    if (name == "R")
-        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "wheel radius R"), "m", 0.05,
-                2};
-    if (name == "I1")
-        return {
-            QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "wheel inertia I1 about its axle"),
-            "kg m\u00b2", 0, 2};
-    if (name == "I2")
-        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel",
-                                  "wheel inertia I2 about a diameter"),
-                "kg m\u00b2", 0, 2};
-    if (name == "M")
-        return {QT_TRANSLATE_NOOP("chaplygin::ui::ParametersPanel", "carriage body mass M"), "kg",
-                0, 20};
-    return {"", "", 0, 10};
+QString translated(const char* text) {
+    return QCoreApplication::translate(kSystemParameterContext, text);
 }
 
 int toSlider(double v, double lo, double hi) {
@@ -131,14 +92,16 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     connect(m_mode, &QComboBox::activated, this, &ParametersPanel::onModeChosen);
 }
 
-ParametersPanel::Row ParametersPanel::addRow(const QString& name, const QString& caption,
-                                             const QString& label, const QString& unit, double lo,
-                                             double hi, double value) {
+ParametersPanel::Row ParametersPanel::addRow(const QString& name, const SystemParameter& parameter,
+                                             double value) {
+    const double lo = parameter.sliderMin, hi = parameter.sliderMax;
+    const QString unit = QString::fromUtf8(parameter.unit);
+    const QString caption = QString::fromUtf8(parameter.symbol);
     Row row;
     row.spin = new QDoubleSpinBox;
     row.spin->setObjectName(QStringLiteral("spin_") + name);
     row.spin->setDecimals(4);
-    row.spin->setRange(lo < 0 ? -1000 : 0, 1000);
+    row.spin->setRange(parameter.bound == ParameterBound::Any ? -1000 : 0, 1000);
     row.spin->setSingleStep((hi - lo) / 100);
     row.spin->setKeyboardTracking(false);
     row.spin->setValue(value);
@@ -147,8 +110,8 @@ ParametersPanel::Row ParametersPanel::addRow(const QString& name, const QString&
     row.slider->setObjectName(QStringLiteral("slider_") + name);
     row.slider->setRange(0, kSliderSteps);
     row.slider->setValue(toSlider(value, lo, hi));
-    QString tip = QStringLiteral("%1 %2 [%3]; slider %4 \u2026 %5 %3")
-                      .arg(label, caption, unit)
+    QString tip = tr("%1 [%2]: %3; slider %4 \u2026 %5 %2")
+                      .arg(translated(parameter.label), unit, translated(parameter.tooltip))
                       .arg(lo)
                       .arg(hi);
     row.spin->setToolTip(tip);
@@ -189,25 +152,16 @@ void ParametersPanel::rebuildRows() {
     while (m_form->rowCount() > 0)
         m_form->removeRow(0);
     m_rows.clear();
-    int count = 0;
-    const char* const* names = systemParameterNames(m_scene.system.kind, &count);
-    for (int i = 0; i < count; ++i) {
-        std::string name = names[i];
-        auto it = m_scene.system.params.find(name);
+    for (const SystemParameter& parameter : systemParameters(m_scene.system.kind)) {
+        auto it = m_scene.system.params.find(parameter.name);
         if (it == m_scene.system.params.end())
             continue; // the sleigh has b or I, not both
-        ParamInfo info = paramInfo(m_scene.system.kind, name);
-        QString qname = QString::fromStdString(name);
-        m_rows[qname] = addRow(qname, qname, tr(info.label), QString::fromUtf8(info.unit), info.lo,
-                               info.hi, it->second);
+        QString name = QString::fromUtf8(parameter.name);
+        m_rows[name] = addRow(name, parameter, it->second);
     }
-    bool energy = m_scene.mode == SpeedMode::Energy;
-    QString speedName = energy ? QStringLiteral("v_T") : QStringLiteral("v_s");
-    m_speedLabel->setText(energy
-                              ? tr("v_T = \u221a(2T/m_eff), the speed the kinetic energy is worth")
-                              : tr("v_s, the constant speed of P along the path"));
-    m_rows[QStringLiteral("speed")] = addRow(QStringLiteral("speed"), speedName, tr("speed"),
-                                             QStringLiteral("m/s"), 0.05, 5, m_scene.speed);
+    const SystemParameter& speed = speedParameter(m_scene.mode);
+    m_speedLabel->setText(translated(speed.tooltip));
+    m_rows[QStringLiteral("speed")] = addRow(QStringLiteral("speed"), speed, m_scene.speed);
 }
 
 void ParametersPanel::setScene(const Scene& scene) {
@@ -234,10 +188,11 @@ void ParametersPanel::setScene(const Scene& scene) {
                                                        : scene.system.params.at(name.toStdString());
             if (row.spin->value() != v) {
                 row.spin->setValue(v);
-                ParamInfo info = paramInfo(m_scene.system.kind, name.toStdString());
-                if (name == QStringLiteral("speed"))
-                    info = {"", "", 0.05, 5};
-                row.slider->setValue(toSlider(v, info.lo, info.hi));
+                const SystemParameter& parameter =
+                    name == QStringLiteral("speed")
+                        ? speedParameter(m_scene.mode)
+                        : *findSystemParameter(m_scene.system.kind, name.toStdString());
+                row.slider->setValue(toSlider(v, parameter.sliderMin, parameter.sliderMax));
             }
         }
     }
@@ -326,8 +281,7 @@ void ParametersPanel::onGyrationChosen(int index) {
     Scene next = m_scene;
     try {
         DerivedSystem d = deriveSystem(m_scene.system);
-        next.system.params.erase(wantI ? "b" : "I");
-        next.system.params[wantI ? "I" : "b"] = wantI ? d.inertia() : d.b;
+        setSystemParameter(next.system, wantI ? "I" : "b", wantI ? d.inertia() : d.b);
     } catch (const InputError& e) {
         showError(QString::fromStdString(e.what()));
         return;

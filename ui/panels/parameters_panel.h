@@ -1,5 +1,6 @@
 #pragma once
 #include "scene/scene.h"
+#include "systems/system_parameters.h"
 
 #include <QString>
 #include <QWidget>
@@ -45,9 +46,8 @@ class ParametersPanel : public QWidget {
         QSlider* slider = nullptr;
     };
     void rebuildRows();
-    /// name: the key ("m", ..., "speed"); caption: the row's label; label: words for the tooltip.
-    Row addRow(const QString& name, const QString& caption, const QString& label,
-               const QString& unit, double lo, double hi, double value);
+    /// name: the key ("m", ..., "speed"); the caption, unit, range and words from the table.
+    Row addRow(const QString& name, const SystemParameter& parameter, double value);
     void onValueChanged(const QString& name, double value);
     void onSystemChosen(int index);
     void onGyrationChosen(int index);

@@ -14,7 +14,7 @@
    at the loosest tolerance of 1e-10, 1e-11, ... that reaches the module's error (or its tightest,
    1e-13), and is timed solving and evaluating its dense output at the same 10^6 times.
 
-Usage: PYTHONPATH=build/release/python /usr/bin/python3 tests/perf/numerics/python_sampling.py"""
+Usage: PYTHONPATH=build/release/app/python /usr/bin/python3 tests/perf/numerics/python_sampling.py"""
 import math
 import os
 import time

@@ -8,7 +8,8 @@
 #include "scene/perturbation.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
-#include "systems/system.h"
+#include "scene/speed_choice.h"
+#include "systems/system_parameters.h"
 
 #include <pybind11/stl.h>
 
@@ -22,16 +23,14 @@ namespace py = pybind11;
 namespace chaplygin::python {
 namespace {
 
-// Sleigh(m=1, a=0.5, b=1): the system's defaults with the given parameters on top. For the sleigh
-// I and b are alternatives: giving one drops the other, as --param does. Checked at once.
+// Sleigh(m=1, a=0.5, b=1): the system's defaults with the given parameters on top, set as --param
+// sets them (the sleigh's I and b are alternatives). Checked at once.
 SystemSpec makeSystem(SystemKind kind, const py::kwargs& params) {
     SystemSpec spec{kind, defaultSystemParams(kind)};
     for (const auto& [key, value] : params) {
         const std::string name = py::str(key);
         const double v = numberArgument(value, "parameter " + name);
-        if (kind == SystemKind::Sleigh && (name == "I" || name == "b"))
-            spec.params.erase(name == "I" ? "b" : "I");
-        spec.params[name] = v;
+        setSystemParameter(spec, name, v);
     }
     deriveSystem(spec);
     return spec;
@@ -41,11 +40,9 @@ std::string systemRepr(const SystemSpec& spec) {
     std::string kind = systemKindName(spec.kind);
     kind[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(kind[0])));
     std::string out = kind + "(";
-    int count = 0;
-    const char* const* names = systemParameterNames(spec.kind, &count);
     bool first = true;
-    for (int i = 0; i < count; ++i) {
-        if (auto it = spec.params.find(names[i]); it != spec.params.end()) {
+    for (const SystemParameter& p : systemParameters(spec.kind)) {
+        if (auto it = spec.params.find(p.name); it != spec.params.end()) {
             out += (first ? "" : ", ") + it->first + "=" + formatNumber(it->second);
             first = false;
         }
@@ -120,20 +117,14 @@ std::optional<double> optionalNumber(const py::object& value, const std::string&
     return numberArgument(value, where);
 }
 
+const SpeedSettingWords kPythonSpeedWords{"v_T", "v_s", "mode \"energy\"", "mode \"speed\""};
+
 // mode, v_T and v_s as the command line takes --mode, --vT and --vs
 void setMotion(Scene& s, const std::optional<std::string>& mode, const py::object& vTArg,
                const py::object& vSArg) {
     const auto vT = optionalNumber(vTArg, "v_T"), vS = optionalNumber(vSArg, "v_s");
-    if (mode)
-        s.mode = speedModeFromName(*mode);
-    if (vT && vS)
-        throw InputError("v_T", "give v_T (constant energy) or v_s (constant speed), not both");
-    if (vS && !mode)
-        s.mode = SpeedMode::Speed;
-    if (vT && s.mode == SpeedMode::Speed)
-        throw InputError("v_T", "is the constant-energy speed; in mode \"speed\" give v_s");
-    if (vS && s.mode == SpeedMode::Energy)
-        throw InputError("v_s", "is the constant speed; in mode \"energy\" give v_T");
+    s.mode = chooseSpeedMode(s.mode, mode ? std::optional(speedModeFromName(*mode)) : std::nullopt,
+                             vT.has_value(), vS.has_value(), kPythonSpeedWords);
     if (vT)
         s.speed = *vT;
     if (vS)
