@@ -110,6 +110,7 @@ struct CurvePoint {
     double psi0 = 0, lambda0 = 0;
     bool valid = false;
     double t = 0, period = 0, along = 0, drift = 0;
+    double k = 0;
 };
 
 CurvePoint curvePoint(double psi0, double lambda0, const Target& tg) {
@@ -134,6 +135,7 @@ CurvePoint curvePoint(double psi0, double lambda0, const Target& tg) {
     const UnitGeodesicPoint p = g.at(pass->t);
     const double k = std::sqrt(k2);
     cp.valid = true;
+    cp.k = k;
     cp.t = pass->t;
     cp.period = pass->period;
     cp.along = ((p.x - tg.X) * s0 + (p.y - tg.Y) * lambda0) / k;
@@ -164,6 +166,57 @@ template <class F> double edgeRoot(F&& G, double a, double Ga, double b, double 
         }
     }
     return 0.5 * (a + b);
+}
+
+// the passage of b that continues the n-th of a: the nearest in time, within half a period
+int pairedPassage(const CurvePoint& a, const CurvePoint& b, int n) {
+    const double ta = a.t + n * a.period;
+    int best = -1;
+    double bestGap = 0.5 * std::min(a.period, b.period);
+    for (int m = std::max(0, n - 1); m <= n + 1; ++m) {
+        const double gap = std::fabs(b.t + m * b.period - ta);
+        if (gap < bestGap) {
+            bestGap = gap;
+            best = m;
+        }
+    }
+    return best;
+}
+
+// how far a piece of the curve is from smooth: 0 when both ends have the same kind of orbit and
+// nearly the same first passage (or neither has one), 1 when the first passage moves a lot, 2 at
+// a change of orbit or where the passage ends
+int roughness(const CurvePoint& a, const CurvePoint& b) {
+    if (!a.valid && !b.valid)
+        return 0;
+    if (a.valid != b.valid || (a.k < 1) != (b.k < 1))
+        return 2;
+    const int m = pairedPassage(a, b, 0);
+    if (m < 0)
+        return 2;
+    const double gap = std::fabs(b.t + m * b.period - a.t);
+    return gap <= 0.05 * (1 + a.t) ? 0 : 1;
+}
+
+// the point of G = 0 nearest to (psi0, lambda0), by Newton steps along G's gradient
+std::optional<std::pair<double, double>> projectOnCurve(double psi0, double lambda0,
+                                                        const Target& tg) {
+    const double cP = std::cos(tg.Phi), sP = std::sin(tg.Phi);
+    for (int i = 0; i < 20; ++i) {
+        const double s0 = std::sin(psi0), c0 = std::cos(psi0);
+        const double s1 = s0 * cP + lambda0 * sP, c1 = c0 + tg.Y * s0 - tg.X * lambda0;
+        const double G = s1 * s1 + c1 * c1 - 1;
+        if (std::fabs(G) < 1e-15)
+            return std::make_pair(psi0, lambda0);
+        const double gPsi = 2 * s1 * c0 * cP + 2 * c1 * (tg.Y * c0 - s0);
+        const double gLam = 2 * s1 * sP - 2 * c1 * tg.X;
+        const double g2 = gPsi * gPsi + gLam * gLam;
+        if (!(g2 > 0))
+            return std::nullopt;
+        psi0 -= G * gPsi / g2;
+        lambda0 -= G * gLam / g2;
+    }
+    return std::nullopt;
 }
 
 // Seeds for Newton: where the along-P miss of one passage changes sign between two neighbouring
@@ -215,23 +268,13 @@ std::vector<UnitSolution> curveSeeds(const Target& tg, double tMax, double kMax)
 
     std::vector<UnitSolution> seeds;
     auto link = [&](const CurvePoint& a, const CurvePoint& b) {
-        if (!a.valid || !b.valid)
-            return;
         const double jump = 0.5 * std::min(a.period, b.period);
         const double dpsiAB = wrapAngle(b.psi0 - a.psi0);
         for (int n = 0;; ++n) {
             const double ta = a.t + n * a.period;
             if (ta > tMax + jump)
                 break;
-            int best = -1;
-            double bestGap = jump;
-            for (int m = std::max(0, n - 1); m <= n + 1; ++m) {
-                const double gap = std::fabs(b.t + m * b.period - ta);
-                if (gap < bestGap) {
-                    bestGap = gap;
-                    best = m;
-                }
-            }
+            const int best = pairedPassage(a, b, n);
             if (best < 0)
                 continue;
             const double tb = b.t + best * b.period;
@@ -243,6 +286,25 @@ std::vector<UnitSolution> curveSeeds(const Target& tg, double tMax, double kMax)
                              a.lambda0 + f * (b.lambda0 - a.lambda0), ta + f * (tb - ta)});
         }
     };
+    // continuation along the curve: a piece whose ends disagree (the first passage jumps, the
+    // pendulum changes from libration to rotation, or an end has no passage) is halved, its
+    // middle put back on the curve, down to a piece 2^-10 of a cell long
+    auto follow = [&](auto&& self, const CurvePoint& a, const CurvePoint& b, int depth) -> void {
+        const int rough = roughness(a, b);
+        if ((rough == 2 && depth < 10) || (rough == 1 && depth < 5)) {
+            const double psiM = a.psi0 + 0.5 * wrapAngle(b.psi0 - a.psi0);
+            const double lamM = 0.5 * (a.lambda0 + b.lambda0);
+            const auto onCurve = projectOnCurve(psiM, lamM, tg);
+            if (onCurve) {
+                const CurvePoint m = curvePoint(wrapAngle(onCurve->first), onCurve->second, tg);
+                self(self, a, m, depth + 1);
+                self(self, m, b, depth + 1);
+                return;
+            }
+        }
+        if (a.valid && b.valid)
+            link(a, b);
+    };
     for (int j = 0; j < rows; ++j)
         for (int i = 0; i < columns; ++i) {
             const int i1 = (i + 1) % columns;
@@ -252,10 +314,10 @@ std::vector<UnitSolution> curveSeeds(const Target& tg, double tMax, double kMax)
                 if (id >= 0)
                     ids[count++] = id;
             if (count == 2) {
-                link(points[ids[0]], points[ids[1]]);
+                follow(follow, points[ids[0]], points[ids[1]], 0);
             } else if (count == 4) { // a saddle of G: either pairing
                 for (int a = 0; a < 4; ++a)
-                    link(points[ids[a]], points[ids[(a + 1) % 4]]);
+                    follow(follow, points[ids[a]], points[ids[(a + 1) % 4]], 0);
             }
         }
     std::sort(seeds.begin(), seeds.end(),
