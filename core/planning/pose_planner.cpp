@@ -52,7 +52,9 @@ std::optional<UnitSolution> polish(UnitSolution s, const Target& tg) {
         const UnitGeodesicPoint p = g.at(s.t);
         const Eigen::Vector3d r = endResidual(p, tg);
         Eigen::Matrix3d J;
-        const double h0 = 2e-7, h1 = 2e-7 * (1 + std::fabs(s.lambda0));
+        // steps that stay on one side of the separatrix, where the end moves like log |1 - k|
+        const double nearSeparatrix = std::clamp(100 * std::fabs(1 - g.modulus()), 1e-4, 1.0);
+        const double h0 = 2e-7 * nearSeparatrix, h1 = h0 * (1 + std::fabs(s.lambda0));
         const Eigen::Vector3d dPsi = endResidual(UnitGeodesic(s.psi0 + h0, s.lambda0).at(s.t), tg) -
                                      endResidual(UnitGeodesic(s.psi0 - h0, s.lambda0).at(s.t), tg);
         const Eigen::Vector3d dLambda =
@@ -86,7 +88,11 @@ std::optional<UnitSolution> polish(UnitSolution s, const Target& tg) {
         if (!improved)
             break;
     }
-    if (!(norm <= accepted))
+    // the closed form carries the rounding of k^2 (1e-16) into the phase as 1e-16/|1 - k^2|
+    // (docs/physics.md §8): next to the separatrix no end can be closer than that
+    const double c0 = std::cos(s.psi0);
+    const double gap = std::fabs((c0 - s.lambda0) * (c0 + s.lambda0));
+    if (!(norm <= accepted + 4e-16 / gap))
         return std::nullopt;
     return s;
 }
@@ -120,7 +126,7 @@ CurvePoint curvePoint(double psi0, double lambda0, const Target& tg) {
     const double s0 = std::sin(psi0), c0 = std::cos(psi0);
     const double k2 = s0 * s0 + lambda0 * lambda0;
     // the separatrix level and pivoting are found by Newton from their neighbours
-    if (std::fabs(k2 - 1) < 1e-9 || k2 < 1e-18)
+    if (k2 == 1 || k2 < 1e-18)
         return cp;
     double s1 = s0 * std::cos(tg.Phi) + lambda0 * std::sin(tg.Phi);
     double c1 = c0 + tg.Y * s0 - tg.X * lambda0;
@@ -183,21 +189,6 @@ int pairedPassage(const CurvePoint& a, const CurvePoint& b, int n) {
     return best;
 }
 
-// how far a piece of the curve is from smooth: 0 when both ends have the same kind of orbit and
-// nearly the same first passage (or neither has one), 1 when the first passage moves a lot, 2 at
-// a change of orbit or where the passage ends
-int roughness(const CurvePoint& a, const CurvePoint& b) {
-    if (!a.valid && !b.valid)
-        return 0;
-    if (a.valid != b.valid || (a.k < 1) != (b.k < 1))
-        return 2;
-    const int m = pairedPassage(a, b, 0);
-    if (m < 0)
-        return 2;
-    const double gap = std::fabs(b.t + m * b.period - a.t);
-    return gap <= 0.05 * (1 + a.t) ? 0 : 1;
-}
-
 // the point of G = 0 nearest to (psi0, lambda0), by Newton steps along G's gradient
 std::optional<std::pair<double, double>> projectOnCurve(double psi0, double lambda0,
                                                         const Target& tg) {
@@ -217,6 +208,31 @@ std::optional<std::pair<double, double>> projectOnCurve(double psi0, double lamb
         lambda0 -= G * gLam / g2;
     }
     return std::nullopt;
+}
+
+// how far a piece of the curve is from smooth: 0 when both ends have the same kind of orbit and
+// nearly the same first passage (or neither has one), 1 when the first passage moves a lot, 2 at
+// a change of orbit, where the passage ends, or next to the separatrix
+int roughness(const CurvePoint& a, const CurvePoint& b, const Target& tg) {
+    if (!a.valid && !b.valid)
+        return 0;
+    if (a.valid != b.valid || (a.k < 1) != (b.k < 1))
+        return 2;
+    // the first passage grows like log 1/|1 - k| near the separatrix: a piece that comes much
+    // closer to it inside than at its ends, or whose ends differ in that logarithm, is halved
+    const double ea = std::fabs(1 - a.k), eb = std::fabs(1 - b.k);
+    if (std::fabs(std::log(ea / eb)) > 2)
+        return 2;
+    const auto mid = projectOnCurve(a.psi0 + 0.5 * wrapAngle(b.psi0 - a.psi0),
+                                    0.5 * (a.lambda0 + b.lambda0), tg);
+    if (mid &&
+        std::fabs(1 - std::hypot(std::sin(mid->first), mid->second)) < 0.5 * std::min(ea, eb))
+        return 2;
+    const int m = pairedPassage(a, b, 0);
+    if (m < 0)
+        return 2;
+    const double gap = std::fabs(b.t + m * b.period - a.t);
+    return gap <= 0.05 * (1 + a.t) ? 0 : 1;
 }
 
 // Seeds for Newton: where the along-P miss of one passage changes sign between two neighbouring
@@ -267,9 +283,42 @@ std::vector<UnitSolution> curveSeeds(const Target& tg, double tMax, double kMax)
         }
 
     std::vector<UnitSolution> seeds;
+    int budget = 20000; // halvings, a bound on the time a pathological target can take
+    // the n-th passage's miss along P changes sign between a and b: halve the piece (its middle
+    // put back on the curve) while the passage continues, then interpolate
+    auto bracketRoot = [&](CurvePoint a, int n, CurvePoint b, int m) {
+        for (int i = 0; i < 60; ++i) {
+            const double ga = a.along + n * a.drift;
+            if (ga == 0 ||
+                std::fabs(wrapAngle(b.psi0 - a.psi0)) + std::fabs(b.lambda0 - a.lambda0) < 1e-14)
+                break;
+            const auto onCurve = projectOnCurve(a.psi0 + 0.5 * wrapAngle(b.psi0 - a.psi0),
+                                                0.5 * (a.lambda0 + b.lambda0), tg);
+            if (!onCurve)
+                break;
+            const CurvePoint mid = curvePoint(wrapAngle(onCurve->first), onCurve->second, tg);
+            if (!mid.valid)
+                break;
+            const int j = pairedPassage(a, mid, n);
+            if (j < 0)
+                break;
+            const double gm = mid.along + j * mid.drift;
+            if ((gm > 0) == (ga > 0)) {
+                a = mid;
+                n = j;
+            } else {
+                b = mid;
+                m = j;
+            }
+        }
+        const double ga = a.along + n * a.drift, gb = b.along + m * b.drift;
+        const double f = ga == gb ? 0.5 : ga / (ga - gb);
+        const double ta = a.t + n * a.period, tb = b.t + m * b.period;
+        seeds.push_back({wrapAngle(a.psi0 + f * wrapAngle(b.psi0 - a.psi0)),
+                         a.lambda0 + f * (b.lambda0 - a.lambda0), ta + f * (tb - ta)});
+    };
     auto link = [&](const CurvePoint& a, const CurvePoint& b) {
         const double jump = 0.5 * std::min(a.period, b.period);
-        const double dpsiAB = wrapAngle(b.psi0 - a.psi0);
         for (int n = 0;; ++n) {
             const double ta = a.t + n * a.period;
             if (ta > tMax + jump)
@@ -277,21 +326,18 @@ std::vector<UnitSolution> curveSeeds(const Target& tg, double tMax, double kMax)
             const int best = pairedPassage(a, b, n);
             if (best < 0)
                 continue;
-            const double tb = b.t + best * b.period;
             const double ga = a.along + n * a.drift, gb = b.along + best * b.drift;
             if ((ga > 0) == (gb > 0) && ga != 0)
                 continue;
-            const double f = ga / (ga - gb);
-            seeds.push_back({wrapAngle(a.psi0 + f * dpsiAB),
-                             a.lambda0 + f * (b.lambda0 - a.lambda0), ta + f * (tb - ta)});
+            bracketRoot(a, n, b, best);
         }
     };
     // continuation along the curve: a piece whose ends disagree (the first passage jumps, the
     // pendulum changes from libration to rotation, or an end has no passage) is halved, its
     // middle put back on the curve, down to a piece 2^-10 of a cell long
     auto follow = [&](auto&& self, const CurvePoint& a, const CurvePoint& b, int depth) -> void {
-        const int rough = roughness(a, b);
-        if ((rough == 2 && depth < 10) || (rough == 1 && depth < 5)) {
+        const int rough = roughness(a, b, tg);
+        if (((rough == 2 && depth < 48) || (rough == 1 && depth < 5)) && --budget > 0) {
             const double psiM = a.psi0 + 0.5 * wrapAngle(b.psi0 - a.psi0);
             const double lamM = 0.5 * (a.lambda0 + b.lambda0);
             const auto onCurve = projectOnCurve(psiM, lamM, tg);
@@ -325,10 +371,11 @@ std::vector<UnitSolution> curveSeeds(const Target& tg, double tMax, double kMax)
     return seeds;
 }
 
+// the same arrival time and nearly the same start: next to the separatrix Newton ends anywhere
+// within the closed form's rounding of the one geodesic
 bool sameGeodesic(const UnitSolution& a, const UnitSolution& b) {
-    return std::fabs(wrapAngle(a.psi0 - b.psi0)) + std::fabs(a.lambda0 - b.lambda0) +
-               std::fabs(a.t - b.t) <
-           1e-7 * (1 + a.t);
+    return std::fabs(a.t - b.t) <= 1e-9 * (1 + a.t) &&
+           std::fabs(wrapAngle(a.psi0 - b.psi0)) + std::fabs(a.lambda0 - b.lambda0) <= 1e-5;
 }
 
 struct Found {

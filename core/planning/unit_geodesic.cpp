@@ -102,6 +102,8 @@ std::optional<PendulumPassage> UnitGeodesic::passage(double sinPsi1, double cosP
         if ((lambda1 >= 0 ? 1.0 : -1.0) != sigma)
             return std::nullopt;
         const double q = 1 / k;
+        if (!(q < 1))
+            return std::nullopt; // k rounded to 1: the separatrix
         const double K = checked(gsl_sf_ellint_Kcomp_e(q, GSL_PREC_DOUBLE, &r), r, "Kcomp");
         const double Dc = checked(gsl_sf_ellint_Dcomp_e(q, GSL_PREC_DOUBLE, &r), r, "Dcomp");
         const double a0 = sigma * std::atan2(S0, init.phidot);
