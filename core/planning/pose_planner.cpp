@@ -89,10 +89,10 @@ std::optional<UnitSolution> polish(UnitSolution s, const Target& tg) {
             break;
     }
     // the closed form carries the rounding of k^2 (1e-16) into the phase as 1e-16/|1 - k^2|
-    // (docs/physics.md §8): next to the separatrix no end can be closer than that
+    // (docs/physics.md §8): next to the separatrix no end can be closer than that (up to 1e-5)
     const double c0 = std::cos(s.psi0);
     const double gap = std::fabs((c0 - s.lambda0) * (c0 + s.lambda0));
-    if (!(norm <= accepted + 4e-16 / gap))
+    if (!(norm <= std::min(accepted + 4e-16 / gap, 1e-5)))
         return std::nullopt;
     return s;
 }
@@ -134,17 +134,15 @@ CurvePoint curvePoint(double psi0, double lambda0, const Target& tg) {
     s1 /= n1;
     c1 /= n1;
     const double lambda1 = lambda0 * std::cos(tg.Phi) - s0 * std::sin(tg.Phi);
-    const UnitGeodesic g(psi0, lambda0);
-    const auto pass = g.passage(s1, c1, lambda1);
+    const auto pass = pendulumPassage(psi0, lambda0, s1, c1, lambda1);
     if (!pass)
         return cp;
-    const UnitGeodesicPoint p = g.at(pass->t);
     const double k = std::sqrt(k2);
     cp.valid = true;
     cp.k = k;
     cp.t = pass->t;
     cp.period = pass->period;
-    cp.along = ((p.x - tg.X) * s0 + (p.y - tg.Y) * lambda0) / k;
+    cp.along = ((pass->x - tg.X) * s0 + (pass->y - tg.Y) * lambda0) / k;
     cp.drift = (pass->driftX * s0 + pass->driftY * lambda0) / k;
     return cp;
 }

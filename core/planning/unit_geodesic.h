@@ -20,8 +20,15 @@ struct UnitGeodesicPoint {
 struct PendulumPassage {
     double t = 0;
     double period = 0;
+    double x = 0, y = 0; ///< the knife point at t
     double driftX = 0, driftY = 0;
 };
+
+/// The passage of the geodesic (psi0, lambda0) through (Psi1, Lambda1) and its position there,
+/// from the state alone (no sn-cn-dn): what the planner evaluates along its curves. None as for
+/// UnitGeodesic::passage, and on the separatrix level.
+std::optional<PendulumPassage> pendulumPassage(double psi0, double lambda0, double sinPsi1,
+                                               double cosPsi1, double lambda1);
 
 /// The geodesic with Psi(0) = psi0 and Psidot(0) = lambda0 from (0, 0, 0), at unit speed and
 /// b = 1. Its momentum P = (sin Psi0, Lambda0) is constant in the plane (|P| = k, the

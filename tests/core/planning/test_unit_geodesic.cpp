@@ -59,6 +59,8 @@ TEST(UnitGeodesic, PassageTimeAndDriftPerPeriod) {
             EXPECT_LT(pass->t, pass->period);
             const UnitGeodesicPoint q = g.at(pass->t + pass->period);
             const UnitGeodesicPoint r = g.at(pass->t);
+            EXPECT_NEAR(pass->x, r.x, 1e-12);
+            EXPECT_NEAR(pass->y, r.y, 1e-12);
             EXPECT_NEAR(q.x - r.x, pass->driftX, 1e-11);
             EXPECT_NEAR(q.y - r.y, pass->driftY, 1e-11);
             EXPECT_NEAR(std::remainder(q.phi - r.phi, 2 * pi), 0, 1e-11);
