@@ -235,9 +235,61 @@ int roughness(const CurvePoint& a, const CurvePoint& b, const Target& tg) {
 
 // Seeds for Newton: where the along-P miss of one passage changes sign between two neighbouring
 // points of the curve G = 0, traced cell by cell on a grid in (Psi0, asinh Lambda0).
-std::vector<UnitSolution> curveSeeds(const Target& tg, double tMax, double kMax) {
-    constexpr int columns = 96;
-    const double du = 0.05;
+// A piece of the curve over which the n-th passage of a and the m-th of b miss on opposite
+// sides along P, and the time interpolated there.
+struct SeedPiece {
+    CurvePoint a;
+    int n = 0;
+    CurvePoint b;
+    int m = 0;
+    double t = 0;
+};
+
+// Newton's start from a piece: halve it (its middle put back on the curve) while the passage
+// continues, then interpolate. Done only for the pieces Newton is run from.
+UnitSolution refineSeed(SeedPiece piece, const Target& tg) {
+    CurvePoint a = piece.a, b = piece.b;
+    int n = piece.n, m = piece.m;
+    for (int i = 0; i < 60; ++i) {
+        const double ga = a.along + n * a.drift;
+        if (ga == 0 ||
+            std::fabs(wrapAngle(b.psi0 - a.psi0)) + std::fabs(b.lambda0 - a.lambda0) < 1e-14)
+            break;
+        const auto onCurve = projectOnCurve(a.psi0 + 0.5 * wrapAngle(b.psi0 - a.psi0),
+                                            0.5 * (a.lambda0 + b.lambda0), tg);
+        if (!onCurve)
+            break;
+        const CurvePoint mid = curvePoint(wrapAngle(onCurve->first), onCurve->second, tg);
+        if (!mid.valid)
+            break;
+        const int j = pairedPassage(a, mid, n);
+        if (j < 0)
+            break;
+        const double gm = mid.along + j * mid.drift;
+        if ((gm > 0) == (ga > 0)) {
+            a = mid;
+            n = j;
+        } else {
+            b = mid;
+            m = j;
+        }
+    }
+    const double ga = a.along + n * a.drift, gb = b.along + m * b.drift;
+    const double f = ga == gb ? 0.5 : ga / (ga - gb);
+    const double ta = a.t + n * a.period, tb = b.t + m * b.period;
+    return {wrapAngle(a.psi0 + f * wrapAngle(b.psi0 - a.psi0)),
+            a.lambda0 + f * (b.lambda0 - a.lambda0), ta + f * (tb - ta)};
+}
+
+// The grid: columns over Psi0 in (-pi, pi], rows du apart in asinh Lambda0.
+struct GridSize {
+    int columns = 96;
+    double du = 0.05;
+};
+
+std::vector<SeedPiece> curveSeeds(const Target& tg, double tMax, double kMax, GridSize size) {
+    const int columns = size.columns;
+    const double du = size.du;
     const double uMax = std::asinh(kMax * 1.02);
     const int rows = std::max(8, static_cast<int>(std::ceil(2 * uMax / du)));
     const double dpsi = 2 * pi / columns, duRow = 2 * uMax / rows;
@@ -280,41 +332,8 @@ std::vector<UnitSolution> curveSeeds(const Target& tg, double tMax, double kMax)
             points.push_back(curvePoint(psi[i], l, tg));
         }
 
-    std::vector<UnitSolution> seeds;
+    std::vector<SeedPiece> seeds;
     int budget = 20000; // halvings, a bound on the time a pathological target can take
-    // the n-th passage's miss along P changes sign between a and b: halve the piece (its middle
-    // put back on the curve) while the passage continues, then interpolate
-    auto bracketRoot = [&](CurvePoint a, int n, CurvePoint b, int m) {
-        for (int i = 0; i < 60; ++i) {
-            const double ga = a.along + n * a.drift;
-            if (ga == 0 ||
-                std::fabs(wrapAngle(b.psi0 - a.psi0)) + std::fabs(b.lambda0 - a.lambda0) < 1e-14)
-                break;
-            const auto onCurve = projectOnCurve(a.psi0 + 0.5 * wrapAngle(b.psi0 - a.psi0),
-                                                0.5 * (a.lambda0 + b.lambda0), tg);
-            if (!onCurve)
-                break;
-            const CurvePoint mid = curvePoint(wrapAngle(onCurve->first), onCurve->second, tg);
-            if (!mid.valid)
-                break;
-            const int j = pairedPassage(a, mid, n);
-            if (j < 0)
-                break;
-            const double gm = mid.along + j * mid.drift;
-            if ((gm > 0) == (ga > 0)) {
-                a = mid;
-                n = j;
-            } else {
-                b = mid;
-                m = j;
-            }
-        }
-        const double ga = a.along + n * a.drift, gb = b.along + m * b.drift;
-        const double f = ga == gb ? 0.5 : ga / (ga - gb);
-        const double ta = a.t + n * a.period, tb = b.t + m * b.period;
-        seeds.push_back({wrapAngle(a.psi0 + f * wrapAngle(b.psi0 - a.psi0)),
-                         a.lambda0 + f * (b.lambda0 - a.lambda0), ta + f * (tb - ta)});
-    };
     auto link = [&](const CurvePoint& a, const CurvePoint& b) {
         const double jump = 0.5 * std::min(a.period, b.period);
         for (int n = 0;; ++n) {
@@ -327,7 +346,9 @@ std::vector<UnitSolution> curveSeeds(const Target& tg, double tMax, double kMax)
             const double ga = a.along + n * a.drift, gb = b.along + best * b.drift;
             if ((ga > 0) == (gb > 0) && ga != 0)
                 continue;
-            bracketRoot(a, n, b, best);
+            const double tb = b.t + best * b.period;
+            const double f = ga == gb ? 0.5 : ga / (ga - gb);
+            seeds.push_back({a, n, b, best, ta + f * (tb - ta)});
         }
     };
     // continuation along the curve: a piece whose ends disagree (the first passage jumps, the
@@ -365,7 +386,7 @@ std::vector<UnitSolution> curveSeeds(const Target& tg, double tMax, double kMax)
             }
         }
     std::sort(seeds.begin(), seeds.end(),
-              [](const UnitSolution& a, const UnitSolution& b) { return a.t < b.t; });
+              [](const SeedPiece& a, const SeedPiece& b) { return a.t < b.t; });
     return seeds;
 }
 
@@ -502,27 +523,41 @@ Plan planVakonomic(const PlanRequest& request) {
         if (std::fabs(tg.Phi) > 1e-12)
             kMax = std::min(kMax, 1 / std::sin(0.5 * std::fabs(tg.Phi)));
         kMax = std::max(kMax, 1.2);
-        const std::vector<UnitSolution> seeds = curveSeeds(tg, scanT, kMax);
-        double certifiedT = std::numeric_limits<double>::infinity();
-        bool tie = false;
-        for (const UnitSolution& seed : seeds) {
-            if (request.optimalOnly && std::isfinite(certifiedT) &&
-                (!tie || seed.t > 1.3 * certifiedT + 0.1))
-                break;
-            bool known = false;
-            for (const Found& f : all)
-                known = known || sameGeodesic(f.s, seed);
-            if (known)
-                continue;
-            const auto sol = polish(seed, tg);
-            if (!sol || sol->t > scanT * (1 + 1e-9) + 1e-12)
-                continue;
-            const Found f = classify(*sol);
-            addUnique(all, f);
-            if (request.optimalOnly && withinCut(f) && f.s.t < certifiedT) {
-                certifiedT = f.s.t;
-                tie = f.s.t > f.cut * (1 - 1e-7);
+        // the least time alone: a coarse grid first, enough once its answer is certified (and,
+        // on the Maxwell set, its twin found); the fine grid otherwise, and for the whole list
+        const GridSize fine{96, 0.05}, coarse{48, 0.1};
+        for (const GridSize size :
+             request.optimalOnly ? std::vector{coarse, fine} : std::vector{fine}) {
+            double certifiedT = std::numeric_limits<double>::infinity();
+            bool tie = false;
+            int optima = 0;
+            for (const SeedPiece& piece : curveSeeds(tg, scanT, kMax, size)) {
+                if (request.optimalOnly && std::isfinite(certifiedT) &&
+                    (!tie || piece.t > 1.3 * certifiedT + 0.1))
+                    break;
+                const UnitSolution seed = refineSeed(piece, tg);
+                bool known = false;
+                for (const Found& f : all)
+                    known = known || sameGeodesic(f.s, seed);
+                if (known)
+                    continue;
+                const auto sol = polish(seed, tg);
+                if (!sol || sol->t > scanT * (1 + 1e-9) + 1e-12)
+                    continue;
+                const Found f = classify(*sol);
+                addUnique(all, f);
+                if (request.optimalOnly && withinCut(f)) {
+                    if (f.s.t < certifiedT - 1e-9 * (1 + f.s.t)) {
+                        certifiedT = f.s.t;
+                        tie = f.s.t > f.cut * (1 - 1e-7);
+                        optima = 1;
+                    } else if (f.s.t <= certifiedT + 1e-9 * (1 + f.s.t)) {
+                        ++optima;
+                    }
+                }
             }
+            if (std::isfinite(certifiedT) && (!tie || optima >= 2))
+                break;
         }
     }
 
