@@ -187,16 +187,20 @@ int pairedPassage(const CurvePoint& a, const CurvePoint& b, int n) {
     return best;
 }
 
-// the point of G = 0 nearest to (psi0, lambda0), by Newton steps along G's gradient
+// the point of G = 0 nearest to (psi0, lambda0), by Newton steps along G's gradient, until G is
+// at its rounding (about 1e-16 (1 + |X| + |Y|))
 std::optional<std::pair<double, double>> projectOnCurve(double psi0, double lambda0,
                                                         const Target& tg) {
     const double cP = std::cos(tg.Phi), sP = std::sin(tg.Phi);
+    const double rounding =
+        1e-15 * (1 + std::fabs(tg.X) + std::fabs(tg.Y)) * (1 + std::fabs(lambda0));
+    double G = 1;
     for (int i = 0; i < 20; ++i) {
         const double s0 = std::sin(psi0), c0 = std::cos(psi0);
         const double s1 = s0 * cP + lambda0 * sP, c1 = c0 + tg.Y * s0 - tg.X * lambda0;
-        const double G = s1 * s1 + c1 * c1 - 1;
-        if (std::fabs(G) < 1e-15)
-            return std::make_pair(psi0, lambda0);
+        G = s1 * s1 + c1 * c1 - 1;
+        if (std::fabs(G) <= rounding)
+            break;
         const double gPsi = 2 * s1 * c0 * cP + 2 * c1 * (tg.Y * c0 - s0);
         const double gLam = 2 * s1 * sP - 2 * c1 * tg.X;
         const double g2 = gPsi * gPsi + gLam * gLam;
@@ -205,7 +209,9 @@ std::optional<std::pair<double, double>> projectOnCurve(double psi0, double lamb
         psi0 -= G * gPsi / g2;
         lambda0 -= G * gLam / g2;
     }
-    return std::nullopt;
+    if (!(std::fabs(G) <= 1e3 * rounding))
+        return std::nullopt;
+    return std::make_pair(psi0, lambda0);
 }
 
 // how far a piece of the curve is from smooth: 0 when both ends have the same kind of orbit and
