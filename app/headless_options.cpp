@@ -305,6 +305,8 @@ void readOutputs(const OptionValues& given, HeadlessOptions& o) {
         if (!(o.planHorizon > 0))
             throw InputError("--plan-horizon", "must be > 0 [s], not " + *horizon);
     }
+    if (auto choice = given.value("--plan-choice"))
+        o.planChoice = parseWholeNumber(*choice, "--plan-choice", 1, 1e6, "from 1 on");
     o.pathGiven = given.has("--preset") || given.has("--scene") || given.has("--path") ||
                   given.has("--points");
 }
@@ -347,14 +349,14 @@ HeadlessOptions parseOptions(const std::vector<std::string>& args) {
                          : o.withPlots         ? "--with-plots"
                                                : "--body",
                          "applies only to --animation");
-    if (!o.planTo && (o.planFrom || given.has("--plan-horizon")))
-        throw InputError(o.planFrom ? "--plan-from" : "--plan-horizon",
+    if (!o.planTo && (o.planFrom || given.has("--plan-horizon") || o.planChoice))
+        throw InputError(o.planFrom                    ? "--plan-from"
+                         : given.has("--plan-horizon") ? "--plan-horizon"
+                                                       : "--plan-choice",
                          "applies only to --plan-to X,Y,PHI");
     if (o.planTo && (o.sweep || o.workPrecision || !o.animationPath.empty() || !o.plotsDir.empty()))
         throw InputError("--plan-to", "plans alone or beside a plain run (--csv, --summary); "
                                       "not with --sweep, --work-precision, --animation or --plots");
-    if (o.planTo && !o.pathGiven && !o.csvPath.empty())
-        throw InputError("--csv", "with --plan-to writes the path's run: give a path too");
     if (o.sweep)
         validateSweep(o.scene, *o.sweep);
     return o;

@@ -32,6 +32,7 @@ struct HeadlessOptions {
     std::optional<Pose> planTo;     ///< --plan-to X,Y,PHI: plan the genuine vakonomic motions
     std::optional<Pose> planFrom;   ///< --plan-from X,Y,PHI (default: the path's start, or 0)
     double planHorizon = 0;         ///< --plan-horizon T [s]; 0: the planner's default
+    int planChoice = 0;             ///< --plan-choice N: the CSV's motion, 1 = first listed
     bool pathGiven = false;         ///< --preset, --scene, --path or --points was given
 };
 

@@ -98,10 +98,32 @@ int solvePlan(const HeadlessOptions& o) {
         throw InputError("--plan-to", "no genuine vakonomic motion reaches the target within "
                                       "the horizon of " +
                                           formatNumber(plan.horizon) + " s (see --plan-horizon)");
-    if (solution && !o.csvPath.empty())
-        writeFileAtomically(o.csvPath, formatCsv(rowsFor(*solution, o)));
-    writeFileAtomically(o.summaryPath.empty() ? "-" : o.summaryPath,
-                        formatPlanSummary(request, plan, solution ? &*solution : nullptr));
+    if (!o.csvPath.empty()) {
+        // the chosen motion: the N-th listed, or the first optimal one
+        std::size_t chosen = 0;
+        if (o.planChoice > static_cast<int>(plan.geodesics.size()))
+            throw InputError("--plan-choice", "there are " + std::to_string(plan.geodesics.size()) +
+                                                  " motions within the horizon, not " +
+                                                  std::to_string(o.planChoice));
+        if (o.planChoice > 0)
+            chosen = static_cast<std::size_t>(o.planChoice - 1);
+        else
+            while (chosen + 1 < plan.geodesics.size() && !plan.geodesics[chosen].optimal)
+                ++chosen;
+        const PlannedGeodesic& g = plan.geodesics[chosen];
+        std::vector<double> times = o.times.value_or(std::vector<double>{});
+        for (double t : times)
+            if (t < 0 || t > g.t)
+                throw InputError("--times", formatNumber(t) + " is outside [0, " +
+                                                formatNumber(g.t) + "], the planned motion");
+        if (!o.times)
+            for (int i = 0; i < o.samples; ++i)
+                times.push_back(i + 1 == o.samples ? g.t : g.t * i / (o.samples - 1));
+        writeFileAtomically(o.csvPath, formatPlanCsv(request, g, times));
+    }
+    if (!o.summaryPath.empty() || o.csvPath.empty())
+        writeFileAtomically(o.summaryPath.empty() ? "-" : o.summaryPath,
+                            formatPlanSummary(request, plan, solution ? &*solution : nullptr));
     return 0;
 }
 

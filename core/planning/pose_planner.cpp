@@ -600,4 +600,18 @@ Plan planVakonomic(const PlanRequest& request) {
     return plan;
 }
 
+VakonomicInitial plannedStart(const PlanRequest& request, const PlannedGeodesic& motion) {
+    VakonomicInitial init;
+    init.x = request.from.x;
+    init.y = request.from.y;
+    init.phi = request.from.phi;
+    const double v = request.vT, b = request.system.b;
+    if (motion.family != GeodesicFamily::Line)
+        init.phidot = v * std::cos(motion.psi0) / b;
+    if (motion.family != GeodesicFamily::Pivot && motion.family != GeodesicFamily::Rest)
+        init.sdot = v * std::sin(motion.psi0);
+    init.lambda = motion.lambda0;
+    return init;
+}
+
 } // namespace chaplygin

@@ -2,6 +2,7 @@
 // Pose to pose: every genuine vakonomic motion (geodesic of the sub-Riemannian problem on SE(2)
 // with the metric ds^2 + b^2 dphi^2) from a start pose to a target pose within a horizon, each
 // certified optimal or not by its cut time (docs/physics.md §10).
+#include "motion/vakonomic_motion.h"
 #include "systems/system.h"
 
 #include <string>
@@ -57,5 +58,10 @@ struct Plan {
 /// Throws InputError naming the field for a non-finite pose, b <= 0, v_T <= 0 or a negative or
 /// non-finite horizon.
 Plan planVakonomic(const PlanRequest& request);
+
+/// The genuine vakonomic body's start for a planned motion: the start pose, sdot = v_T sin Psi0,
+/// phidot = v_T cos Psi0 / b (exactly 0 on a line, sdot exactly 0 pivoting) and lambda(0), for
+/// VakonomicMotion with the request's system (docs/physics.md §8).
+VakonomicInitial plannedStart(const PlanRequest& request, const PlannedGeodesic& motion);
 
 } // namespace chaplygin

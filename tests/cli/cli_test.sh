@@ -417,6 +417,24 @@ assert max(abs(a - b) for a, b in zip(plan["from"], [0, 1, 0.4636476090008061]))
 assert plan["certified"] and sum(g["optimal"] for g in plan["geodesics"]) == 1
 PY
   ;;
+plan_csv)
+  # the optimal motion's vak_* columns end on the target; --plan-choice picks another listed one
+  for choice in "" "--plan-choice 2"; do
+    run 0 --plan-to 0,1,0 --samples 11 --csv "$work/p.csv" $choice
+    [ "$(head -1 "$work/p.csv")" = "t,vak_x,vak_y,vak_phi,vak_sdot,vak_phidot,vak_lambda" ] \
+      || fail "plan CSV header: $(head -1 "$work/p.csv")"
+    [ "$(wc -l < "$work/p.csv")" -eq 12 ] || fail "plan CSV rows: $(wc -l < "$work/p.csv")"
+    end=$(tail -1 "$work/p.csv" | awk -F, '{ d = ($2 < 0 ? -$2 : $2) + ($3 > 1 ? $3 - 1 : 1 - $3);
+      p = $4 - 6.283185307179586 * int($4 / 6.283185307179586 + ($4 < 0 ? -0.5 : 0.5));
+      printf "%.3g", d + (p < 0 ? -p : p) }')
+    below "$end" 1e-10 "plan CSV end $choice"
+    t=$(tail -1 "$work/p.csv" | cut -d, -f1)
+    below "$(awk -v t="$t" 'BEGIN { d = t - 3.340383019231; print (d < 0 ? -d : d) }')" 1e-11 "plan t"
+  done
+  run 2 --plan-to 0,1,0 --plan-choice 99 --csv "$work/q.csv"
+  expect_err "--plan-choice: there are"
+  [ ! -e "$work/q.csv" ] || fail "a CSV was written despite the error"
+  ;;
 *)
   fail "unknown case"
   ;;

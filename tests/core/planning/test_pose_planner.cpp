@@ -46,6 +46,9 @@ double worstEndError(const PlanRequest& r, const Plan& plan) {
         EXPECT_LE(e, 1e-10) << "t = " << g.t << " psi0 = " << g.psi0 << " "
                             << geodesicFamilyName(g.family);
         EXPECT_LE(g.endError, 1e-10);
+        // the body the command line's CSV samples, started by plannedStart
+        const VakonomicState v = VakonomicMotion(r.system, plannedStart(r, g)).at(g.t);
+        EXPECT_LE(test::poseError({v.x, v.y, v.phi}, r.to, r.system.b), 1e-10);
         EXPECT_GT(g.psi0, -pi);
         EXPECT_LE(g.psi0, pi);
         worst = std::max(worst, e);
