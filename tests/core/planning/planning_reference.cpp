@@ -77,7 +77,8 @@ double poseError(const Pose& a, const Pose& b, double length) {
            std::fabs(wrap(a.phi - b.phi));
 }
 
-ShootingResult leastTimeByShooting(double X, double Y, double Phi, int starts, unsigned seed) {
+std::vector<ShootingResult> motionsByShooting(double X, double Y, double Phi, double tMax,
+                                              int starts, unsigned seed) {
     gsl_set_error_handler_off();
     ShootingTarget tg{X, Y, Phi};
     gsl_multiroot_function f{shootingResidual, 3, &tg};
@@ -85,13 +86,12 @@ ShootingResult leastTimeByShooting(double X, double Y, double Phi, int starts, u
     gsl_vector* x = gsl_vector_alloc(3);
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> unit(0, 1);
-    const double d = std::hypot(X, Y), upper = d + 1.5 * pi;
-    ShootingResult best;
-    best.t = std::numeric_limits<double>::infinity();
+    const double d = std::hypot(X, Y);
+    std::vector<ShootingResult> found;
     for (int i = 0; i < starts; ++i) {
         gsl_vector_set(x, 0, -pi + 2 * pi * unit(rng));
         gsl_vector_set(x, 1, 2 * std::sinh(3 * unit(rng) - 1.5));
-        gsl_vector_set(x, 2, d + (upper - d) * unit(rng));
+        gsl_vector_set(x, 2, d + (tMax - d) * unit(rng));
         gsl_multiroot_fsolver_set(s, &f, x);
         int status = GSL_CONTINUE;
         for (int iter = 0; iter < 200 && status == GSL_CONTINUE; ++iter) {
@@ -99,18 +99,41 @@ ShootingResult leastTimeByShooting(double X, double Y, double Phi, int starts, u
                 break;
             status = gsl_multiroot_test_residual(s->f, 1e-12);
         }
-        const double t = gsl_vector_get(s->x, 2);
-        if (status != GSL_SUCCESS || !(t > 0))
+        ShootingResult r;
+        r.t = gsl_vector_get(s->x, 2);
+        r.psi0 = wrap(gsl_vector_get(s->x, 0));
+        r.psidot0 = gsl_vector_get(s->x, 1);
+        if (status != GSL_SUCCESS || !(r.t > 0) || r.t > tMax)
             continue;
-        ++best.converged;
-        if (t < best.t) {
-            best.t = t;
-            best.psi0 = gsl_vector_get(s->x, 0);
-            best.psidot0 = gsl_vector_get(s->x, 1);
+        bool known = false;
+        for (ShootingResult& k : found)
+            if (std::fabs(k.t - r.t) < 1e-8 && std::fabs(wrap(k.psi0 - r.psi0)) < 1e-6 &&
+                std::fabs(k.psidot0 - r.psidot0) < 1e-6) {
+                ++k.converged;
+                known = true;
+            }
+        if (!known) {
+            r.converged = 1;
+            found.push_back(r);
         }
     }
     gsl_vector_free(x);
     gsl_multiroot_fsolver_free(s);
+    return found;
+}
+
+ShootingResult leastTimeByShooting(double X, double Y, double Phi, int starts, unsigned seed) {
+    ShootingResult best;
+    best.t = std::numeric_limits<double>::infinity();
+    const double upper = std::hypot(X, Y) + 1.5 * pi;
+    for (const ShootingResult& r : motionsByShooting(X, Y, Phi, upper, starts, seed)) {
+        best.converged += r.converged;
+        if (r.t < best.t) {
+            best.t = r.t;
+            best.psi0 = r.psi0;
+            best.psidot0 = r.psidot0;
+        }
+    }
     return best;
 }
 

@@ -4,6 +4,8 @@
 // random starts), neither using the planner's code.
 #include "planning/pose_planner.h"
 
+#include <vector>
+
 namespace chaplygin::test {
 
 /// The pose reached at t by the genuine vakonomic body started at `from` with speed vT, heading
@@ -22,5 +24,9 @@ struct ShootingResult {
 /// The least time to (X, Y, Phi) from (0, 0, 0) in the normalised problem (b = v_T = 1) by
 /// `starts` random starts (Psi0, Psidot0, t) of GSL's hybrid Newton on the closed-form end pose.
 ShootingResult leastTimeByShooting(double X, double Y, double Phi, int starts, unsigned seed);
+
+/// Every distinct motion the same search reaches with t <= tMax (Psi0 in (-pi, pi]).
+std::vector<ShootingResult> motionsByShooting(double X, double Y, double Phi, double tMax,
+                                              int starts, unsigned seed);
 
 } // namespace chaplygin::test

@@ -194,6 +194,33 @@ TEST(PosePlanner, LeastTimeMatchesAnIndependentSearchOnSixtyTargets) {
     EXPECT_GE(c.agreed, 57); // a random search may miss a few; it never beats the planner
 }
 
+// every motion an independent search reaches within the horizon is in the list
+TEST(PosePlanner, ListsEveryMotionAnIndependentSearchFinds) {
+    std::mt19937 rng(20261208);
+    std::uniform_real_distribution<double> xy(-5, 5), heading(-pi, pi);
+    int found = 0, listed = 0;
+    for (int i = 0; i < 20; ++i) {
+        const PlanRequest r = request({xy(rng), xy(rng), heading(rng)});
+        const Plan plan = planVakonomic(r);
+        listed += static_cast<int>(plan.geodesics.size());
+        for (const test::ShootingResult& s :
+             test::motionsByShooting(r.to.x, r.to.y, r.to.phi, plan.horizon, 600, 77 + i)) {
+            if (s.t > plan.horizon * 0.999) // arriving at the horizon itself: either way
+                continue;
+            ++found;
+            bool inList = false;
+            for (const PlannedGeodesic& g : plan.geodesics)
+                inList = inList || (std::fabs(g.t - s.t) < 1e-7 &&
+                                    std::fabs(std::remainder(g.psi0 - s.psi0, 2 * pi)) < 1e-5);
+            EXPECT_TRUE(inList) << "target " << r.to.x << ", " << r.to.y << ", " << r.to.phi
+                                << ": t = " << s.t << ", psi0 = " << s.psi0;
+        }
+    }
+    std::printf("the search reached %d motions within the horizons, the planner listed %d\n", found,
+                listed);
+    EXPECT_GE(found, 80);
+}
+
 // Far targets: the optimum drives nearly straight, its pendulum dwelling next to the saddle
 // Psi = pi/2, so 1 - k^2 falls like e^{-d/b} and the closed form's phase carries 1e-16/|1 - k^2|
 // (docs/physics.md §8, §10). Up to about 10 b the ends stay within 1e-10 of rk8pd; at 20 b the
