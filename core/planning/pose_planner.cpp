@@ -532,8 +532,12 @@ Plan planVakonomic(const PlanRequest& request) {
         // the least time alone: a coarse grid first, enough once its answer is certified (and,
         // on the Maxwell set, its twin found); the fine grid otherwise, and for the whole list
         const GridSize fine{96, 0.05}, coarse{48, 0.1};
-        for (const GridSize size :
-             request.optimalOnly ? std::vector{coarse, fine} : std::vector{fine}) {
+        // the straight line never stops being optimal: nothing else ties with it
+        const bool lineOnly = request.optimalOnly && !all.empty();
+        std::vector<GridSize> grids;
+        if (!lineOnly)
+            grids = request.optimalOnly ? std::vector{coarse, fine} : std::vector{fine};
+        for (const GridSize size : grids) {
             double certifiedT = std::numeric_limits<double>::infinity();
             bool tie = false;
             int optima = 0;
