@@ -19,17 +19,17 @@ namespace {
 using std::numbers::pi;
 
 // the end pose's error (x, y, phi mod 2 pi)
-Eigen::Vector3d endResidual(const UnitGeodesicPoint& p, const Target& tg) {
+Eigen::Vector3d endResidual(const UnitGeodesicPoint& p, const UnitTarget& tg) {
     return {p.x - tg.X, p.y - tg.Y, wrapAngle(p.phi - tg.Phi)};
 }
 
-double endError(const UnitSolution& s, const Target& tg) {
+double endError(const UnitSolution& s, const UnitTarget& tg) {
     return endResidual(UnitGeodesic(s.psi0, s.lambda0).at(s.t), tg).lpNorm<1>();
 }
 
 // Newton's method on (Psi0, Lambda0, t) -> end pose, the Jacobian's t column exact (the velocity)
 // and the others central differences; steps halved while the residual does not decrease.
-std::optional<UnitSolution> polish(UnitSolution s, const Target& tg) {
+std::optional<UnitSolution> polish(UnitSolution s, const UnitTarget& tg) {
     constexpr double converged = 1e-14, accepted = 1e-11;
     double norm = endError(s, tg);
     for (int iter = 0; iter < 40 && norm > converged * (1 + s.t); ++iter) {
@@ -181,8 +181,8 @@ Plan planVakonomic(const PlanRequest& request) {
     // the normalised target: lengths in b, times in b/v_T, in the start's frame
     const double dx = request.to.x - request.from.x, dy = request.to.y - request.from.y;
     const double c = std::cos(request.from.phi), s = std::sin(request.from.phi);
-    const Target tg{(c * dx + s * dy) / b, (-s * dx + c * dy) / b,
-                    wrapAngle(request.to.phi - request.from.phi)};
+    const UnitTarget tg{(c * dx + s * dy) / b, (-s * dx + c * dy) / b,
+                        wrapAngle(request.to.phi - request.from.phi)};
     const double d = std::hypot(tg.X, tg.Y);
     const double userHorizon = request.horizon * v / b;
     // pivot to face the target, drive, pivot to the heading: the least time is at most this

@@ -20,7 +20,7 @@ using std::numbers::pi;
 // and sin^2 Psi1 + cos^2 Psi1 = 1 is the curve G(Psi0, Lambda0) = 0 on which every geodesic to the
 // target starts. On it the heading and the position across P come out right at every passage of
 // the pendulum through (Psi1, Lambda1); what is left is the position along P.
-double curveG(double s0, double c0, double lambda, const Target& tg) {
+double curveG(double s0, double c0, double lambda, const UnitTarget& tg) {
     const double s1 = s0 * std::cos(tg.Phi) + lambda * std::sin(tg.Phi);
     const double c1 = c0 + tg.Y * s0 - tg.X * lambda;
     return s1 * s1 + c1 * c1 - 1;
@@ -69,7 +69,7 @@ int pairedPassage(const CurvePoint& a, const CurvePoint& b, int n) {
 // the point of G = 0 nearest to (psi0, lambda0), by Newton steps along G's gradient, until G is
 // at its rounding (about 1e-16 (1 + |X| + |Y|))
 std::optional<std::pair<double, double>> projectOnCurve(double psi0, double lambda0,
-                                                        const Target& tg) {
+                                                        const UnitTarget& tg) {
     const double cP = std::cos(tg.Phi), sP = std::sin(tg.Phi);
     const double rounding =
         1e-15 * (1 + std::fabs(tg.X) + std::fabs(tg.Y)) * (1 + std::fabs(lambda0));
@@ -96,7 +96,7 @@ std::optional<std::pair<double, double>> projectOnCurve(double psi0, double lamb
 // how far a piece of the curve is from smooth: 0 when both ends have the same kind of orbit and
 // nearly the same first passage (or neither has one), 1 when the first passage moves a lot, 2 at
 // a change of orbit, where the passage ends, or next to the separatrix
-int roughness(const CurvePoint& a, const CurvePoint& b, const Target& tg) {
+int roughness(const CurvePoint& a, const CurvePoint& b, const UnitTarget& tg) {
     if (!a.valid && !b.valid)
         return 0;
     if (a.valid != b.valid || (a.k < 1) != (b.k < 1))
@@ -126,7 +126,7 @@ double wrapAngle(double a) {
     return r <= -pi ? r + 2 * pi : r;
 }
 
-CurvePoint curvePoint(double psi0, double lambda0, const Target& tg) {
+CurvePoint curvePoint(double psi0, double lambda0, const UnitTarget& tg) {
     CurvePoint cp;
     cp.psi0 = psi0;
     cp.lambda0 = lambda0;
@@ -156,7 +156,7 @@ CurvePoint curvePoint(double psi0, double lambda0, const Target& tg) {
 
 // Newton's start from a piece: halve it (its middle put back on the curve) while the passage
 // continues, then interpolate. Done only for the pieces Newton is run from.
-UnitSolution refineSeed(SeedPiece piece, const Target& tg) {
+UnitSolution refineSeed(SeedPiece piece, const UnitTarget& tg) {
     CurvePoint a = piece.a, b = piece.b;
     int n = piece.n, m = piece.m;
     for (int i = 0; i < 60; ++i) {
@@ -190,7 +190,7 @@ UnitSolution refineSeed(SeedPiece piece, const Target& tg) {
             a.lambda0 + f * (b.lambda0 - a.lambda0), ta + f * (tb - ta)};
 }
 
-std::vector<SeedPiece> curveSeeds(const Target& tg, double tMax, double kMax, GridSize size) {
+std::vector<SeedPiece> curveSeeds(const UnitTarget& tg, double tMax, double kMax, GridSize size) {
     const int columns = size.columns;
     const double du = size.du;
     const double uMax = std::asinh(kMax * 1.02);
