@@ -141,6 +141,8 @@ Scene baseScene(const OptionValues& given) {
     } else if (points) {
         s.path.kind = PathKind::Polyline;
         s.path.points = parsePoints(*points);
+    } else if (given.has("--plan-to")) {
+        s = presetScene("line"); // planning needs no path: only the system and the speed
     } else {
         throw InputError("path",
                          "no path: give --preset, --scene, --path or --points (see --help)");
@@ -245,6 +247,15 @@ std::vector<std::string> parseFormats(const std::string& text) {
     return formats;
 }
 
+// X,Y,PHI: a pose [m, m, rad]
+Pose parsePose(const std::string& text, const std::string& where) {
+    const std::vector<std::string> parts = split(text, ',');
+    if (parts.size() != 3)
+        throw InputError(where, "expects X,Y,PHI (metres and radians), got '" + text + "'");
+    return {parseNumber(trim(parts[0]), where + " x"), parseNumber(trim(parts[1]), where + " y"),
+            parseNumber(trim(parts[2]), where + " phi")};
+}
+
 // the output options of a headless run
 void readOutputs(const OptionValues& given, HeadlessOptions& o) {
     o.workPrecision = given.has("--work-precision");
@@ -279,6 +290,19 @@ void readOutputs(const OptionValues& given, HeadlessOptions& o) {
     }
     if (auto formats = given.value("--format"))
         o.formats = parseFormats(*formats);
+    if (auto to = given.value("--plan-to"))
+        o.planTo = parsePose(*to, "--plan-to");
+    if (auto from = given.value("--plan-from"))
+        o.planFrom = parsePose(*from, "--plan-from");
+    if (auto horizon = given.value("--plan-horizon")) {
+        o.planHorizon = parseNumber(*horizon, "--plan-horizon");
+        if (!(o.planHorizon > 0))
+            throw InputError("--plan-horizon", "must be > 0 [s], not " + *horizon);
+    }
+    if (auto choice = given.value("--plan-choice"))
+        o.planChoice = parseWholeNumber(*choice, "--plan-choice", 1, 1e6, "from 1 on");
+    o.pathGiven = given.has("--preset") || given.has("--scene") || given.has("--path") ||
+                  given.has("--points");
 }
 
 } // namespace
@@ -319,6 +343,14 @@ HeadlessOptions parseOptions(const std::vector<std::string>& args) {
                          : o.withPlots         ? "--with-plots"
                                                : "--body",
                          "applies only to --animation");
+    if (!o.planTo && (o.planFrom || given.has("--plan-horizon") || o.planChoice))
+        throw InputError(o.planFrom                    ? "--plan-from"
+                         : given.has("--plan-horizon") ? "--plan-horizon"
+                                                       : "--plan-choice",
+                         "applies only to --plan-to X,Y,PHI");
+    if (o.planTo && (o.sweep || o.workPrecision || !o.animationPath.empty() || !o.plotsDir.empty()))
+        throw InputError("--plan-to", "plans alone or beside a plain run (--csv, --summary); "
+                                      "not with --sweep, --work-precision, --animation or --plots");
     if (o.sweep)
         validateSweep(o.scene, *o.sweep);
     return o;

@@ -1,6 +1,7 @@
 #pragma once
 #include "common/input_error.h"
 #include "lab/parameter_sweep.h"
+#include "planning/pose_planner.h"
 #include "scene/scene.h"
 
 #include <optional>
@@ -28,6 +29,11 @@ struct HeadlessOptions {
     int width = 1280, height = 720; ///< --size WxH of the animation
     bool withPlots = false;         ///< --with-plots: the plots beside the canvas
     std::string body = "auto";      ///< --body auto|scale|outline|marker in the animation
+    std::optional<Pose> planTo;     ///< --plan-to X,Y,PHI: plan the genuine vakonomic motions
+    std::optional<Pose> planFrom;   ///< --plan-from X,Y,PHI (default: the path's start, or 0)
+    double planHorizon = 0;         ///< --plan-horizon T [s]; 0: the planner's default
+    int planChoice = 0;             ///< --plan-choice N: the CSV's motion, 1 = first listed
+    bool pathGiven = false;         ///< --preset, --scene, --path or --points was given
 };
 
 /// Parses the arguments after --headless (and the scene options the screenshot mode shares).

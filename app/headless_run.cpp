@@ -15,6 +15,7 @@
 #include "scene/solution.h"
 #include "scene/summary_json.h"
 #include "shell/animation_export.h"
+#include "systems/system.h"
 
 #include <QApplication>
 #include <QDir>
@@ -22,6 +23,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -67,6 +69,61 @@ int solveScene(const HeadlessOptions& o, int argc, char** argv) {
         QApplication app(argc, argv);
         ui::exportPlots(solution, QString::fromStdString(o.plotsDir), formatList(o));
     }
+    return 0;
+}
+
+// --plan-to: the genuine vakonomic motions from the start pose to the target (docs/physics.md
+// §10), beside the path's plain run when a path is given
+int solvePlan(const HeadlessOptions& o) {
+    if (o.scene.mode == SpeedMode::Speed)
+        throw InputError("--mode", "planning needs constant energy (--mode energy, --vT): the "
+                                   "genuine vakonomic motion keeps T, and at constant speed there "
+                                   "is no such family");
+    std::optional<Solution> solution;
+    if (o.pathGiven)
+        solution = Solution::compute(o.scene);
+    PlanRequest request;
+    request.system = deriveSystem(o.scene.system);
+    request.vT = o.scene.speed;
+    request.to = *o.planTo;
+    request.horizon = o.planHorizon;
+    if (o.planFrom) {
+        request.from = *o.planFrom;
+    } else if (solution) {
+        const MotionSample start = solution->sampleAt({0.0}).at(0);
+        request.from = {start.x, start.y, start.phi};
+    }
+    const Plan plan = planVakonomic(request);
+    if (plan.geodesics.empty())
+        throw InputError("--plan-to", "no genuine vakonomic motion reaches the target within "
+                                      "the horizon of " +
+                                          formatNumber(plan.horizon) + " s (see --plan-horizon)");
+    if (!o.csvPath.empty()) {
+        // the chosen motion: the N-th listed, or the first optimal one
+        std::size_t chosen = 0;
+        if (o.planChoice > static_cast<int>(plan.geodesics.size()))
+            throw InputError("--plan-choice", "there are " + std::to_string(plan.geodesics.size()) +
+                                                  " motions within the horizon, not " +
+                                                  std::to_string(o.planChoice));
+        if (o.planChoice > 0)
+            chosen = static_cast<std::size_t>(o.planChoice - 1);
+        else
+            while (chosen + 1 < plan.geodesics.size() && !plan.geodesics[chosen].optimal)
+                ++chosen;
+        const PlannedGeodesic& g = plan.geodesics[chosen];
+        std::vector<double> times = o.times.value_or(std::vector<double>{});
+        for (double t : times)
+            if (t < 0 || t > g.t)
+                throw InputError("--times", formatNumber(t) + " is outside [0, " +
+                                                formatNumber(g.t) + "], the planned motion");
+        if (!o.times)
+            for (int i = 0; i < o.samples; ++i)
+                times.push_back(i + 1 == o.samples ? g.t : g.t * i / (o.samples - 1));
+        writeFileAtomically(o.csvPath, formatPlanCsv(request, g, times));
+    }
+    if (!o.summaryPath.empty() || o.csvPath.empty())
+        writeFileAtomically(o.summaryPath.empty() ? "-" : o.summaryPath,
+                            formatPlanSummary(request, plan, solution ? &*solution : nullptr));
     return 0;
 }
 
@@ -144,6 +201,8 @@ int runHeadless(int argc, char** argv) {
                 return runSweep(o, argc, argv);
             if (!o.animationPath.empty())
                 return runAnimation(o, argc, argv);
+            if (o.planTo)
+                return solvePlan(o);
             return o.workPrecision ? runWorkPrecisionLab(o, argc, argv) : solveScene(o, argc, argv);
         } catch (const InputError& e) {
             throw withOptionNames(e, o.scene.mode);

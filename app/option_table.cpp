@@ -124,6 +124,21 @@ const std::array kOptions = {
                .help = "JSON: b, m_eff, path length, duration, models used\n"
                        "(printed on standard output when no output is given)",
                .modes = Headless, .section = S::Output},
+    OptionSpec{.name = "--plan-to", .argument = "X,Y,PHI",
+               .help = "plan the genuine vakonomic motions to this pose [m, m, rad]\n"
+                       "(docs/physics.md §10; no path needed): --summary gains \"plan\",\n"
+                       "--csv writes the optimal motion's vak_* columns",
+               .modes = Headless, .section = S::Output},
+    OptionSpec{.name = "--plan-from", .argument = "X,Y,PHI",
+               .help = "the plan's start pose (default: the path's start, else 0,0,0)",
+               .modes = Headless, .section = S::Output},
+    OptionSpec{.name = "--plan-horizon", .argument = "T",
+               .help = "list motions arriving within T [s] (default: three times the\n"
+                       "least time, at least 2 pi b/v_T)",
+               .modes = Headless, .section = S::Output},
+    OptionSpec{.name = "--plan-choice", .argument = "N",
+               .help = "--csv writes the N-th listed motion (default: the first optimal one)",
+               .modes = Headless, .section = S::Output},
     OptionSpec{.name = "--plots", .argument = "DIR",
                .help = "the plots, as the app draws them",
                .modes = Headless, .section = S::Output},

@@ -3,12 +3,13 @@
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
+#include <string_view>
 
 namespace chaplygin {
+namespace {
 
-std::string formatCsv(const std::vector<MotionSample>& rows) {
-    const std::span<const CsvColumn> columns =
-        csvColumnsWritten(!rows.empty() && rows.front().perturbed);
+// the header and one line per row, full double precision; a NaN never reaches a CSV
+std::string csvText(std::span<const CsvColumn> columns, const std::vector<MotionSample>& rows) {
     std::string out;
     for (std::size_t i = 0; i < columns.size(); ++i) {
         if (i)
@@ -31,6 +32,27 @@ std::string formatCsv(const std::vector<MotionSample>& rows) {
         out += '\n';
     }
     return out;
+}
+
+} // namespace
+
+std::string formatCsv(const std::vector<MotionSample>& rows) {
+    return csvText(csvColumnsWritten(!rows.empty() && rows.front().perturbed), rows);
+}
+
+std::string formatPlanCsv(const PlanRequest& request, const PlannedGeodesic& motion,
+                          const std::vector<double>& times) {
+    std::vector<CsvColumn> columns;
+    for (const CsvColumn& c : csvColumns())
+        if (c.name == "t" || c.name.starts_with("vak_"))
+            columns.push_back(c);
+    const VakonomicMotion body(request.system, plannedStart(request, motion));
+    std::vector<MotionSample> rows(times.size());
+    for (std::size_t i = 0; i < times.size(); ++i) {
+        rows[i].t = times[i];
+        rows[i].vak = body.at(times[i]);
+    }
+    return csvText(columns, rows);
 }
 
 } // namespace chaplygin

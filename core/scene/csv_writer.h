@@ -1,5 +1,6 @@
 #pragma once
 // The command line's CSV: the header and the rows of a Solution, written from the column table.
+#include "planning/pose_planner.h"
 #include "scene/csv_columns.h"
 #include "scene/solution.h"
 
@@ -13,5 +14,10 @@ namespace chaplygin {
 /// precision. Throws std::runtime_error naming the column and time if any value is not finite: a
 /// NaN never reaches a CSV.
 std::string formatCsv(const std::vector<MotionSample>& rows);
+
+/// A planned motion's time series (docs/physics.md §10): t and the genuine vakonomic body's
+/// columns (vak_*, the names and units of the run's CSV) at the given times, from its closed form.
+std::string formatPlanCsv(const PlanRequest& request, const PlannedGeodesic& motion,
+                          const std::vector<double>& times);
 
 } // namespace chaplygin

@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
+
 namespace chaplygin {
 
 std::string formatSummary(const Solution& solution) {
@@ -40,6 +42,30 @@ std::string formatSummary(const Solution& solution) {
         j["models"]["perturbed"] = m.perturbed;
         j["models"]["feedback"] = m.feedback;
     }
+    return j.dump(2) + "\n";
+}
+
+std::string formatPlanSummary(const PlanRequest& request, const Plan& plan,
+                              const Solution* solution) {
+    nlohmann::json j =
+        solution ? nlohmann::json::parse(formatSummary(*solution)) : nlohmann::json::object();
+    nlohmann::json motions = nlohmann::json::array();
+    for (const PlannedGeodesic& g : plan.geodesics) {
+        nlohmann::json m;
+        m["t"] = g.t;
+        m["psi0"] = g.psi0;
+        m["psidot0"] = g.psidot0;
+        m["lambda0"] = g.lambda0;
+        m["family"] = geodesicFamilyName(g.family);
+        m["cut_time"] = std::isfinite(g.cutTime) ? nlohmann::json(g.cutTime) : nlohmann::json();
+        m["optimal"] = g.optimal;
+        motions.push_back(m);
+    }
+    j["plan"] = {{"from", {request.from.x, request.from.y, request.from.phi}},
+                 {"to", {request.to.x, request.to.y, request.to.phi}},
+                 {"horizon", plan.horizon},
+                 {"certified", plan.certified},
+                 {"geodesics", motions}};
     return j.dump(2) + "\n";
 }
 

@@ -378,6 +378,63 @@ desktop_unknown_option)
   run 2 --preset circle --presentation
   expect_err "--presentation: applies only to the window and --screenshot"
   ;;
+plan_sideways)
+  # the sideways shift by b from (0, 0, 0): two mirror optima on the Maxwell set (docs/physics.md
+  # §10); no path needed, the summary is the plan alone
+  run 0 --plan-to 0,1,0 --summary -
+  /usr/bin/python3 - "$work/out" <<'PY' || fail "plan: $(head -c 600 "$work/out")"
+import json, sys
+plan = json.load(open(sys.argv[1]))["plan"]
+assert plan["from"] == [0, 0, 0] and plan["to"] == [0, 1, 0] and plan["certified"]
+best = [g for g in plan["geodesics"] if g["optimal"]]
+assert len(best) == 2, best
+assert sorted(round(g["psi0"], 10) for g in best) == [-1.1071487178, 2.0344439358]
+for g in best:
+    assert abs(g["t"] - 3.340383019231) < 1e-11 and abs(g["psidot0"] - 1.492853942033) < 1e-11
+    assert abs(g["cut_time"] - g["t"]) < 1e-11 and g["family"] == "rotation"
+    assert abs(g["lambda0"] - (g["psidot0"] - 0.5 * __import__("math").cos(g["psi0"]))) < 1e-12
+ts = [g["t"] for g in plan["geodesics"]]
+assert ts == sorted(ts) and ts[-1] <= plan["horizon"] + 1e-12
+PY
+  ;;
+plan_scaled_from_path)
+  # b = 0.5 (I = m (b^2 - a^2)), v_T = 2, from the circle's start: the same shift in its frame
+  run 0 --preset circle --param a=0.3 --param b=0.5 --vT 2 --plan-to 2,0.5,0 --plan-from 2,0,0 \
+    --summary -
+  /usr/bin/python3 - "$work/out" <<'PY' || fail "scaled plan: $(head -c 600 "$work/out")"
+import json, sys
+j = json.load(open(sys.argv[1]))
+assert "duration" in j and "models" in j  # the path's run is summarised beside the plan
+best = [g for g in j["plan"]["geodesics"] if g["optimal"]]
+assert len(best) == 2 and all(abs(g["t"] - 3.340383019231 * 0.5 / 2) < 1e-11 for g in best)
+PY
+  run 0 --preset line --plan-to 3,0.2,0.1 --summary -
+  /usr/bin/python3 - "$work/out" <<'PY' || fail "plan from the path's start: $(head -c 600 "$work/out")"
+import json, sys
+plan = json.load(open(sys.argv[1]))["plan"]
+# the line y = 0.5 x + 1 starts at (0, 1) heading atan(0.5)
+assert max(abs(a - b) for a, b in zip(plan["from"], [0, 1, 0.4636476090008061])) < 1e-12
+assert plan["certified"] and sum(g["optimal"] for g in plan["geodesics"]) == 1
+PY
+  ;;
+plan_csv)
+  # the optimal motion's vak_* columns end on the target; --plan-choice picks another listed one
+  for choice in "" "--plan-choice 2"; do
+    run 0 --plan-to 0,1,0 --samples 11 --csv "$work/p.csv" $choice
+    [ "$(head -1 "$work/p.csv")" = "t,vak_x,vak_y,vak_phi,vak_sdot,vak_phidot,vak_lambda" ] \
+      || fail "plan CSV header: $(head -1 "$work/p.csv")"
+    [ "$(wc -l < "$work/p.csv")" -eq 12 ] || fail "plan CSV rows: $(wc -l < "$work/p.csv")"
+    end=$(tail -1 "$work/p.csv" | awk -F, '{ d = ($2 < 0 ? -$2 : $2) + ($3 > 1 ? $3 - 1 : 1 - $3);
+      p = $4 - 6.283185307179586 * int($4 / 6.283185307179586 + ($4 < 0 ? -0.5 : 0.5));
+      printf "%.3g", d + (p < 0 ? -p : p) }')
+    below "$end" 1e-10 "plan CSV end $choice"
+    t=$(tail -1 "$work/p.csv" | cut -d, -f1)
+    below "$(awk -v t="$t" 'BEGIN { d = t - 3.340383019231; print (d < 0 ? -d : d) }')" 1e-11 "plan t"
+  done
+  run 2 --plan-to 0,1,0 --plan-choice 99 --csv "$work/q.csv"
+  expect_err "--plan-choice: there are"
+  [ ! -e "$work/q.csv" ] || fail "a CSV was written despite the error"
+  ;;
 *)
   fail "unknown case"
   ;;
