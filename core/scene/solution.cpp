@@ -125,8 +125,12 @@ PerturbationSpec perturbationSpec(const Perturbation& p, const Path& path,
 } // namespace
 
 ControlParams controlParamsOf(const Scene& scene) {
+    return controlParamsOf(scene, deriveSystem(scene.system));
+}
+
+ControlParams controlParamsOf(const Scene& scene, const DerivedSystem& system) {
     ControlParams p;
-    p.system = deriveSystem(scene.system);
+    p.system = system;
     p.mode = scene.mode;
     p.speed = scene.speed;
     return p;
@@ -139,6 +143,11 @@ Solution Solution::compute(const Scene& scene) {
 
 Solution Solution::compute(const Scene& scene, std::shared_ptr<const Path> path) {
     return Solution(scene, std::move(path), controlParamsOf(scene));
+}
+
+Solution Solution::compute(const Scene& scene, std::shared_ptr<const Path> path,
+                           const DerivedSystem& system) {
+    return Solution(scene, std::move(path), controlParamsOf(scene, system));
 }
 
 Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,

@@ -60,6 +60,8 @@ struct ModelReport {
 /// The control parameters of a scene: its system's (m_eff, a, b), mode and speed.
 /// Throws InputError naming a bad parameter.
 ControlParams controlParamsOf(const Scene& scene);
+/// The same with the scene's system already derived.
+ControlParams controlParamsOf(const Scene& scene, const DerivedSystem& system);
 
 /// One immutable result that the CLI, the GUI and the tests read. Values at any t are computed
 /// on request from the path table's certified per-panel interpolants (no interpolation of stored
@@ -71,6 +73,10 @@ class Solution {
     static Solution compute(const Scene& scene);
     /// Solves on an already tabulated path (scene.path is taken to describe it).
     static Solution compute(const Scene& scene, std::shared_ptr<const Path> path);
+    /// The same with the scene's system already derived (deriveSystem(scene.system)), as a
+    /// caller that vetted the parameters has it.
+    static Solution compute(const Scene& scene, std::shared_ptr<const Path> path,
+                            const DerivedSystem& system);
 
     const Scene& scene() const { return m_scene; }
     const std::shared_ptr<const Path>& path() const { return m_path; }

@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 #include "systems/system_parameters.h"
 
+#include <atomic>
 #include <cmath>
 
 namespace chaplygin {
@@ -94,7 +95,16 @@ DerivedSystem carriage(const SystemSpec& spec) {
 
 } // namespace
 
+namespace {
+std::atomic<long> g_derivations{0};
+} // namespace
+
+long derivationCount() {
+    return g_derivations.load(std::memory_order_relaxed);
+}
+
 DerivedSystem deriveSystem(const SystemSpec& spec) {
+    g_derivations.fetch_add(1, std::memory_order_relaxed);
     rejectUnknown(spec);
     switch (spec.kind) {
     case SystemKind::Sleigh:

@@ -35,6 +35,8 @@ struct DerivedSystem {
 /// Maps the spec to (m_eff, a, b). Throws InputError naming the parameter when it is missing,
 /// unknown, non-finite or outside its physical range.
 DerivedSystem deriveSystem(const SystemSpec& spec);
+/// How many times deriveSystem ran in this process: a cost the tests of one edit count.
+long derivationCount();
 
 /// "sleigh" | "disk" | "carriage" <-> SystemKind. Throws InputError for other names.
 SystemKind systemKindFromName(const std::string& name);

@@ -163,11 +163,15 @@ void SceneDocument::recompute() {
     std::shared_ptr<const Solution> checked = std::move(m_checked);
     try {
         // only the cheap stages rerun when the path is cached; a checked scene is not solved twice
-        std::shared_ptr<const Solution> solution =
-            checked && checked->scene() == m_scene
-                ? checked
-                : std::make_shared<const Solution>(
-                      Solution::compute(m_scene, pathFor(m_scene.path)));
+        std::shared_ptr<const Solution> solution;
+        if (checked && checked->scene() == m_scene)
+            solution = checked;
+        else if (m_vetted && m_vetted->first == m_scene.system)
+            solution = std::make_shared<const Solution>(
+                Solution::compute(m_scene, pathFor(m_scene.path), m_vetted->second));
+        else
+            solution =
+                std::make_shared<const Solution>(Solution::compute(m_scene, pathFor(m_scene.path)));
         m_series = collectSeries(*solution, kFreeSamples);
         m_solution = std::move(solution);
     } catch (const InputError& e) {

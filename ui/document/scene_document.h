@@ -187,6 +187,8 @@ class SceneDocument : public QObject {
     QString m_fileName;
     std::vector<std::pair<PathSource, std::shared_ptr<const Path>>> m_pathCache;
     std::shared_ptr<const Solution> m_checked; // solved by check(), taken by the next recompute
+    // the system editParameters vetted, with its derivation: the recompute solves with it
+    std::optional<std::pair<SystemSpec, DerivedSystem>> m_vetted;
     // the latest path request; the pool is declared last so that it is joined first
     std::shared_ptr<std::atomic<quint64>> m_pathLatest = std::make_shared<std::atomic<quint64>>(0);
     PathSource m_pathSource;

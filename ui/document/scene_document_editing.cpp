@@ -78,7 +78,8 @@ void SceneDocument::loadKnown(const Scene& scene, const QString& description) {
 QString SceneDocument::editParameters(const Scene& scene, const QString& description,
                                       const QString& mergeKey) {
     try {
-        deriveSystem(scene.system);
+        // derived once: the recompute solves with it
+        m_vetted = std::make_pair(scene.system, deriveSystem(scene.system));
     } catch (const InputError& e) {
         return QString::fromStdString(e.what());
     }

@@ -165,6 +165,13 @@ void ParametersPanel::rebuildRows() {
 }
 
 void ParametersPanel::setScene(const Scene& scene) {
+    // the panel's own edit coming back, or a change elsewhere in the scene: nothing to show anew
+    if (m_shown && scene.system == m_scene.system && scene.mode == m_scene.mode &&
+        scene.speed == m_scene.speed) {
+        m_scene = scene;
+        return;
+    }
+    m_shown = true;
     m_updating = true;
     // new rows when the parameter names (or the speed's name) change
     std::set<QString> shown, wanted{QStringLiteral("speed")};
@@ -197,21 +204,19 @@ void ParametersPanel::setScene(const Scene& scene) {
         }
     }
     m_updating = false;
-    updateDerived();
 }
 
-void ParametersPanel::updateDerived() {
-    try {
-        DerivedSystem d = deriveSystem(m_scene.system);
-        m_derived->setText(
-            tr("m_eff = %1 kg, CM offset = %2 m, b = %3 m, I about the CM = %4 kg m\u00b2")
-                .arg(d.mass, 0, 'g', 5)
-                .arg(d.a, 0, 'g', 5)
-                .arg(d.b, 0, 'g', 5)
-                .arg(d.inertia(), 0, 'g', 5));
-    } catch (const InputError&) {
+void ParametersPanel::showDerived(const DerivedSystem* d) {
+    if (!d) {
         m_derived->setText(tr("(no valid system)"));
+        return;
     }
+    m_derived->setText(
+        tr("m_eff = %1 kg, CM offset = %2 m, b = %3 m, I about the CM = %4 kg m\u00b2")
+            .arg(d->mass, 0, 'g', 5)
+            .arg(d->a, 0, 'g', 5)
+            .arg(d->b, 0, 'g', 5)
+            .arg(d->inertia(), 0, 'g', 5));
 }
 
 void ParametersPanel::showError(const QString& message) {
@@ -256,7 +261,6 @@ void ParametersPanel::onValueChanged(const QString& name, double value) {
         m_scene.speed = value;
     else
         m_scene.system.params[name.toStdString()] = value;
-    updateDerived();
     emitEdit(tr("Change %1 to %2")
                  .arg(name == QStringLiteral("speed") ? tr("speed") : name)
                  .arg(value, 0, 'g', 4),

@@ -26,6 +26,9 @@ class ParametersPanel : public QWidget {
 
     /// Shows a scene without emitting sceneEdited.
     void setScene(const Scene& scene);
+    /// The derived m_eff, a, b and I of the solved scene (the document derived them once);
+    /// null: the system typed is refused.
+    void showDerived(const DerivedSystem* system);
     /// Shows an error under the parameters (empty clears it).
     void showError(const QString& message);
     QString errorText() const;
@@ -52,11 +55,11 @@ class ParametersPanel : public QWidget {
     void onSystemChosen(int index);
     void onGyrationChosen(int index);
     void onModeChosen(int index);
-    void updateDerived();
     void emitEdit(const QString& description, const QString& mergeKey);
 
     Scene m_scene;
     bool m_updating = false;
+    bool m_shown = false; // whether setScene has shown a scene
     QComboBox* m_system;
     QComboBox* m_gyration;
     QLabel* m_gyrationLabel;

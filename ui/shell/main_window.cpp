@@ -123,7 +123,10 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     // a slider's change: the panel's scene goes straight to the document's undo stack
     auto editParameters = [this](const Scene& scene, const QString& description,
                                  const QString& mergeKey) {
-        m_parameters->showError(m_document->editParameters(scene, description, mergeKey));
+        const QString error = m_document->editParameters(scene, description, mergeKey);
+        m_parameters->showError(error);
+        if (!error.isEmpty())
+            m_parameters->showDerived(nullptr);
     };
     connect(m_parameters, &ParametersPanel::sceneEdited, this, editParameters);
     connect(m_sweep, &SweepPanel::sceneEdited, this, editParameters);
@@ -289,14 +292,12 @@ void MainWindow::onSolutionChanged() {
     const auto& solution = m_document->solution();
     m_playback->setTEnd(solution->tEnd());
     m_timeline->sync();
-    m_canvas->setTime(m_playback->time());
-    m_plots->setTime(m_playback->time());
+    m_parameters->showDerived(&solution->system());
     m_status->setFullText(plainModelSummary(*solution)); // the technical words: Accuracy ▸ Details
     if (m_noteScene && m_document->scene() != *m_noteScene) {
         m_noteScene.reset();
         m_accuracy->setNote({}, {});
     }
-    m_accuracy->setTime(m_playback->time());
     updateTitle();
 }
 
