@@ -90,10 +90,12 @@ TEST(SystemParameters, EveryRowIsComplete) {
             EXPECT_LT(p.sliderMin, p.sliderMax);
             EXPECT_LE(p.sliderMin, p.defaultValue);
             EXPECT_GE(p.sliderMax, p.defaultValue);
-            if (p.bound == ParameterBound::Positive)
+            if (p.bound == ParameterBound::Positive) {
                 EXPECT_GT(p.sliderMin, 0);
-            if (p.bound == ParameterBound::NonNegative)
+            }
+            if (p.bound == ParameterBound::NonNegative) {
                 EXPECT_GE(p.sliderMin, 0);
+            }
         }
     }
 }
