@@ -191,8 +191,9 @@ Plan planVakonomic(const PlanRequest& request) {
     std::vector<Found> all;
     double scanT = 0;
     if (d <= 1e-12) {
-        // only pivoting returns to the start's position (docs/physics.md §10)
-        scanT = userHorizon > 0 ? userHorizon : std::max(3 * pi, 2 * pi);
+        // only pivoting returns to the start's position (docs/physics.md §10); the least time
+        // is at most pi, so the default horizon at most 3 pi
+        scanT = userHorizon > 0 ? userHorizon : 3 * pi;
         if (std::fabs(tg.Phi) <= 1e-15)
             all.push_back({{0, 0, 0}, GeodesicFamily::Rest, pi});
         for (const double psi0 : {0.0, pi}) {
