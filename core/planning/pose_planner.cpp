@@ -39,7 +39,10 @@ std::optional<UnitSolution> polish(UnitSolution s, const UnitTarget& tg) {
         Eigen::Matrix3d J;
         // steps that stay on one side of the separatrix, where the end moves like log |1 - k|
         const double nearSeparatrix = std::clamp(100 * std::fabs(1 - g.modulus()), 1e-4, 1.0);
-        const double h0 = 2e-7 * nearSeparatrix, h1 = h0 * (1 + std::fabs(s.lambda0));
+        // and smaller than the start's distance from a pivot point, next to one
+        const double nearPivot = std::clamp(10 * g.modulus(), 1e-6, 1.0);
+        const double h0 = 2e-7 * std::min(nearSeparatrix, nearPivot);
+        const double h1 = h0 * (1 + std::fabs(s.lambda0));
         const Eigen::Vector3d dPsi = endResidual(UnitGeodesic(s.psi0 + h0, s.lambda0).at(s.t), tg) -
                                      endResidual(UnitGeodesic(s.psi0 - h0, s.lambda0).at(s.t), tg);
         const Eigen::Vector3d dLambda =
