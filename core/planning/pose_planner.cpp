@@ -39,7 +39,10 @@ std::optional<UnitSolution> polish(UnitSolution s, const UnitTarget& tg) {
         Eigen::Matrix3d J;
         // steps that stay on one side of the separatrix, where the end moves like log |1 - k|
         const double nearSeparatrix = std::clamp(100 * std::fabs(1 - g.modulus()), 1e-4, 1.0);
-        const double h0 = 2e-7 * nearSeparatrix, h1 = h0 * (1 + std::fabs(s.lambda0));
+        // and smaller than the start's distance from a pivot point, next to one
+        const double nearPivot = std::clamp(10 * g.modulus(), 1e-6, 1.0);
+        const double h0 = 2e-7 * std::min(nearSeparatrix, nearPivot);
+        const double h1 = h0 * (1 + std::fabs(s.lambda0));
         const Eigen::Vector3d dPsi = endResidual(UnitGeodesic(s.psi0 + h0, s.lambda0).at(s.t), tg) -
                                      endResidual(UnitGeodesic(s.psi0 - h0, s.lambda0).at(s.t), tg);
         const Eigen::Vector3d dLambda =
@@ -191,8 +194,9 @@ Plan planVakonomic(const PlanRequest& request) {
     std::vector<Found> all;
     double scanT = 0;
     if (d <= 1e-12) {
-        // only pivoting returns to the start's position (docs/physics.md §10)
-        scanT = userHorizon > 0 ? userHorizon : std::max(3 * pi, 2 * pi);
+        // only pivoting returns to the start's position (docs/physics.md §10); the least time
+        // is at most pi, so the default horizon at most 3 pi
+        scanT = userHorizon > 0 ? userHorizon : 3 * pi;
         if (std::fabs(tg.Phi) <= 1e-15)
             all.push_back({{0, 0, 0}, GeodesicFamily::Rest, pi});
         for (const double psi0 : {0.0, pi}) {

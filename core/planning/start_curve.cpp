@@ -52,7 +52,7 @@ template <class F> double edgeRoot(F&& G, double a, double Ga, double b, double 
 }
 
 // the passage of b that continues the n-th of a: the nearest in time, within half a period
-int pairedPassage(const CurvePoint& a, const CurvePoint& b, int n) {
+int pairedPassage(const StartPoint& a, const StartPoint& b, int n) {
     const double ta = a.t + n * a.period;
     int best = -1;
     double bestGap = 0.5 * std::min(a.period, b.period);
@@ -96,7 +96,7 @@ std::optional<std::pair<double, double>> projectOnCurve(double psi0, double lamb
 // how far a piece of the curve is from smooth: 0 when both ends have the same kind of orbit and
 // nearly the same first passage (or neither has one), 1 when the first passage moves a lot, 2 at
 // a change of orbit, where the passage ends, or next to the separatrix
-int roughness(const CurvePoint& a, const CurvePoint& b, const UnitTarget& tg) {
+int roughness(const StartPoint& a, const StartPoint& b, const UnitTarget& tg) {
     if (!a.valid && !b.valid)
         return 0;
     if (a.valid != b.valid || (a.k < 1) != (b.k < 1))
@@ -126,8 +126,8 @@ double wrapAngle(double a) {
     return r <= -pi ? r + 2 * pi : r;
 }
 
-CurvePoint curvePoint(double psi0, double lambda0, const UnitTarget& tg) {
-    CurvePoint cp;
+StartPoint startPoint(double psi0, double lambda0, const UnitTarget& tg) {
+    StartPoint cp;
     cp.psi0 = psi0;
     cp.lambda0 = lambda0;
     const double s0 = std::sin(psi0), c0 = std::cos(psi0);
@@ -157,7 +157,7 @@ CurvePoint curvePoint(double psi0, double lambda0, const UnitTarget& tg) {
 // Newton's start from a piece: halve it (its middle put back on the curve) while the passage
 // continues, then interpolate. Done only for the pieces Newton is run from.
 UnitSolution refineSeed(SeedPiece piece, const UnitTarget& tg) {
-    CurvePoint a = piece.a, b = piece.b;
+    StartPoint a = piece.a, b = piece.b;
     int n = piece.n, m = piece.m;
     for (int i = 0; i < 60; ++i) {
         const double ga = a.along + n * a.drift;
@@ -168,7 +168,7 @@ UnitSolution refineSeed(SeedPiece piece, const UnitTarget& tg) {
                                             0.5 * (a.lambda0 + b.lambda0), tg);
         if (!onCurve)
             break;
-        const CurvePoint mid = curvePoint(wrapAngle(onCurve->first), onCurve->second, tg);
+        const StartPoint mid = startPoint(wrapAngle(onCurve->first), onCurve->second, tg);
         if (!mid.valid)
             break;
         const int j = pairedPassage(a, mid, n);
@@ -190,39 +190,38 @@ UnitSolution refineSeed(SeedPiece piece, const UnitTarget& tg) {
             a.lambda0 + f * (b.lambda0 - a.lambda0), ta + f * (tb - ta)};
 }
 
-std::vector<SeedPiece> curveSeeds(const UnitTarget& tg, double tMax, double kMax, GridSize size) {
-    const int columns = size.columns;
-    const double du = size.du;
-    const double uMax = std::asinh(kMax * 1.02);
-    const int rows = std::max(8, static_cast<int>(std::ceil(2 * uMax / du)));
-    const double dpsi = 2 * pi / columns, duRow = 2 * uMax / rows;
-    std::vector<double> psi(columns), sinPsi(columns), cosPsi(columns), lam(rows + 1);
+namespace {
+
+// The curve G = 0 traced cell by cell on the grid of nodes psi x lam (psi periodic over 2 pi, or
+// a patch), its seeds appended to `seeds`.
+void traceGrid(const UnitTarget& tg, double tMax, const std::vector<double>& psi, bool periodic,
+               const std::vector<double>& lam, std::vector<SeedPiece>& seeds, int& budget) {
+    const int columns = static_cast<int>(psi.size()), rows = static_cast<int>(lam.size()) - 1;
+    const int lastColumn = periodic ? columns : columns - 1; // cells and horizontal edges
+    std::vector<double> sinPsi(columns), cosPsi(columns);
     for (int i = 0; i < columns; ++i) {
-        psi[i] = -pi + (i + 0.3719) * dpsi; // off the axes, where lines and pivots sit
         sinPsi[i] = std::sin(psi[i]);
         cosPsi[i] = std::cos(psi[i]);
     }
-    for (int j = 0; j <= rows; ++j)
-        lam[j] = std::sinh(-uMax + (j + 0.2113) * duRow);
     std::vector<double> G((rows + 1) * columns);
     auto node = [&](int i, int j) -> double& { return G[j * columns + i]; };
     for (int j = 0; j <= rows; ++j)
         for (int i = 0; i < columns; ++i)
             node(i, j) = curveG(sinPsi[i], cosPsi[i], lam[j], tg);
 
-    std::vector<CurvePoint> points;
+    std::vector<StartPoint> points;
     std::vector<int> horizontal((rows + 1) * columns, -1), vertical(rows * columns, -1);
     for (int j = 0; j <= rows; ++j)
-        for (int i = 0; i < columns; ++i) {
+        for (int i = 0; i < lastColumn; ++i) {
             const int i1 = (i + 1) % columns;
             const double g0 = node(i, j), g1 = node(i1, j);
             if ((g0 > 0) == (g1 > 0))
                 continue;
             const double l = lam[j];
             auto along = [&](double p) { return curveG(std::sin(p), std::cos(p), l, tg); };
-            const double p = edgeRoot(along, psi[i], g0, psi[i] + dpsi, g1);
+            const double p = edgeRoot(along, psi[i], g0, psi[i] + wrapAngle(psi[i1] - psi[i]), g1);
             horizontal[j * columns + i] = static_cast<int>(points.size());
-            points.push_back(curvePoint(wrapAngle(p), l, tg));
+            points.push_back(startPoint(wrapAngle(p), l, tg));
         }
     for (int j = 0; j < rows; ++j)
         for (int i = 0; i < columns; ++i) {
@@ -232,12 +231,10 @@ std::vector<SeedPiece> curveSeeds(const UnitTarget& tg, double tMax, double kMax
             auto along = [&](double l) { return curveG(sinPsi[i], cosPsi[i], l, tg); };
             const double l = edgeRoot(along, lam[j], g0, lam[j + 1], g1);
             vertical[j * columns + i] = static_cast<int>(points.size());
-            points.push_back(curvePoint(psi[i], l, tg));
+            points.push_back(startPoint(psi[i], l, tg));
         }
 
-    std::vector<SeedPiece> seeds;
-    int budget = 20000; // halvings, a bound on the time a pathological target can take
-    auto link = [&](const CurvePoint& a, const CurvePoint& b) {
+    auto link = [&](const StartPoint& a, const StartPoint& b) {
         const double jump = 0.5 * std::min(a.period, b.period);
         for (int n = 0;; ++n) {
             const double ta = a.t + n * a.period;
@@ -256,15 +253,16 @@ std::vector<SeedPiece> curveSeeds(const UnitTarget& tg, double tMax, double kMax
     };
     // continuation along the curve: a piece whose ends disagree (the first passage jumps, the
     // pendulum changes from libration to rotation, or an end has no passage) is halved, its
-    // middle put back on the curve, down to a piece 2^-10 of a cell long
-    auto follow = [&](auto&& self, const CurvePoint& a, const CurvePoint& b, int depth) -> void {
+    // middle put back on the curve, down to 2^-48 of a cell at a change of orbit and 2^-5 where
+    // the passage only moves a lot
+    auto follow = [&](auto&& self, const StartPoint& a, const StartPoint& b, int depth) -> void {
         const int rough = roughness(a, b, tg);
         if (((rough == 2 && depth < 48) || (rough == 1 && depth < 5)) && --budget > 0) {
             const double psiM = a.psi0 + 0.5 * wrapAngle(b.psi0 - a.psi0);
             const double lamM = 0.5 * (a.lambda0 + b.lambda0);
             const auto onCurve = projectOnCurve(psiM, lamM, tg);
             if (onCurve) {
-                const CurvePoint m = curvePoint(wrapAngle(onCurve->first), onCurve->second, tg);
+                const StartPoint m = startPoint(wrapAngle(onCurve->first), onCurve->second, tg);
                 self(self, a, m, depth + 1);
                 self(self, m, b, depth + 1);
                 return;
@@ -274,7 +272,7 @@ std::vector<SeedPiece> curveSeeds(const UnitTarget& tg, double tMax, double kMax
             link(a, b);
     };
     for (int j = 0; j < rows; ++j)
-        for (int i = 0; i < columns; ++i) {
+        for (int i = 0; i < lastColumn; ++i) {
             const int i1 = (i + 1) % columns;
             int ids[4], count = 0;
             for (int id : {horizontal[j * columns + i], vertical[j * columns + i1],
@@ -288,6 +286,38 @@ std::vector<SeedPiece> curveSeeds(const UnitTarget& tg, double tMax, double kMax
                     follow(follow, points[ids[a]], points[ids[(a + 1) % 4]], 0);
             }
         }
+}
+
+} // namespace
+
+std::vector<SeedPiece> curveSeeds(const UnitTarget& tg, double tMax, double kMax, GridSize size) {
+    const int columns = size.columns;
+    const double uMax = std::asinh(kMax * 1.02);
+    const int rows = std::max(8, static_cast<int>(std::ceil(2 * uMax / size.du)));
+    const double dpsi = 2 * pi / columns, duRow = 2 * uMax / rows;
+    std::vector<double> psi(columns), lam(rows + 1);
+    for (int i = 0; i < columns; ++i)
+        psi[i] = -pi + (i + 0.3719) * dpsi; // off the axes, where lines and pivots sit
+    for (int j = 0; j <= rows; ++j)
+        lam[j] = std::sinh(-uMax + (j + 0.2113) * duRow);
+    std::vector<SeedPiece> seeds;
+    int budget = 20000; // halvings, a bound on the time a pathological target can take
+    traceGrid(tg, tMax, psi, true, lam, seeds, budget);
+    // next to the start's position the curve has a loop about the size of the distance around
+    // each pivot point (0, 0) and (pi, 0), finer than the grid: a patch twenty times as wide
+    const double d = std::hypot(tg.X, tg.Y);
+    if (d < 0.05) {
+        constexpr int patch = 24;
+        const double h = 20 * d;
+        for (const double centre : {0.0, pi}) {
+            std::vector<double> p(patch + 1), l(patch + 1);
+            for (int i = 0; i <= patch; ++i) {
+                p[i] = wrapAngle(centre - h + (i + 0.3719) * 2 * h / patch);
+                l[i] = -h + (i + 0.2113) * 2 * h / patch;
+            }
+            traceGrid(tg, tMax, p, false, l, seeds, budget);
+        }
+    }
     std::sort(seeds.begin(), seeds.end(),
               [](const SeedPiece& a, const SeedPiece& b) { return a.t < b.t; });
     return seeds;

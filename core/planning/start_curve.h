@@ -22,7 +22,7 @@ struct UnitSolution {
 /// A point (Psi0, Lambda0) of the curve G = 0 with its passages: the n-th passage through the
 /// target's pendulum state comes at t + n period and misses the target along P by along + n drift.
 /// Not valid where the pendulum never passes that state (another orbit, the separatrix level).
-struct CurvePoint {
+struct StartPoint {
     double psi0 = 0, lambda0 = 0;
     bool valid = false;
     double t = 0, period = 0, along = 0, drift = 0;
@@ -30,14 +30,14 @@ struct CurvePoint {
 };
 
 /// The point's passages, for (psi0, lambda0) on the curve (G = 0 to rounding).
-CurvePoint curvePoint(double psi0, double lambda0, const UnitTarget& tg);
+StartPoint startPoint(double psi0, double lambda0, const UnitTarget& tg);
 
 /// A piece of the curve over which the n-th passage of a and the m-th of b miss on opposite
 /// sides along P, and the time interpolated there.
 struct SeedPiece {
-    CurvePoint a;
+    StartPoint a;
     int n = 0;
-    CurvePoint b;
+    StartPoint b;
     int m = 0;
     double t = 0;
 };

@@ -126,6 +126,22 @@ TEST(PosePlanner, PivotingInPlaceTakesTheAngle) {
     }
 }
 
+// a micrometre off pivoting: a libration with k about 2e-5, found on the patch around the pivot
+// point; the heading alone takes |phi| (|phidot| <= v_T/b), and the shift adds almost nothing
+TEST(PosePlanner, NextToTheStartIsAlmostPivoting) {
+    const PlanRequest r = request({1e-6, 0, 0.5});
+    const Plan plan = planVakonomic(r);
+    ASSERT_TRUE(plan.certified);
+    const auto best = optima(plan);
+    ASSERT_EQ(best.size(), 1u);
+    EXPECT_EQ(best[0].family, GeodesicFamily::Libration);
+    EXPECT_GE(best[0].t, 0.5);
+    EXPECT_LT(best[0].t, 0.5 + 1e-9);
+    const auto s = test::leastTimeByShooting(1e-6, 0, 0.5, 300, 5);
+    EXPECT_LE(best[0].t, s.t + 1e-9);
+    worstEndError(r, plan);
+}
+
 TEST(PosePlanner, PivotingByPiHasTwoOptima) {
     const PlanRequest r = request({0, 0, pi});
     const Plan plan = planVakonomic(r);

@@ -35,7 +35,7 @@ TEST(StartCurve, WrapAngleIsInMinusPiToPi) {
 
 TEST(StartCurve, AGeodesicsStartPassesItsEndAtItsTime) {
     for (const Case& c : cases) {
-        const CurvePoint p = curvePoint(c.psi0, c.lambda0, reached(c));
+        const StartPoint p = startPoint(c.psi0, c.lambda0, reached(c));
         ASSERT_TRUE(p.valid) << c.psi0 << ", " << c.lambda0;
         EXPECT_NEAR(p.k, std::hypot(std::sin(c.psi0), c.lambda0), 1e-15);
         const double n = std::round((c.t - p.t) / p.period);
