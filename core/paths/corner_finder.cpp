@@ -9,7 +9,7 @@ namespace {
 
 using Point = std::pair<double, double>;
 
-constexpr double kChordStraightness = 0.25; // largest distance inside a chord / its length
+constexpr double kChordStraightness = 0.35; // largest distance inside a chord / its length
 
 bool straightChord(const std::vector<Point>& pts, std::size_t a, std::size_t b) {
     const double dx = pts[b].first - pts[a].first, dy = pts[b].second - pts[a].second;

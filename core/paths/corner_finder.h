@@ -15,7 +15,7 @@ inline constexpr double kDefaultCornerAngleDeg = 35.0;
 /// The indices of the interior points where the stroke turns by more than thresholdDeg. The
 /// direction arriving at point i is the chord from up to kCornerReach points before it, the
 /// direction leaving it the chord to up to kCornerReach points after it; a chord stops short
-/// where a point inside it lies farther than a quarter of its length from it (a sharp corner
+/// where a point inside it lies farther than 0.35 of its length from it (a sharp corner
 /// of a sparse polyline ends it). The turn is the angle between the two chords. A point inside
 /// the chords of a point that turns more (or as much, and comes first) is no corner of its own,
 /// so a corner the hand rounded over two samples counts once. Points must be distinct in turn.
