@@ -181,12 +181,18 @@ void applyPerturbation(const OptionValues& given, Scene& s) {
 
 const SpeedSettingWords kCommandLineSpeedWords{"--vT", "--vs", "--mode energy", "--mode speed"};
 
-// --corners, --system, --param, --mode, --vT/--vs and --t-end on top of the base scene
+// --corners, --corner-angle, --system, --param, --mode, --vT/--vs and --t-end on top of the base
+// scene
 void applyOverrides(const OptionValues& given, Scene& s) {
     if (auto corners = given.value("--corners")) {
         if (s.path.kind != PathKind::Polyline)
             throw InputError("--corners", "applies only to --points paths");
         s.path.corners = cornerModeFromName(*corners);
+    }
+    if (auto angle = given.value("--corner-angle")) {
+        if (s.path.kind != PathKind::Polyline)
+            throw InputError("--corner-angle", "applies only to --points paths");
+        s.path.cornerAngle = parseNumber(*angle, "--corner-angle");
     }
     if (auto system = given.value("--system")) {
         SystemKind kind = systemKindFromName(*system);
@@ -376,6 +382,8 @@ InputError withOptionNames(const InputError& error, SpeedMode mode) {
         option = "--t-end";
     else if (field == "preset" || field == "system" || field == "mode" || field == "corners")
         option = "--" + field;
+    else if (field == "corner_angle")
+        option = "--corner-angle";
     else if (field == "scene_file")
         option = "--scene";
     else if (field == "perturbation feedback_rate")

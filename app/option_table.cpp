@@ -74,6 +74,11 @@ const std::array kOptions = {
     OptionSpec{.name = "--corners", .argument = "pivot|smooth",
                .help = "how a --points path turns at its corners",
                .modes = kAllModes, .section = S::Scene},
+    OptionSpec{.name = "--corner-angle", .argument = "DEG",
+               .help = "pivot corners of a --points path: where it turns by more than\n"
+                       "DEG degrees over 3 points either side (default 35); smaller\n"
+                       "turns are smoothed",
+               .modes = kAllModes, .section = S::Scene},
     OptionSpec{.name = "--scene", .argument = "FILE",
                .help = "a scene saved by the app (JSON)",
                .modes = kAllModes, .section = S::Scene},

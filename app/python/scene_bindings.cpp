@@ -142,7 +142,7 @@ void setNote(Scene& s, const std::string& note) {
 // the path: "y=EXPR" with x_range, "x=EXPR;y=EXPR" with u_range, or points
 PathSource makePath(const std::optional<std::string>& path, const py::object& xRange,
                     const py::object& uRange, const py::object& points, const py::object& corners,
-                    const py::object& smoothing) {
+                    const py::object& smoothing, const py::object& cornerAngle) {
     PathSource source;
     if (path && !points.is_none())
         throw InputError("path", "give path or points, not both");
@@ -169,8 +169,12 @@ PathSource makePath(const std::optional<std::string>& path, const py::object& xR
     }
     if (!path && !(xRange.is_none() && uRange.is_none()))
         throw InputError(xRange.is_none() ? "u_range" : "x_range", "applies only to path=");
-    if (source.kind != PathKind::Polyline && !(corners.is_none() && smoothing.is_none()))
-        throw InputError(corners.is_none() ? "smoothing" : "corners", "applies only to points=");
+    if (source.kind != PathKind::Polyline &&
+        !(corners.is_none() && smoothing.is_none() && cornerAngle.is_none()))
+        throw InputError(!corners.is_none()     ? "corners"
+                         : !smoothing.is_none() ? "smoothing"
+                                                : "corner_angle",
+                         "applies only to points=");
     if (!corners.is_none())
         source.corners = cornerModeFromName(py::str(corners));
     if (!smoothing.is_none()) {
@@ -179,16 +183,23 @@ PathSource makePath(const std::optional<std::string>& path, const py::object& xR
             throw InputError("smoothing",
                              "must be a finite number >= 0, got " + formatNumber(source.smoothing));
     }
+    if (!cornerAngle.is_none()) {
+        source.cornerAngle = numberArgument(cornerAngle, "corner_angle");
+        if (!(source.cornerAngle >= 0 && source.cornerAngle <= 180))
+            throw InputError("corner_angle", "must be between 0 and 180 degrees, got " +
+                                                 formatNumber(source.cornerAngle));
+    }
     return source;
 }
 
 Scene makeScene(const std::optional<std::string>& path, const py::object& xRange,
                 const py::object& uRange, const py::object& points, const py::object& corners,
-                const py::object& smoothing, const std::optional<SystemSpec>& system,
-                const std::optional<std::string>& mode, const py::object& vT, const py::object& vS,
-                const py::object& tEnd, const py::object& perturbation, const std::string& note) {
+                const py::object& smoothing, const py::object& cornerAngle,
+                const std::optional<SystemSpec>& system, const std::optional<std::string>& mode,
+                const py::object& vT, const py::object& vS, const py::object& tEnd,
+                const py::object& perturbation, const std::string& note) {
     Scene s;
-    s.path = makePath(path, xRange, uRange, points, corners, smoothing);
+    s.path = makePath(path, xRange, uRange, points, corners, smoothing, cornerAngle);
     if (system)
         s.system = *system;
     setMotion(s, mode, vT, vS);
@@ -359,14 +370,16 @@ void bindScene(py::module_& m) {
         .def(py::init(&makeScene), py::arg("path") = py::none(), py::kw_only(),
              py::arg("x_range") = py::none(), py::arg("u_range") = py::none(),
              py::arg("points") = py::none(), py::arg("corners") = py::none(),
-             py::arg("smoothing") = py::none(), py::arg("system") = py::none(),
-             py::arg("mode") = py::none(), py::arg("v_T") = py::none(), py::arg("v_s") = py::none(),
+             py::arg("smoothing") = py::none(), py::arg("corner_angle") = py::none(),
+             py::arg("system") = py::none(), py::arg("mode") = py::none(),
+             py::arg("v_T") = py::none(), py::arg("v_s") = py::none(),
              py::arg("t_end") = py::none(), py::arg("perturbation") = py::none(),
              py::arg("note") = "",
              "Scene(path=\"y=-sin(x)\", x_range=(0, 12.57), system=Sleigh(m=1, a=0.5, b=1), "
              "mode=\"energy\", v_T=1): path as the command line's --path (\"y=EXPR\" with "
              "x_range, \"x=EXPR;y=EXPR\" with u_range) or points=[(x, y), ...] with corners "
-             "(\"pivot\" or \"smooth\") and smoothing; mode \"energy\" with v_T [m/s] or "
+             "(\"pivot\" or \"smooth\"), smoothing and corner_angle (degrees; pivot corners "
+             "where the stroke turns by more, default 35); mode \"energy\" with v_T [m/s] or "
              "\"speed\" with v_s [m/s]; t_end [s]; perturbation a Perturbation or a dict.")
         .def_static("preset", &presetScene, py::arg("name"),
                     "One of the paper's four examples: \"line\", \"circle\", \"catenary\", "
@@ -420,6 +433,9 @@ void bindScene(py::module_& m) {
         .def_property_readonly(
             "corners", [](const Scene& s) { return cornerModeName(s.path.corners); },
             "a polyline's corners: \"pivot\" or \"smooth\"")
+        .def_property_readonly(
+            "corner_angle", [](const Scene& s) { return s.path.cornerAngle; },
+            "a polyline's least turn that is a pivot corner [degrees]")
         .def_property_readonly(
             "system", [](const Scene& s) { return s.system; }, "the System")
         .def_property_readonly(

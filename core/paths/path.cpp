@@ -1,6 +1,7 @@
 #include "paths/path.h"
 
 #include "common/input_error.h"
+#include "paths/corner_finder.h"
 #include "paths/expression_curve.h"
 #include "paths/spline_curve.h"
 #include "paths/sub_curve.h"
@@ -33,15 +34,37 @@ std::vector<std::pair<double, double>> distinctPoints(const PathSource& source) 
     return pts;
 }
 
-std::vector<PathPiece> pivotPolyline(const std::vector<std::pair<double, double>>& pts) {
+// the stretch of a stroke from point a to point b: a segment, or the smoothing spline through
+// its points with its ends pinned to the corners
+std::shared_ptr<const Curve> stretch(const std::vector<std::pair<double, double>>& pts,
+                                     std::size_t a, std::size_t b, double smoothing) {
+    if (b == a + 1)
+        return std::make_shared<SegmentCurve>(pts[a].first, pts[a].second, pts[b].first,
+                                              pts[b].second);
+    std::vector<double> xs, ys;
+    for (std::size_t i = a; i <= b; ++i) {
+        xs.push_back(pts[i].first);
+        ys.push_back(pts[i].second);
+    }
+    return std::make_shared<SplineCurve>(xs, ys, smoothing, SplineCurve::Ends::Pinned);
+}
+
+// A stroke with pivot corners: the body pivots where the hand turned by more than the corner
+// angle (findCorners) and follows a smooth stretch between them (docs/numerics.md, "Corners of
+// a drawn path")
+std::vector<PathPiece> pivotPolyline(const std::vector<std::pair<double, double>>& pts,
+                                     double cornerAngleDeg, double smoothing,
+                                     std::size_t halvingBudget) {
+    std::vector<std::size_t> ends = findCorners(pts, cornerAngleDeg);
+    ends.push_back(pts.size() - 1);
     std::vector<PathPiece> pieces;
-    double phi = 0;
-    for (std::size_t i = 0; i + 1 < pts.size(); ++i) {
-        auto curve = std::make_shared<SegmentCurve>(pts[i].first, pts[i].second, pts[i + 1].first,
-                                                    pts[i + 1].second);
-        auto table = std::make_shared<const PathTable>(curve);
-        double heading = table->nodes().front().phi;
-        if (i == 0) {
+    double phi = 0; // the body's heading at the end of the last stretch
+    std::size_t a = 0;
+    for (std::size_t b : ends) {
+        auto table = std::make_shared<const PathTable>(stretch(pts, a, b, smoothing),
+                                                       PathTable::CuspEnds{}, halvingBudget);
+        const double heading = table->nodes().front().phi;
+        if (a == 0) {
             phi = heading;
         } else {
             double turn = wrapAngle(heading - phi);
@@ -50,8 +73,8 @@ std::vector<PathPiece> pivotPolyline(const std::vector<std::pair<double, double>
             if (std::fabs(turn) > kStraight) {
                 PathPiece pivot;
                 pivot.kind = PathPiece::Kind::Pivot;
-                pivot.x = pts[i].first;
-                pivot.y = pts[i].second;
+                pivot.x = pts[a].first;
+                pivot.y = pts[a].second;
                 pivot.phiFrom = phi;
                 pivot.phiTo = phi + turn;
                 pieces.push_back(pivot);
@@ -62,6 +85,8 @@ std::vector<PathPiece> pivotPolyline(const std::vector<std::pair<double, double>
         piece.table = table;
         piece.phiOffset = phi - heading;
         pieces.push_back(piece);
+        phi += table->nodes().back().phi - heading;
+        a = b;
     }
     return pieces;
 }
@@ -165,11 +190,15 @@ std::shared_ptr<const Path> buildPath(const PathSource& source, std::size_t halv
     }
     case PathKind::Polyline: {
         auto pts = distinctPoints(source);
-        if (source.corners == CornerMode::Pivot || pts.size() == 2)
-            return std::make_shared<const Path>(pivotPolyline(pts));
         if (!(source.smoothing >= 0) || !std::isfinite(source.smoothing))
             throw InputError("smoothing",
                              "must be a finite number >= 0, got " + formatNumber(source.smoothing));
+        if (!(source.cornerAngle >= 0 && source.cornerAngle <= 180))
+            throw InputError("corner_angle", "must be between 0 and 180 degrees, got " +
+                                                 formatNumber(source.cornerAngle));
+        if (source.corners == CornerMode::Pivot || pts.size() == 2)
+            return std::make_shared<const Path>(
+                pivotPolyline(pts, source.cornerAngle, source.smoothing, halvingBudget));
         std::vector<double> xs, ys;
         for (auto [x, y] : pts) {
             xs.push_back(x);

@@ -1,6 +1,8 @@
 #pragma once
 // What the user gave for a path (a graph, a parametric curve or a polyline), before any
 // tabulation.
+#include "paths/corner_finder.h"
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,8 +20,10 @@ struct PathSource {
     double from = 0, to = 12.566370614359172;      ///< x-range or u-range
     std::vector<std::pair<double, double>> points; ///< polyline vertices, in order
     CornerMode corners = CornerMode::Pivot;
-    double smoothing =
-        10.0; ///< smoothed polylines: spline bandwidth in point spacings (0 interpolates)
+    double smoothing = 10.0; ///< polylines: spline bandwidth in point spacings (0 interpolates)
+    /// pivot corners: the least turn of the stroke [degrees] that is a corner (findCorners);
+    /// smaller turns are smoothed
+    double cornerAngle = kDefaultCornerAngleDeg;
 
     bool operator==(const PathSource&) const = default;
 };

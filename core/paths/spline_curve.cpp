@@ -8,7 +8,8 @@
 namespace chaplygin {
 
 SplineCurve::SplineCurve(const std::vector<double>& x, const std::vector<double>& y,
-                         double bandwidth) {
+                         double bandwidth, Ends ends)
+    : m_ends(ends) {
     if (x.size() != y.size() || x.size() < 3)
         throw InputError("points", "a smoothed path needs at least 3 distinct points");
     m_knots.resize(x.size());
@@ -37,7 +38,8 @@ SplineCurve::SplineCurve(const std::vector<double>& x, const std::vector<double>
 }
 
 SplineCurve::Factor SplineCurve::factor(double alpha) const {
-    // (R + alpha Q^T Q) gamma = Q^T y, g = y - alpha Q gamma (Green and Silverman, eq. 2.15):
+    // (R + alpha Q^T W^-1 Q) gamma = Q^T y, g = y - alpha W^-1 Q gamma (Green and Silverman,
+    // eq. 2.15, weighted), W^-1 = diag(looseness): only the diagonal meets the ends' weights.
     // R and Q^T Q are banded (Q has three entries per column), so the matrix is pentadiagonal and
     // LDL^T keeps the band (Green and Silverman §2.3.3: the Reinsch algorithm)
     const int n = static_cast<int>(m_knots.size()), m = n - 2;
@@ -50,8 +52,10 @@ SplineCurve::Factor SplineCurve::factor(double alpha) const {
     // 2
     auto diag = [&](int j) {
         const double mid = r[j] + r[j + 1];
+        const auto u = static_cast<std::size_t>(j);
         return (1 / r[j] + 1 / r[j + 1]) / 3 +
-               alpha * (r[j] * r[j] + mid * mid + r[j + 1] * r[j + 1]);
+               alpha * (r[j] * r[j] * looseness(u) + mid * mid * looseness(u + 1) +
+                        r[j + 1] * r[j + 1] * looseness(u + 2));
     };
     auto next = [&](int j) { // entry (j, j + 1)
         return 1 / (6 * r[j + 1]) - alpha * r[j + 1] * (r[j] + 2 * r[j + 1] + r[j + 2]);
@@ -101,7 +105,7 @@ SplineCurve::Coordinate SplineCurve::smooth(const std::vector<double>& data, dou
             v -= f.l2[j] * c.gamma[j + 3];
         c.gamma[j + 1] = v;
     }
-    // g = y - alpha Q gamma: row i of Q meets the second derivatives at knots i - 1, i, i + 1
+    // g = y - alpha W^-1 Q gamma: row i of Q meets the second derivatives at knots i - 1, i, i + 1
     c.g.resize(n);
     for (int i = 0; i < n; ++i) {
         double q = 0;
@@ -111,7 +115,7 @@ SplineCurve::Coordinate SplineCurve::smooth(const std::vector<double>& data, dou
             q += r[i - 1] * c.gamma[i - 1];
         if (i >= 1 && i + 1 < n)
             q -= (r[i - 1] + r[i]) * c.gamma[i];
-        c.g[i] = data[i] - alpha * q;
+        c.g[i] = data[i] - alpha * looseness(static_cast<std::size_t>(i)) * q;
     }
     return c;
 }

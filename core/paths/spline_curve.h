@@ -13,7 +13,12 @@ namespace chaplygin {
 /// gets a smooth, C2 curve whose curvature is continuous. w = 0 interpolates.
 class SplineCurve final : public Curve {
   public:
-    SplineCurve(const std::vector<double>& x, const std::vector<double>& y, double bandwidth);
+    /// Ends::Pinned passes exactly through the first and the last point (infinite weights in
+    /// Green and Silverman's weighted penalised sum of squares), so stretches between the corners
+    /// of a stroke meet at them.
+    enum class Ends { Free, Pinned };
+    SplineCurve(const std::vector<double>& x, const std::vector<double>& y, double bandwidth,
+                Ends ends = Ends::Free);
     CurvePoint eval(double u) const override;
     double u0() const override { return m_knots.front(); }
     double u1() const override { return m_knots.back(); }
@@ -31,6 +36,12 @@ class SplineCurve final : public Curve {
     };
     Factor factor(double alpha) const;
     Coordinate smooth(const std::vector<double>& data, double alpha, const Factor& f) const;
+    // 1 / weight of knot i's point: 0 at a pinned end, else 1
+    double looseness(std::size_t i) const {
+        return m_ends == Ends::Pinned && (i == 0 || i + 1 == m_knots.size()) ? 0.0 : 1.0;
+    }
+
+    Ends m_ends;
 
     std::vector<double> m_knots;
     // the cubic of each knot interval in a = u - t_i: x = sum cx_k a^k, y = sum cy_k a^k

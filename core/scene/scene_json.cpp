@@ -136,6 +136,8 @@ PathSource readPath(const json& p, const std::string& at) {
         }
         if (auto it = p.find("smoothing"); it != p.end())
             src.smoothing = number(*it, at + "/smoothing");
+        if (auto it = p.find("corner_angle"); it != p.end())
+            src.cornerAngle = number(*it, at + "/corner_angle");
     } else {
         bad(at + "/kind",
             "must be \"graph\", \"parametric\" or \"polyline\", got \"" + kind + "\"");
@@ -187,6 +189,7 @@ json writePath(const PathSource& path) {
             p["points"].push_back({x, y});
         p["corners"] = cornerModeName(path.corners);
         p["smoothing"] = path.smoothing;
+        p["corner_angle"] = path.cornerAngle;
         break;
     }
     return p;

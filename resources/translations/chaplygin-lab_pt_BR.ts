@@ -1689,8 +1689,8 @@ O que os estudantes devem observar…</translation>
         <translation>suave (spline pelos pontos)</translation>
     </message>
     <message>
-        <source>pivot (straight segments, turn in place)</source>
-        <translation>pivô (segmentos retos, giro no lugar)</translation>
+        <source>pivot (turn in place where the stroke turns by more than 35°, smooth between)</source>
+        <translation>pivô (giro no lugar onde o traço vira mais de 35°, suave entre eles)</translation>
     </message>
     <message>
         <source>How a drawn path&apos;s corners are followed</source>

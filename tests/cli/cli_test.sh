@@ -143,6 +143,40 @@ corners_pivot)
   below "$(awk -v d="$d" 'BEGIN { e = d - (2 + atan2(1, 0)); print (e < 0 ? -e : e) }')" 1e-14 "duration"
   grep -q '"pivots": 1' "$work/out" || fail "pivots"
   ;;
+corners_where_the_hand_turned)
+  # jittered_points SEED KIND: 81 points 5 cm apart, each moved by up to 5 mm in x and y (seeded):
+  # KIND zigzag, four straight strokes of 1 m turning right and left by 90 degrees (the corners
+  # are points 20, 40 and 60), or arc, a half circle of radius 1.3 m
+  jittered_points() {
+    awk -v seed="$1" -v kind="$2" 'BEGIN {
+      srand(seed); pi = atan2(0, -1); out = ""
+      for (i = 0; i <= 80; i++) {
+        if (kind == "zigzag") {
+          k = int(i / 20); if (k > 3) k = 3; f = (i - 20 * k) * 0.05; c = sqrt(0.5)
+          x = (20 * k * 0.05 + f) * c; y = (k % 2 == 0 ? f : 1 - f) * c
+        } else {
+          x = 1.3 * cos(pi * i / 80); y = 1.3 * sin(pi * i / 80)
+        }
+        out = out sprintf("%.6f,%.6f ", x + 0.01 * (rand() - 0.5), y + 0.01 * (rand() - 0.5))
+      }
+      print out }'
+  }
+  for seed in 1 2 3 4 5; do
+    run 0 --points "$(jittered_points $seed zigzag)" --corners pivot --summary -
+    grep -q '"pivots": 3' "$work/out" || fail "zig-zag, seed $seed: $(grep pivots "$work/out")"
+    run 0 --points "$(jittered_points $seed arc)" --summary -
+    grep -q '"pivots": 0' "$work/out" || fail "half circle, seed $seed: $(grep pivots "$work/out")"
+  done
+  # the threshold: over the zig-zag's 90 degrees no pivot, under the arc's few degrees many
+  run 0 --points "$(jittered_points 1 zigzag)" --corner-angle 100 --summary -
+  grep -q '"pivots": 0' "$work/out" || fail "corner angle 100: $(grep pivots "$work/out")"
+  run 0 --points "$(jittered_points 1 arc)" --corner-angle 1 --summary -
+  grep -q '"pivots": 0' "$work/out" && fail "corner angle 1 found no pivot on the arc"
+  run 2 --points "0,0 1,0 1,1" --corner-angle 200
+  expect_err "\-\-corner-angle: must be between 0 and 180 degrees, got 200"
+  run 2 --preset line --corner-angle 30
+  expect_err "applies only to --points paths"
+  ;;
 bad_expression)
   run 2 --path "y=sin(x" --x-range 0,1
   expect_err "missing ')'"

@@ -77,6 +77,26 @@ def test_scenes_built_in_python(cl):
     assert "Scene(path='y=x', x_range=(0, 1)" in repr(speed)
 
 
+def test_drawn_points_pivot_where_they_turn_by_more_than_the_corner_angle(cl):
+    # 81 points 5 cm apart on four 1 m strokes turning by 90 degrees, each moved by up to 5 mm
+    rng = np.random.default_rng(27)
+    c = np.sqrt(0.5)
+    f = np.linspace(0, 4, 81)
+    k = np.minimum(np.floor(f), 3)
+    frac = f - k
+    pts = np.column_stack([f * c, np.where(k % 2 == 0, frac, 1 - frac) * c])
+    pts += rng.uniform(-0.005, 0.005, pts.shape)
+    zig = cl.Scene(points=pts, corners="pivot")
+    assert zig.corner_angle == 35.0
+    assert zig.solve().summary["pivots"] == 3
+    wide = cl.Scene(points=pts, corner_angle=100)
+    assert wide.corner_angle == 100.0 and wide.solve().summary["pivots"] == 0
+    with pytest.raises(cl.InputError, match="corner_angle"):
+        cl.Scene(points=pts, corner_angle=-5)
+    with pytest.raises(cl.InputError, match="corner_angle"):
+        cl.Scene(path="y=x", x_range=(0, 1), corner_angle=30)
+
+
 def test_a_solution(cl):
     solution = cl.Scene.preset("catenary").solve()
     assert solution.duration == pytest.approx(5.346171118810, rel=1e-12)  # docs/numerics.md §2

@@ -20,6 +20,13 @@ QString num(double v) {
     return s.startsWith(u'-') ? QStringLiteral("\u2212") + s.mid(1) : s;
 }
 
+// a value inside a substituted formula: a negative one in parentheses, so that the line reads
+// as it evaluates (1.6 \u00b7 (\u22120.8376), (\u22120.5009)\u00b2)
+QString operand(double v) {
+    const QString s = num(v);
+    return s.startsWith(u'\u2212') ? QStringLiteral("(") + s + QStringLiteral(")") : s;
+}
+
 // one formula: the symbolic form, its substitution, the value with its unit and the source;
 // a paragraph each, so that the page reads in a narrow dock
 QString row(const QString& formula, const QString& substituted, double value, const QString& unit,
@@ -113,19 +120,19 @@ QString controlAngle(const At& at) {
                                              "pivot about P, docs/physics.md \u00a7"
                                              "3"));
     } else if (!(c.sdot > 0)) {
-        h +=
-            row(QStringLiteral("\u03a8 = atan2(\u1e61, b\u03c6\u0307)"),
-                QStringLiteral("atan2(%1, %2 \u00b7 %3)").arg(num(c.sdot), num(d.b), num(c.phidot)),
-                c.psi, QStringLiteral("rad"),
-                QCoreApplication::translate("EquationsPanel",
-                                            "at or after a cusp the sleigh backs up: \u03a8 "
-                                            "leaves (0, \u03c0) continuously (docs/physics.md "
-                                            "\u00a7"
-                                            "3)"));
+        h += row(QStringLiteral("\u03a8 = atan2(\u1e61, b\u03c6\u0307)"),
+                 QStringLiteral("atan2(%1, %2 \u00b7 %3)")
+                     .arg(num(c.sdot), operand(d.b), operand(c.phidot)),
+                 c.psi, QStringLiteral("rad"),
+                 QCoreApplication::translate("EquationsPanel",
+                                             "at or after a cusp the sleigh backs up: \u03a8 "
+                                             "leaves (0, \u03c0) continuously (docs/physics.md "
+                                             "\u00a7"
+                                             "3)"));
     } else {
         h += row(QStringLiteral("\u03a8 = atan2(1, b\u03ba)"),
-                 QStringLiteral("atan2(1, %1 \u00b7 %2)").arg(num(d.b), num(m.kappa)), c.psi,
-                 QStringLiteral("rad"),
+                 QStringLiteral("atan2(1, %1 \u00b7 %2)").arg(operand(d.b), operand(m.kappa)),
+                 c.psi, QStringLiteral("rad"),
                  QCoreApplication::translate(
                      "EquationsPanel",
                      "(45) tan \u03a8 = \u03c1/b on the branch \u03a8 \u2208 (0, \u03c0) "
@@ -143,19 +150,19 @@ QString velocities(const At& at) {
         h += row(QStringLiteral("\u1e61"), {}, c.sdot, QStringLiteral("m/s"),
                  QCoreApplication::translate("EquationsPanel", "turning in place"));
         h += row(QStringLiteral("\u03c6\u0307 = \u00b1v_T/b"),
-                 QStringLiteral("\u00b1%1/%2").arg(num(v), num(d.b)), c.phidot,
+                 QStringLiteral("\u00b1%1/%2").arg(operand(v), operand(d.b)), c.phidot,
                  QStringLiteral("rad/s"),
                  QCoreApplication::translate("EquationsPanel", "(35) with \u03a8 = 0 or \u03c0"));
     } else if (energy) {
         h += row(QStringLiteral("\u1e61 = v_T sin \u03a8"),
-                 QStringLiteral("%1 \u00b7 sin %2").arg(num(v), num(c.psi)), c.sdot,
+                 QStringLiteral("%1 \u00b7 sin %2").arg(operand(v), operand(c.psi)), c.sdot,
                  QStringLiteral("m/s"), QStringLiteral("(34)"));
         h += row(QStringLiteral("\u03c6\u0307 = (v_T/b) cos \u03a8 = \u03ba\u1e61"),
-                 QStringLiteral("%1 \u00b7 %2").arg(num(m.kappa), num(c.sdot)), c.phidot,
+                 QStringLiteral("%1 \u00b7 %2").arg(operand(m.kappa), operand(c.sdot)), c.phidot,
                  QStringLiteral("rad/s"), QStringLiteral("(35)"));
         h += row(
             QStringLiteral("dt/ds = \u221a(1 + b\u00b2\u03ba\u00b2)/v_T = 1/|\u1e61|"),
-            QStringLiteral("1/%1").arg(num(std::fabs(c.sdot))), 1 / std::fabs(c.sdot),
+            QStringLiteral("1/%1").arg(operand(std::fabs(c.sdot))), 1 / std::fabs(c.sdot),
             QStringLiteral("s/m"),
             QCoreApplication::translate(
                 "EquationsPanel",
@@ -164,17 +171,18 @@ QString velocities(const At& at) {
         h += row(QStringLiteral("\u1e61 = v_s"), num(v), c.sdot, QStringLiteral("m/s"),
                  QStringLiteral("(C17)\u2013(C18)"));
         h += row(QStringLiteral("\u03c6\u0307 = v_s\u03ba = (v_s/b) cot \u03a8"),
-                 QStringLiteral("%1 \u00b7 %2").arg(num(v), num(m.kappa)), c.phidot,
+                 QStringLiteral("%1 \u00b7 %2").arg(operand(v), operand(m.kappa)), c.phidot,
                  QStringLiteral("rad/s"), QStringLiteral("(C16)"));
         h += row(QStringLiteral("v_T = v_s/sin \u03a8 = v_s\u221a(1 + b\u00b2\u03ba\u00b2)"),
-                 QStringLiteral("%1/sin %2").arg(num(v), num(c.psi)), c.vT, QStringLiteral("m/s"),
+                 QStringLiteral("%1/sin %2").arg(operand(v), operand(c.psi)), c.vT,
+                 QStringLiteral("m/s"),
                  QCoreApplication::translate("EquationsPanel", "(C15): the energy varies"));
-        h += row(QStringLiteral("dt/ds = 1/v_s"), QStringLiteral("1/%1").arg(num(v)), 1 / v,
+        h += row(QStringLiteral("dt/ds = 1/v_s"), QStringLiteral("1/%1").arg(operand(v)), 1 / v,
                  QStringLiteral("s/m"), QCoreApplication::translate("EquationsPanel", "t = s/v_s"));
     }
     h += row(QStringLiteral("T = (m/2)(\u1e61\u00b2 + b\u00b2\u03c6\u0307\u00b2)"),
              QStringLiteral("(%1/2)(%2\u00b2 + %3\u00b2\u00b7%4\u00b2)")
-                 .arg(num(d.mass), num(c.sdot), num(d.b), num(c.phidot)),
+                 .arg(operand(d.mass), operand(c.sdot), operand(d.b), operand(c.phidot)),
              c.energy, QStringLiteral("J"),
              QCoreApplication::translate("EquationsPanel", "(49) with \u1e61\u00b2 (erratum)"));
     return h;
@@ -188,7 +196,7 @@ QString multiplier(const At& at) {
         QCoreApplication::translate("EquationsPanel", "Driving angle and control multiplier"));
     h += row(QStringLiteral("\u03c7 = \u03a8 \u2212 (a/b)\u03c6"),
              QStringLiteral("%1 \u2212 (%2/%3) \u00b7 %4")
-                 .arg(num(c.psi), num(d.a), num(d.b), num(m.phi)),
+                 .arg(operand(c.psi), operand(d.a), operand(d.b), operand(m.phi)),
              c.chi, QStringLiteral("rad"), QStringLiteral("(33)"));
     if (!pivot)
         h += row(
@@ -196,10 +204,11 @@ QString multiplier(const At& at) {
             {}, c.psidot, QStringLiteral("rad/s"),
             QCoreApplication::translate("EquationsPanel", "docs/physics.md \u00a7"
                                                           "2"));
-    h += row(QStringLiteral("\u03bb = m b\u03c7\u0307 = m(b\u03a8\u0307 \u2212 a\u03c6\u0307)"),
-             QStringLiteral("%1 (%2 \u00b7 %3 \u2212 %4 \u00b7 %5)")
-                 .arg(num(d.mass), num(d.b), num(c.psidot), num(d.a), num(c.phidot)),
-             c.lambda, QStringLiteral("kg m/s"), QStringLiteral("(25), (33)"));
+    h += row(
+        QStringLiteral("\u03bb = m b\u03c7\u0307 = m(b\u03a8\u0307 \u2212 a\u03c6\u0307)"),
+        QStringLiteral("%1 (%2 \u00b7 %3 \u2212 %4 \u00b7 %5)")
+            .arg(operand(d.mass), operand(d.b), operand(c.psidot), operand(d.a), operand(c.phidot)),
+        c.lambda, QStringLiteral("kg m/s"), QStringLiteral("(25), (33)"));
     return h;
 }
 
@@ -210,7 +219,7 @@ QString forces(const At& at) {
     h += section(QCoreApplication::translate("EquationsPanel", "Forces on the body"));
     h += row(QStringLiteral("f_s = F_cs = m(s\u0308 \u2212 a\u03c6\u0307\u00b2)"),
              QStringLiteral("%1 (%2 \u2212 %3 \u00b7 %4\u00b2)")
-                 .arg(num(d.mass), num(c.sddot), num(d.a), num(c.phidot)),
+                 .arg(operand(d.mass), operand(c.sddot), operand(d.a), operand(c.phidot)),
              c.forceAxial, QStringLiteral("N"),
              energy ? QCoreApplication::translate("EquationsPanel",
                                                   "= \u03bb\u03c6\u0307 (docs/physics.md \u00a7"
@@ -219,13 +228,14 @@ QString forces(const At& at) {
                                                                     "2"));
     h += row(QStringLiteral("N = F_c\u03c6 = m(\u1e61\u03c6\u0307 + a\u03c6\u0308)"),
              QStringLiteral("%1 (%2 \u00b7 %3 + %4 \u00b7 %5)")
-                 .arg(num(d.mass), num(c.sdot), num(c.phidot), num(d.a), num(c.phiddot)),
+                 .arg(operand(d.mass), operand(c.sdot), operand(c.phidot), operand(d.a),
+                      operand(c.phiddot)),
              c.knifeReaction, QStringLiteral("N"),
              QCoreApplication::translate("EquationsPanel", "(69)\u2013(70), at P"));
     h += row(
         QStringLiteral("\u03c4 = I\u03c6\u0308 + aN"),
         QStringLiteral("%1 \u00b7 %2 + %3 \u00b7 %4")
-            .arg(num(d.inertia()), num(c.phiddot), num(d.a), num(c.knifeReaction)),
+            .arg(operand(d.inertia()), operand(c.phiddot), operand(d.a), operand(c.knifeReaction)),
         c.controlCouple, QStringLiteral("N m"),
         energy
             ? QCoreApplication::translate(
@@ -235,7 +245,8 @@ QString forces(const At& at) {
                                           "S_c = I\u03c6\u0308 (erratum to (66)\u2013(68))"));
     h += row(QStringLiteral("power f_s\u1e61 + \u03c4\u03c6\u0307"),
              QStringLiteral("%1 \u00b7 %2 + %3 \u00b7 %4")
-                 .arg(num(c.forceAxial), num(c.sdot), num(c.controlCouple), num(c.phidot)),
+                 .arg(operand(c.forceAxial), operand(c.sdot), operand(c.controlCouple),
+                      operand(c.phidot)),
              c.forceAxial * c.sdot + c.controlCouple * c.phidot, QStringLiteral("W"),
              energy ? QCoreApplication::translate("EquationsPanel", "0: the control does no work")
                     : QCoreApplication::translate(
@@ -252,16 +263,16 @@ QString freeBody(const At& at) {
     const FreeMotion::Constants k = s.freeMotion().constants();
     const FreeState& f = m.free;
     if (k.general) {
-        h += row(
-            QStringLiteral("\u1e61 = V tanh(kt + c)"),
-            QStringLiteral("%1 tanh(%2 \u00b7 %3 + %4)").arg(num(k.v), num(k.k), num(t), num(k.c)),
-            f.sdot, QStringLiteral("m/s"),
-            QCoreApplication::translate("EquationsPanel", "(D12)\u2013(D14) in closed form"));
+        h += row(QStringLiteral("\u1e61 = V tanh(kt + c)"),
+                 QStringLiteral("%1 tanh(%2 \u00b7 %3 + %4)")
+                     .arg(operand(k.v), operand(k.k), operand(t), operand(k.c)),
+                 f.sdot, QStringLiteral("m/s"),
+                 QCoreApplication::translate("EquationsPanel", "(D12)\u2013(D14) in closed form"));
         h += row(
             QStringLiteral("\u03c6\u0307 = \u03c3(V/b) sech(kt + c)"),
             QStringLiteral("%1 (%2/%3) sech(%4)")
-                .arg(k.sigma > 0 ? QStringLiteral("+") : QStringLiteral("\u2212"), num(k.v),
-                     num(d.b), num(k.k * t + k.c)),
+                .arg(k.sigma > 0 ? QStringLiteral("+") : QStringLiteral("\u2212"), operand(k.v),
+                     operand(d.b), num(k.k * t + k.c)),
             f.phidot, QStringLiteral("rad/s"),
             QCoreApplication::translate(
                 "EquationsPanel",
@@ -272,10 +283,11 @@ QString freeBody(const At& at) {
                  QString::fromStdString(s.models().freeVelocity));
         h += row(QStringLiteral("\u03c6\u0307"), {}, f.phidot, QStringLiteral("rad/s"), {});
     }
-    h += row(QStringLiteral("N = \u2212\u03bc = m(1 \u2212 a\u00b2/b\u00b2)\u1e61\u03c6\u0307"),
-             QStringLiteral("%1 (1 \u2212 %2\u00b2/%3\u00b2) \u00b7 %4 \u00b7 %5")
-                 .arg(num(d.mass), num(d.a), num(d.b), num(f.sdot), num(f.phidot)),
-             freeBodyState(d, f).knifeReaction, QStringLiteral("N"), QStringLiteral("(D15)"));
+    h += row(
+        QStringLiteral("N = \u2212\u03bc = m(1 \u2212 a\u00b2/b\u00b2)\u1e61\u03c6\u0307"),
+        QStringLiteral("%1 (1 \u2212 %2\u00b2/%3\u00b2) \u00b7 %4 \u00b7 %5")
+            .arg(operand(d.mass), operand(d.a), operand(d.b), operand(f.sdot), operand(f.phidot)),
+        freeBodyState(d, f).knifeReaction, QStringLiteral("N"), QStringLiteral("(D15)"));
     return h;
 }
 
@@ -300,11 +312,11 @@ QString feedbackLaw(const At& at) {
              QCoreApplication::translate("EquationsPanel",
                                          "lateral error, > 0 to the left of the path"));
     h += row(QStringLiteral("\u03b8 = \u03c6 \u2212 \u03c6_path(s_p)"),
-             QStringLiteral("%1 \u2212 %2").arg(num(fb.phi), num(p.phi)), law.theta,
+             QStringLiteral("%1 \u2212 %2").arg(operand(fb.phi), operand(p.phi)), law.theta,
              QStringLiteral("rad"), QCoreApplication::translate("EquationsPanel", "heading error"));
     h += row(QStringLiteral("z\u2083 = (1 \u2212 \u03bae) tan \u03b8"),
              QStringLiteral("(1 \u2212 %1 \u00b7 %2) tan %3")
-                 .arg(num(p.kappa), num(z.z2), num(law.theta)),
+                 .arg(operand(p.kappa), operand(z.z2), operand(law.theta)),
              z.z3, {}, QCoreApplication::translate("EquationsPanel", "= dz\u2082/ds_p"));
     h += row(
         QStringLiteral("z\u2084 = \u2212\u03ba\u2032e tan \u03b8 \u2212 "
@@ -316,20 +328,21 @@ QString feedbackLaw(const At& at) {
     h += row(QStringLiteral("u = \u2212P\u00b3z\u2082 \u2212 3P\u00b2z\u2083 \u2212 3Pz\u2084"),
              QStringLiteral("\u2212%1\u00b3 \u00b7 %2 \u2212 3 \u00b7 %1\u00b2 \u00b7 %3 "
                             "\u2212 3 \u00b7 %1 \u00b7 %4")
-                 .arg(num(rate), num(z.z2), num(z.z3), num(z.z4)),
+                 .arg(operand(rate), operand(z.z2), operand(z.z3), operand(z.z4)),
              law.u, QStringLiteral("1/m\u00b2"),
              QCoreApplication::translate(
                  "EquationsPanel",
                  "a triple pole at \u2212P in path length: e\u2034 + 3Pe\u2033 + 3P\u00b2"
                  "e\u2032 + P\u00b3"
                  "e = 0"));
-    h += row(QStringLiteral("\u03ba_b\u2032 = (u \u2212 F)/G"),
-             QStringLiteral("(%1 \u2212 %2)/%3").arg(num(law.u), num(z.drift), num(z.gain)),
-             law.curvatureRate, QStringLiteral("1/m\u00b2"),
-             QCoreApplication::translate("EquationsPanel",
-                                         "dz\u2084/ds_p = G\u03ba_b\u2032 + F, G = (1 \u2212 \u03ba"
-                                         "e)\u00b2 "
-                                         "sec\u00b3\u03b8"));
+    h += row(
+        QStringLiteral("\u03ba_b\u2032 = (u \u2212 F)/G"),
+        QStringLiteral("(%1 \u2212 %2)/%3").arg(operand(law.u), operand(z.drift), operand(z.gain)),
+        law.curvatureRate, QStringLiteral("1/m\u00b2"),
+        QCoreApplication::translate("EquationsPanel",
+                                    "dz\u2084/ds_p = G\u03ba_b\u2032 + F, G = (1 \u2212 \u03ba"
+                                    "e)\u00b2 "
+                                    "sec\u00b3\u03b8"));
     const QString bound =
         law.saturated ? QCoreApplication::translate("EquationsPanel",
                                                     "; held at the limit |\u03a8\u0307| \u2264 %1 "
@@ -340,7 +353,8 @@ QString feedbackLaw(const At& at) {
         h += row(QStringLiteral("\u03a8\u0307 = \u2212b \u1e61_p \u03ba_b\u2032/(1 + "
                                 "b\u00b2\u03ba_b\u00b2)"),
                  QStringLiteral("\u2212%1 \u00b7 %2 \u00b7 %3/(1 + %1\u00b2 \u00b7 %4\u00b2)")
-                     .arg(num(d.b), num(law.sdotPath), num(law.curvatureRate), num(law.kappaBody)),
+                     .arg(operand(d.b), operand(law.sdotPath), operand(law.curvatureRate),
+                          operand(law.kappaBody)),
                  fb.psidot, QStringLiteral("rad/s"),
                  QCoreApplication::translate("EquationsPanel", "from \u03ba_b = cot \u03a8/b") +
                      bound);
@@ -349,8 +363,8 @@ QString feedbackLaw(const At& at) {
                                 "\u03ba_b\u2032/(1 + b_c\u00b2\u03ba_b\u00b2)"),
                  QStringLiteral("\u2212(%1/%2) %1 \u00b7 %3 \u00b7 %4/(1 + %1\u00b2 \u00b7 "
                                 "%5\u00b2)")
-                     .arg(num(bc), num(d.b), num(law.sdotPath), num(law.curvatureRate),
-                          num(law.kappaBody)),
+                     .arg(operand(bc), operand(d.b), operand(law.sdotPath),
+                          operand(law.curvatureRate), operand(law.kappaBody)),
                  fb.psidot, QStringLiteral("rad/s"),
                  QCoreApplication::translate("EquationsPanel",
                                              "the controller's b_c = %1 m differs from the "
@@ -359,7 +373,8 @@ QString feedbackLaw(const At& at) {
                      bound);
     h += row(QStringLiteral("\u03bb_fb = m_eff(b\u03a8\u0307 \u2212 a\u03c6\u0307)"),
              QStringLiteral("%1 (%2 \u00b7 %3 \u2212 %4 \u00b7 %5)")
-                 .arg(num(d.mass), num(d.b), num(fb.psidot), num(d.a), num(fb.phidot)),
+                 .arg(operand(d.mass), operand(d.b), operand(fb.psidot), operand(d.a),
+                      operand(fb.phidot)),
              fb.lambda, QStringLiteral("kg m/s"),
              QCoreApplication::translate("EquationsPanel",
                                          "workless: the energy stays (m_eff/2)(\u1e61\u00b2 + "

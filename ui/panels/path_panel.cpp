@@ -100,7 +100,9 @@ PathPanel::PathPanel(QWidget* parent)
     m_corners->addItem(tr("smooth (spline)"), int(CornerMode::Smooth));
     m_corners->setItemData(0, tr("smooth (spline through the points)"), Qt::ToolTipRole);
     m_corners->addItem(tr("pivot (turn in place)"), int(CornerMode::Pivot));
-    m_corners->setItemData(1, tr("pivot (straight segments, turn in place)"), Qt::ToolTipRole);
+    m_corners->setItemData(
+        1, tr("pivot (turn in place where the stroke turns by more than 35\u00b0, smooth between)"),
+        Qt::ToolTipRole);
     m_corners->setToolTip(tr("How a drawn path's corners are followed"));
     auto* drawRow = new QHBoxLayout; // one row: the dock fits a 1280 x 800 screen unscrolled
     drawRow->addWidget(m_draw);
@@ -134,17 +136,19 @@ PathPanel::PathPanel(QWidget* parent)
     connect(m_apply, &QPushButton::clicked, this, &PathPanel::applyTyped);
     connect(m_draw, &QPushButton::toggled, this, [this](bool on) {
         m_drawing = on;
+        m_strokeDrawn = false;
         showDrawSettings();
         emit drawModeToggled(on);
     });
-    // the user's choice is the next drawing's, and also changes the drawn path on show
+    // the user's choice is the next drawing's, and also changes the drawn path on show (in draw
+    // mode, the stroke just drawn) at once, as one undo step
     auto optionsChanged = [this] {
         if (m_showing)
             return;
         m_newCorners = static_cast<CornerMode>(m_corners->currentData().toInt());
         m_newSmoothing = m_smoothing->value();
         const PathSource& p = m_scene.path;
-        if (!m_drawing && p.kind == PathKind::Polyline &&
+        if ((!m_drawing || m_strokeDrawn) && p.kind == PathKind::Polyline &&
             (m_newCorners != p.corners || m_newSmoothing != p.smoothing))
             emit drawOptionsChanged(m_newCorners, m_newSmoothing);
     };
@@ -158,7 +162,7 @@ PathPanel::PathPanel(QWidget* parent)
 
 void PathPanel::showDrawSettings() {
     const PathSource& p = m_scene.path;
-    const bool shown = !m_drawing && p.kind == PathKind::Polyline;
+    const bool shown = (!m_drawing || m_strokeDrawn) && p.kind == PathKind::Polyline;
     m_showing = true;
     m_corners->setCurrentIndex(m_corners->findData(int(shown ? p.corners : m_newCorners)));
     m_smoothing->setValue(shown ? p.smoothing : m_newSmoothing);
@@ -192,6 +196,9 @@ void PathPanel::updateKind() {
 }
 
 void PathPanel::setScene(const Scene& scene) {
+    if (m_drawing && scene.path.kind == PathKind::Polyline &&
+        scene.path.points != m_scene.path.points)
+        m_strokeDrawn = true;
     m_scene = scene;
     const PathSource& p = scene.path;
     int preset = m_preset->findText(QString::fromStdString(scene.preset));

@@ -84,6 +84,8 @@ class PathPanel : public QWidget {
     QDoubleSpinBox* m_smoothing;
     QLabel* m_polylineInfo;
     bool m_drawing = false;
+    // a stroke was drawn since draw mode began: the corners and smoothing shown are its own
+    bool m_strokeDrawn = false;
     bool m_showing = false; // the widgets are being set to show settings, not changed by the user
     CornerMode m_newCorners;
     double m_newSmoothing;

@@ -181,8 +181,9 @@ void TestMainWindow::editDrawnPathPoints() {
     m_window->pathPanel()->cornersBox()->setCurrentIndex(1); // pivot
     m_window->pathPanel()->drawButton()->click();
     SceneCanvas* canvas = m_window->canvas();
+    // three right-angle turns: each a pivot corner (over the corner angle, 35 degrees)
     test::dragStroke(canvas, QPoint(100, 300),
-                     {QPoint(200, 300), QPoint(300, 200), QPoint(400, 200)}, QPoint(500, 300));
+                     {QPoint(200, 300), QPoint(200, 200), QPoint(300, 200)}, QPoint(300, 300));
     m_window->document()->flush();
     auto points = m_window->document()->scene().path.points;
     QCOMPARE(points.size(), std::size_t(5));
