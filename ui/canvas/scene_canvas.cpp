@@ -48,7 +48,8 @@ QTransform SceneCanvas::worldTransformAt(QPointF centre) const {
 }
 
 const CanvasCurves& SceneCanvas::curves() const {
-    m_curves.update(m_document->solution(), m_scale * devicePixelRatioF());
+    m_curves.update(m_document->solution(), m_scale * devicePixelRatioF(),
+                    worldTransform().inverted().mapRect(QRectF(rect())));
     return m_curves;
 }
 

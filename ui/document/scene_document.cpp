@@ -165,7 +165,11 @@ void SceneDocument::recompute() {
                 ? checked
                 : std::make_shared<const Solution>(
                       Solution::compute(m_scene, pathFor(m_scene.path)));
-        m_series = collectSeries(*solution, kFreeSamples);
+        // nothing non-finite reaches a view: the solution is checked as it is made, the plots'
+        // series here
+        PlotSeries series = collectSeries(*solution, kFreeSamples);
+        requireFiniteSeries(series);
+        m_series = std::move(series);
         m_solution = std::move(solution);
     } catch (const InputError& e) {
         error = QString::fromStdString(e.what());

@@ -10,6 +10,7 @@
 #include "panels/parameters_panel.h"
 #include "panels/path_panel.h"
 #include "plots/plots_panel.h"
+#include "scene/scene_json.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
@@ -265,7 +266,16 @@ QString TestRandomEvents::check() {
     MotionSample m = solution->at(std::clamp(t, 0.0, solution->tEnd()));
     for (double v : {m.x, m.y, m.phi, m.free.x, m.free.y, m.free.phi})
         if (!isFinite(v))
-            return QStringLiteral("non-finite pose at t = %1").arg(t);
+            return QStringLiteral("non-finite pose at t = %1: controlled (%2, %3, %4), free (%5, "
+                                  "%6, %7); the scene:\n%8")
+                .arg(t)
+                .arg(m.x)
+                .arg(m.y)
+                .arg(m.phi)
+                .arg(m.free.x)
+                .arg(m.free.y)
+                .arg(m.free.phi)
+                .arg(QString::fromStdString(sceneToJson(scene)));
     SceneCanvas* canvas = m_window->canvas();
     QPointF p = canvas->toPixel({m.x, m.y});
     if (!isFinite(canvas->scale()) || !(canvas->scale() > 0) || !isFinite(p.x()) ||
