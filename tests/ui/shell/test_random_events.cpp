@@ -35,6 +35,8 @@
 #include <memory>
 #include <random>
 
+#include <sys/resource.h>
+
 using namespace chaplygin;
 using namespace chaplygin::ui;
 
@@ -48,6 +50,9 @@ constexpr int kDefaultEvents = 1500;
 #else
 constexpr int kDefaultEvents = 5000;
 #endif
+
+// the program's documented bound on its resident memory under any sequence of events [MB]
+constexpr double kPeakMemoryMb = 1024;
 
 unsigned envNumber(const char* name, unsigned fallback) {
     bool ok = false;
@@ -346,6 +351,20 @@ void TestRandomEvents::randomEventStream() {
     m_window->document()->flush();
     QVERIFY2(check().isEmpty(), qPrintable(QStringLiteral("seed %1 at the end").arg(seed)));
     m_window.reset();
+    // memory bounded (docs/robustness.md, Bounded work and memory): the peak resident size of the
+    // whole run. The sanitizers' allocator keeps freed memory in quarantine: no bound there
+    struct rusage usage {};
+    getrusage(RUSAGE_SELF, &usage);
+    const double peakMb = double(usage.ru_maxrss) / 1024; // ru_maxrss is in kB on Linux
+    std::printf("random GUI events: seed %u, %d events, peak resident memory %.0f MB\n", seed,
+                events, peakMb);
+#if !defined(__SANITIZE_ADDRESS__)
+    QVERIFY2(peakMb < kPeakMemoryMb,
+             qPrintable(QStringLiteral("seed %1: peak resident memory %2 MB, over %3 MB")
+                            .arg(seed)
+                            .arg(peakMb)
+                            .arg(kPeakMemoryMb)));
+#endif
 }
 
 QTEST_MAIN(TestRandomEvents)
