@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace chaplygin::ui {
 
@@ -9,8 +10,8 @@ namespace {
 // a chord halved at most this often: 2^10 points per panel or seed interval, enough for 0.25 px
 // at every zoom a lecture uses, and bounded when the view is zoomed far into one spot
 constexpr int kMaxHalvings = 10;
-// how often a curve over its budget is flattened again, each time four times coarser
-constexpr int kCoarserTries = 6;
+// how often a curve over its budget is flattened again: 16 times coarser, then through its seeds
+constexpr int kCoarserTries = 2;
 } // namespace
 
 std::size_t FlatCurve::countUpTo(double limit) const {
@@ -44,7 +45,8 @@ constexpr double kDropFraction = 0.25;
 void pushVisible(FlatCurve& out, const Sample& s, bool withKappa, const FlattenLimits& limits) {
     if (!out.points.empty()) {
         const QPointF d = s.point - out.points.back();
-        if (std::hypot(d.x(), d.y()) < kDropFraction * limits.tolerance)
+        const double merge = limits.merge > 0 ? limits.merge : kDropFraction * limits.tolerance;
+        if (std::hypot(d.x(), d.y()) < merge)
             return;
     }
     push(out, s, withKappa);
@@ -63,6 +65,14 @@ bool maySee(const FlattenLimits& limits, QPointF a, QPointF m, QPointF b, double
            bottom <= limits.seen.bottom() && limits.seen.top() <= top;
 }
 
+// below this the points' own rounding is what a halving would follow: the coordinates of a body
+// 1e308 m out are 2e292 m apart, and halving there never ends within the tolerance
+double resolution(QPointF a, QPointF b) {
+    const double size =
+        std::max({std::fabs(a.x()), std::fabs(a.y()), std::fabs(b.x()), std::fabs(b.y())});
+    return 64 * std::numeric_limits<double>::epsilon() * size;
+}
+
 // sa is already in out; appends the samples of (a, b]
 template <class Eval>
 void subdivide(FlatCurve& out, const Eval& f, bool withKappa, double a, double b, const Sample& sa,
@@ -72,7 +82,8 @@ void subdivide(FlatCurve& out, const Eval& f, bool withKappa, double a, double b
     const QPointF chord = 0.5 * (sa.point + sb.point);
     const double off = std::hypot(sm.point.x() - chord.x(), sm.point.y() - chord.y());
     if (depth > 0 && finite(sm.point) && finite(sa.point) && finite(sb.point) &&
-        off > limits.tolerance && maySee(limits, sa.point, sm.point, sb.point, off)) {
+        off > limits.tolerance && off > resolution(sa.point, sb.point) &&
+        maySee(limits, sa.point, sm.point, sb.point, off)) {
         if (out.points.size() < limits.budget) {
             subdivide(out, f, withKappa, a, m, sa, sm, limits, depth - 1);
             subdivide(out, f, withKappa, m, b, sm, sb, limits, depth - 1);
@@ -80,8 +91,10 @@ void subdivide(FlatCurve& out, const Eval& f, bool withKappa, double a, double b
         }
         limits.exceeded = true;
     }
-    // the midpoint is kept too: it is computed already and halves the chord's error again
-    pushVisible(out, sm, withKappa, limits);
+    // the midpoint is kept too: it is computed already and halves the chord's error again;
+    // through the seeds alone (an infinite tolerance), only the seeds
+    if (std::isfinite(limits.tolerance))
+        pushVisible(out, sm, withKappa, limits);
     pushVisible(out, sb, withKappa, limits);
 }
 
@@ -193,7 +206,14 @@ FlatCurve flattenWithinBudget(const std::function<FlatCurve(FlattenLimits&)>& bu
         // lasted
         if ((!limits.exceeded && out.points.size() <= kPointBudget) || attempt == kCoarserTries)
             return out;
-        limits.tolerance *= 4;
+        // 16 times coarser, and then only the seeds (the panel ends, the evenly spaced times),
+        // still merged as at the coarser tolerance
+        if (attempt + 1 == kCoarserTries) {
+            limits.merge = kDropFraction * limits.tolerance;
+            limits.tolerance = std::numeric_limits<double>::infinity();
+        } else {
+            limits.tolerance *= 16;
+        }
     }
 }
 

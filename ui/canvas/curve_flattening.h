@@ -25,12 +25,14 @@ struct FlatCurve {
 
 /// How far a curve is refined: to tolerance [m] where it can be seen (inside `seen`, world
 /// coordinates; a null rectangle is everywhere), only to its seeds elsewhere, and to at most
-/// `budget` points in all. A point closer than a quarter of the tolerance to the one before is
-/// left out. `exceeded` is set when the budget stopped a refinement.
+/// `budget` points in all. A point closer than `merge` to the one before is left out.
+/// `exceeded` is set when the budget stopped a refinement.
 struct FlattenLimits {
     double tolerance = 0;
     QRectF seen;
     std::size_t budget = std::numeric_limits<std::size_t>::max();
+    /// a point closer than this to the one before is left out [m] (0: a quarter of tolerance)
+    double merge = 0;
     bool exceeded = false;
 };
 
@@ -53,12 +55,13 @@ FlatCurve flattenThroughKnots(const std::vector<TrailKnot>& knots, double tEnd,
                               FlattenLimits& limits);
 
 /// build(limits) made within kPointBudget points: at the tolerance asked for when it fits, else
-/// at a tolerance four times coarser, and so on (a curve too dense for the screen is drawn
-/// coarser, never stalls a frame). The tolerance used is left in limits.
+/// at a tolerance 16 times coarser, else through its seeds alone (a curve too dense for the
+/// screen is drawn coarser, never stalls a frame). The tolerance used is left in limits.
 FlatCurve flattenWithinBudget(const std::function<FlatCurve(FlattenLimits&)>& build,
                               FlattenLimits& limits);
 
-/// The most points one curve is flattened to: a frame's work is bounded by it.
+/// The most points one curve is flattened to, unless its seeds alone are more (a path of more
+/// panels, bounded by the table's halving budget): a frame's work is bounded by it.
 inline constexpr std::size_t kPointBudget = 8192;
 
 /// Every curve the canvas draws, flattened to kTolerancePx device pixels at one scale (docs/
