@@ -149,8 +149,15 @@ void fillColumns(const Solution& solution, const std::vector<const CsvColumn*>& 
     const auto fill = [&](py::ssize_t begin, py::ssize_t end) {
         for (py::ssize_t i = begin; i < end; ++i) {
             const MotionSample m = solution.at(t[i], parts);
-            for (std::size_t j = 0; j < columns.size(); ++j)
+            for (std::size_t j = 0; j < columns.size(); ++j) {
                 targets[j][i] = columns[j]->value(m);
+                // a NaN never reaches an array without an error (docs/robustness.md)
+                if (!std::isfinite(targets[j][i]))
+                    throw InputError("", "column " + std::string(columns[j]->name) +
+                                             " is not finite at t = " + formatNumber(t[i]) +
+                                             " s (index " + std::to_string(i) +
+                                             "): " + formatNumber(targets[j][i]));
+            }
         }
     };
     if (threads <= 1) {

@@ -1,5 +1,7 @@
 #include "scene/csv_writer.h"
 
+#include "scene/finite_results.h"
+
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -18,11 +20,9 @@ std::string csvText(std::span<const CsvColumn> columns, const std::vector<Motion
     }
     out += '\n';
     for (const MotionSample& m : rows) {
+        requireFiniteSample(m); // an InputError naming the column and the time
         for (std::size_t i = 0; i < columns.size(); ++i) {
             const double value = columns[i].value(m);
-            if (!std::isfinite(value))
-                throw std::runtime_error("internal error: column " + std::string(columns[i].name) +
-                                         " is not finite at t = " + std::to_string(m.t));
             char buf[32];
             auto res = std::to_chars(buf, buf + sizeof buf, value);
             if (i)

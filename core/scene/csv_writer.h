@@ -11,8 +11,8 @@ namespace chaplygin {
 
 /// The rows as CSV text with a header, one column per entry of csvColumnsWritten() (the perturbed
 /// bodies' columns when the rows have them), full double
-/// precision. Throws std::runtime_error naming the column and time if any value is not finite: a
-/// NaN never reaches a CSV.
+/// precision. Throws InputError naming the column and time if any value is not finite: a NaN
+/// never reaches a CSV.
 std::string formatCsv(const std::vector<MotionSample>& rows);
 
 /// A planned motion's time series (docs/physics.md §10): t and the genuine vakonomic body's

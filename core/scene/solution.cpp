@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 #include "control/piece_control.h"
 #include "numerics/chebyshev.h"
+#include "scene/finite_results.h"
 #include "scene/perturbation.h"
 
 #include <algorithm>
@@ -138,11 +139,15 @@ ControlParams controlParamsOf(const Scene& scene, const DerivedSystem& system) {
 
 Solution Solution::compute(const Scene& scene) {
     ControlParams params = controlParamsOf(scene); // parameters first: cheaper to reject
-    return Solution(scene, buildPath(scene.path), params);
+    Solution solution(scene, buildPath(scene.path), params);
+    requireFiniteSolution(solution); // nothing non-finite reaches a view or a file
+    return solution;
 }
 
 Solution Solution::compute(const Scene& scene, std::shared_ptr<const Path> path) {
-    return Solution(scene, std::move(path), controlParamsOf(scene));
+    Solution solution(scene, std::move(path), controlParamsOf(scene));
+    requireFiniteSolution(solution);
+    return solution;
 }
 
 Solution Solution::compute(const Scene& scene, std::shared_ptr<const Path> path,

@@ -119,3 +119,18 @@ def test_sweeps(cl):
     raises(cl, "sweep b", [], lambda: scene.sweep("b", 0.1, 1, 3))
     raises(cl, "sweep R", ["unknown parameter for the sleigh"],
            lambda: scene.with_parameter("R", 1))
+
+
+def test_a_scene_that_is_not_finite_is_refused(cl):
+    # a stroke drawn at y = 1e308 (the randomized GUI test's seed 90210): its smoothed path's
+    # interpolant overflows; solve() raises instead of giving arrays of NaN
+    scene = cl.Scene.from_json("""{
+      "format": "chaplygin-lab-scene", "version": 1, "mode": "energy", "speed": 1.8023,
+      "path": {"kind": "polyline", "corners": "smooth", "smoothing": 18.0,
+               "points": [[511419.63480199594, 1e308], [-68580.36519800406, 1e308],
+                          [964419.6348019959, 1e308]]},
+      "system": {"kind": "disk", "params": {"I1": 0.125, "I2": 0.586, "R": 0.5, "m": 9.0448}}
+    }""")
+    raises(cl, "path at (202370.34088993404, 1e+308)",
+           ["the path's interpolant is not finite here", "overflow double precision"],
+           lambda: scene.solve())

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace chaplygin::ui {
 
@@ -9,6 +10,8 @@ namespace {
 // a chord halved at most this often: 2^10 points per panel or seed interval, enough for 0.25 px
 // at every zoom a lecture uses, and bounded when the view is zoomed far into one spot
 constexpr int kMaxHalvings = 10;
+// how often a curve over its budget is flattened again: 16 times coarser, then through its seeds
+constexpr int kCoarserTries = 2;
 } // namespace
 
 std::size_t FlatCurve::countUpTo(double limit) const {
@@ -34,33 +37,76 @@ void push(FlatCurve& out, const Sample& s, bool withKappa) {
         out.kappa.push_back(s.kappa);
 }
 
+// a point closer than this many tolerances to the one before adds nothing that can be seen
+constexpr double kDropFraction = 0.25;
+
+// push, but a point within a quarter of the tolerance of the last one is left out (a path of
+// thousands of panels seen from afar is a few points per pixel, not two per panel)
+void pushVisible(FlatCurve& out, const Sample& s, bool withKappa, const FlattenLimits& limits) {
+    if (!out.points.empty()) {
+        const QPointF d = s.point - out.points.back();
+        const double merge = limits.merge > 0 ? limits.merge : kDropFraction * limits.tolerance;
+        if (std::hypot(d.x(), d.y()) < merge)
+            return;
+    }
+    push(out, s, withKappa);
+}
+
+// whether the curve near a, m and b (m off the chord by `off`) may be within the seen region
+bool maySee(const FlattenLimits& limits, QPointF a, QPointF m, QPointF b, double off) {
+    if (limits.seen.isNull())
+        return true;
+    const double pad = 2 * off + limits.tolerance;
+    const double left = std::min({a.x(), m.x(), b.x()}) - pad;
+    const double right = std::max({a.x(), m.x(), b.x()}) + pad;
+    const double bottom = std::min({a.y(), m.y(), b.y()}) - pad;
+    const double top = std::max({a.y(), m.y(), b.y()}) + pad;
+    return left <= limits.seen.right() && limits.seen.left() <= right &&
+           bottom <= limits.seen.bottom() && limits.seen.top() <= top;
+}
+
+// below this the points' own rounding is what a halving would follow: the coordinates of a body
+// 1e308 m out are 2e292 m apart, and halving there never ends within the tolerance
+double resolution(QPointF a, QPointF b) {
+    const double size =
+        std::max({std::fabs(a.x()), std::fabs(a.y()), std::fabs(b.x()), std::fabs(b.y())});
+    return 64 * std::numeric_limits<double>::epsilon() * size;
+}
+
 // sa is already in out; appends the samples of (a, b]
 template <class Eval>
 void subdivide(FlatCurve& out, const Eval& f, bool withKappa, double a, double b, const Sample& sa,
-               const Sample& sb, double tolerance, int depth) {
+               const Sample& sb, FlattenLimits& limits, int depth) {
     const double m = 0.5 * (a + b);
     const Sample sm = f(m);
     const QPointF chord = 0.5 * (sa.point + sb.point);
+    const double off = std::hypot(sm.point.x() - chord.x(), sm.point.y() - chord.y());
     if (depth > 0 && finite(sm.point) && finite(sa.point) && finite(sb.point) &&
-        std::hypot(sm.point.x() - chord.x(), sm.point.y() - chord.y()) > tolerance) {
-        subdivide(out, f, withKappa, a, m, sa, sm, tolerance, depth - 1);
-        subdivide(out, f, withKappa, m, b, sm, sb, tolerance, depth - 1);
-        return;
+        off > limits.tolerance && off > resolution(sa.point, sb.point) &&
+        maySee(limits, sa.point, sm.point, sb.point, off)) {
+        if (out.points.size() < limits.budget) {
+            subdivide(out, f, withKappa, a, m, sa, sm, limits, depth - 1);
+            subdivide(out, f, withKappa, m, b, sm, sb, limits, depth - 1);
+            return;
+        }
+        limits.exceeded = true;
     }
-    // the midpoint is kept too: it is computed already and halves the chord's error again
-    push(out, sm, withKappa);
-    push(out, sb, withKappa);
+    // the midpoint is kept too: it is computed already and halves the chord's error again;
+    // through the seeds alone (an infinite tolerance), only the seeds
+    if (std::isfinite(limits.tolerance))
+        pushVisible(out, sm, withKappa, limits);
+    pushVisible(out, sb, withKappa, limits);
 }
 
 } // namespace
 
 void flattenInto(FlatCurve& out, const std::function<QPointF(double)>& f, double a, double b,
-                 QPointF fa, QPointF fb, double tolerance, int maxDepth) {
+                 QPointF fa, QPointF fb, FlattenLimits& limits, int maxDepth) {
     auto eval = [&](double t) { return Sample{f(t), t, 0}; };
-    subdivide(out, eval, false, a, b, Sample{fa, a, 0}, Sample{fb, b, 0}, tolerance, maxDepth);
+    subdivide(out, eval, false, a, b, Sample{fa, a, 0}, Sample{fb, b, 0}, limits, maxDepth);
 }
 
-FlatCurve flattenPath(const Path& path, double tolerance) {
+FlatCurve flattenPath(const Path& path, FlattenLimits& limits) {
     FlatCurve out;
     for (const PathPiece& piece : path.pieces()) {
         if (piece.kind == PathPiece::Kind::Pivot) {
@@ -76,9 +122,12 @@ FlatCurve flattenPath(const Path& path, double tolerance) {
         for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
             // within panel k by xi in [-1, 1]: the body's pose is read the same way
             auto eval = [&](double xi) { return sample(table.interpolatedAt(int(k), xi)); };
-            subdivide(out, eval, true, -1, 1, sample(nodes[k]), sample(nodes[k + 1]), tolerance,
+            subdivide(out, eval, true, -1, 1, sample(nodes[k]), sample(nodes[k + 1]), limits,
                       kMaxHalvings);
         }
+        // a piece's last point is kept: the next piece (a pivot, a cusp) starts there
+        if (!(out.points.back() == QPointF(nodes.back().x, nodes.back().y)))
+            push(out, sample(nodes.back()), true);
     }
     // arc length through a piece's interpolants: kept non-decreasing for countUpTo
     for (std::size_t i = 1; i < out.param.size(); ++i)
@@ -86,7 +135,7 @@ FlatCurve flattenPath(const Path& path, double tolerance) {
     return out;
 }
 
-FlatCurve flattenInTime(const std::function<QPointF(double)>& f, double tEnd, double tolerance,
+FlatCurve flattenInTime(const std::function<QPointF(double)>& f, double tEnd, FlattenLimits& limits,
                         int seeds) {
     FlatCurve out;
     seeds = std::max(seeds, 2);
@@ -97,14 +146,20 @@ FlatCurve flattenInTime(const std::function<QPointF(double)>& f, double tEnd, do
     for (int i = 1; i < seeds; ++i) {
         const double b = i + 1 == seeds ? tEnd : tEnd * i / (seeds - 1);
         const QPointF fb = f(b);
-        flattenInto(out, f, a, b, fa, fb, tolerance);
+        flattenInto(out, f, a, b, fa, fb, limits);
         a = b;
         fa = fb;
+    }
+    // the last point is the trail's end at tEnd
+    if (!(out.points.back() == fa)) {
+        out.param.push_back(tEnd);
+        out.points.push_back(fa);
     }
     return out;
 }
 
-FlatCurve flattenThroughKnots(const std::vector<TrailKnot>& knots, double tEnd, double tolerance) {
+FlatCurve flattenThroughKnots(const std::vector<TrailKnot>& knots, double tEnd,
+                              FlattenLimits& limits) {
     FlatCurve out;
     if (knots.empty())
         return out;
@@ -119,7 +174,11 @@ FlatCurve flattenThroughKnots(const std::vector<TrailKnot>& knots, double tEnd, 
         const TrailKnot& a = knots[k];
         const TrailKnot& b = knots[k + 1];
         const double h = b.t - a.t;
-        if (!(h > 0)) { // a push: the body jumps at that instant
+        if (!(h > 0)) { // a push: the body jumps at that instant, from where it was
+            if (!(out.points.back() == QPointF(a.x, a.y))) {
+                out.param.push_back(a.t);
+                out.points.emplace_back(a.x, a.y);
+            }
             out.param.push_back(b.t);
             out.points.emplace_back(b.x, b.y);
             continue;
@@ -132,45 +191,81 @@ FlatCurve flattenThroughKnots(const std::vector<TrailKnot>& knots, double tEnd, 
             return QPointF(h00 * a.x + h10 * h * a.vx + h01 * b.x + h11 * h * b.vx,
                            h00 * a.y + h10 * h * a.vy + h01 * b.y + h11 * h * b.vy);
         };
-        flattenInto(out, hermite, a.t, b.t, {a.x, a.y}, {b.x, b.y}, tolerance, maxDepth);
+        flattenInto(out, hermite, a.t, b.t, {a.x, a.y}, {b.x, b.y}, limits, maxDepth);
     }
     return out;
 }
 
-void CanvasCurves::update(const std::shared_ptr<const Solution>& solution,
-                          double devicePxPerMetre) {
+FlatCurve flattenWithinBudget(const std::function<FlatCurve(FlattenLimits&)>& build,
+                              FlattenLimits& limits) {
+    limits.budget = kPointBudget;
+    for (int attempt = 0;; ++attempt) {
+        limits.exceeded = false;
+        FlatCurve out = build(limits);
+        // the last attempt keeps what it has: the seeds everywhere, refined while the budget
+        // lasted
+        if ((!limits.exceeded && out.points.size() <= kPointBudget) || attempt == kCoarserTries)
+            return out;
+        // 16 times coarser, and then only the seeds (the panel ends, the evenly spaced times),
+        // still merged as at the coarser tolerance
+        if (attempt + 1 == kCoarserTries) {
+            limits.merge = kDropFraction * limits.tolerance;
+            limits.tolerance = std::numeric_limits<double>::infinity();
+        } else {
+            limits.tolerance *= 16;
+        }
+    }
+}
+
+void CanvasCurves::update(const std::shared_ptr<const Solution>& solution, double devicePxPerMetre,
+                          const QRectF& view) {
     // flattened for the next power of two of the scale: never coarser than asked for, and made
-    // anew only when a zoom passes a power of two, not at every wheel step
+    // anew only when a zoom passes a power of two, not at every wheel step, or when the view
+    // leaves the region flattened exactly
     const double scale =
         devicePxPerMetre > 0 ? std::exp2(std::ceil(std::log2(devicePxPerMetre))) : 0;
-    if (solution == m_solution && scale == m_scale)
+    const bool inside = m_seen.isNull() || (!view.isNull() && m_seen.contains(view));
+    if (solution == m_solution && scale == m_scale && inside)
         return;
     m_solution = solution;
     m_scale = scale;
+    // a view's size around the view: panning by less than that keeps the curves
+    m_seen = view.isNull()
+                 ? QRectF()
+                 : view.adjusted(-view.width(), -view.height(), view.width(), view.height());
     m_pins.clear();
     m_path = m_free = m_vak = m_openLoop = m_closedLoop = {};
     if (!solution || !(devicePxPerMetre > 0))
         return;
     const double tolerance = kTolerancePx / scale;
-    m_path = flattenPath(*solution->path(), tolerance);
+    auto within = [&](const std::function<FlatCurve(FlattenLimits&)>& build) {
+        FlattenLimits limits{tolerance, m_seen};
+        return flattenWithinBudget(build, limits);
+    };
     const Solution& s = *solution;
-    m_free = flattenInTime(
-        [&](double t) {
-            const FreeState f = s.freeAt(t);
-            return QPointF(f.x, f.y);
-        },
-        s.tEnd(), tolerance);
-    m_vak = flattenInTime(
-        [&](double t) {
-            const VakonomicState v = s.vakonomicAt(t);
-            return QPointF(v.x, v.y);
-        },
-        s.tEnd(), tolerance);
+    m_path = within([&](FlattenLimits& l) { return flattenPath(*s.path(), l); });
+    m_free = within([&](FlattenLimits& l) {
+        return flattenInTime(
+            [&](double t) {
+                const FreeState f = s.freeAt(t);
+                return QPointF(f.x, f.y);
+            },
+            s.tEnd(), l);
+    });
+    m_vak = within([&](FlattenLimits& l) {
+        return flattenInTime(
+            [&](double t) {
+                const VakonomicState v = s.vakonomicAt(t);
+                return QPointF(v.x, v.y);
+            },
+            s.tEnd(), l);
+    });
     // the pushed bodies (docs/physics.md §9), when the scene has a perturbation: a state between
     // the integrator's steps costs an integration step, so they are drawn through their accepted
     // steps, by the cubic Hermite interpolant of the position and velocity there
     auto pushed = [&](const PerturbedMotion* body) {
-        return flattenThroughKnots(body->trailKnots(), s.tEnd(), tolerance);
+        return within(
+            [&](FlattenLimits& l) { return flattenThroughKnots(body->trailKnots(), s.tEnd(), l); });
     };
     if (s.perturbed()) {
         m_openLoop = pushed(s.openLoop());
@@ -181,10 +276,10 @@ void CanvasCurves::update(const std::shared_ptr<const Solution>& solution,
 const FlatCurve& CanvasCurves::pinnedPath(const std::shared_ptr<const Solution>& run) {
     auto it = m_pins.find(run.get());
     if (it == m_pins.end() || it->second.first != run) {
-        const double tolerance = m_scale > 0 ? kTolerancePx / m_scale : 1e-3;
-        it =
-            m_pins.insert_or_assign(run.get(), std::pair{run, flattenPath(*run->path(), tolerance)})
-                .first;
+        FlattenLimits limits{m_scale > 0 ? kTolerancePx / m_scale : 1e-3, m_seen};
+        FlatCurve flat = flattenWithinBudget(
+            [&](FlattenLimits& l) { return flattenPath(*run->path(), l); }, limits);
+        it = m_pins.insert_or_assign(run.get(), std::pair{run, std::move(flat)}).first;
     }
     return it->second.second;
 }

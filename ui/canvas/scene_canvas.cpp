@@ -62,7 +62,8 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
 }
 
 const CanvasCurves& SceneCanvas::curves() const {
-    m_curves.update(m_document->solution(), m_view.scale() * devicePixelRatioF());
+    m_curves.update(m_document->solution(), m_view.scale() * devicePixelRatioF(),
+                    m_view.transform().inverted().mapRect(QRectF(rect())));
     return m_curves;
 }
 

@@ -1,12 +1,57 @@
 #include "document/plot_series.h"
 
+#include "common/input_error.h"
+
 #include <QCoreApplication>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace chaplygin::ui {
+
+void requireFiniteSeries(const PlotSeries& p) {
+    struct Named {
+        const char* name;
+        const QVector<double>* values;
+        const QVector<double>* times;
+    };
+    const Named all[] = {
+        {"s", &p.s, &p.t},
+        {"x", &p.x, &p.t},
+        {"y", &p.y, &p.t},
+        {"Psi", &p.psi, &p.t},
+        {"chi", &p.chi, &p.t},
+        {"lambda", &p.lambda, &p.t},
+        {"T", &p.energy, &p.t},
+        {"free x", &p.freeX, &p.freeT},
+        {"free y", &p.freeY, &p.freeT},
+        {"free Psi", &p.freePsi, &p.freeT},
+        {"free chi", &p.freeChi, &p.freeT},
+        {"free T", &p.freeEnergy, &p.freeT},
+        {"vakonomic x", &p.vakX, &p.vakT},
+        {"vakonomic y", &p.vakY, &p.vakT},
+        {"vakonomic Psi", &p.vakPsi, &p.vakT},
+        {"vakonomic chi", &p.vakChi, &p.vakT},
+        {"vakonomic lambda", &p.vakLambda, &p.vakT},
+        {"vakonomic T", &p.vakEnergy, &p.vakT},
+        {"open-loop x", &p.pertX, &p.pertT},
+        {"open-loop y", &p.pertY, &p.pertT},
+        {"closed-loop x", &p.fbX, &p.pertT},
+        {"closed-loop y", &p.fbY, &p.pertT},
+    };
+    for (const Named& n : all)
+        for (qsizetype i = 0; i < n.values->size(); ++i)
+            if (!std::isfinite((*n.values)[i]))
+                throw InputError(
+                    std::string("plot of ") + n.name,
+                    "not finite at t = " + formatNumber(i < n.times->size() ? (*n.times)[i] : NAN) +
+                        " s (" + formatNumber((*n.values)[i]) + ")");
+    for (qsizetype i = 0; i < p.pathX.size(); ++i)
+        if (!std::isfinite(p.pathX[i]) || !std::isfinite(p.pathY[i]))
+            throw InputError("path", "point " + std::to_string(i + 1) + " is not finite");
+}
 
 PlotSeries collectSeries(const Solution& solution, int freeSamples, int exactSamples) {
     PlotSeries p;

@@ -28,6 +28,9 @@ struct PlotSeries {
 /// path table's nodes (cheap: for live plots).
 PlotSeries collectSeries(const Solution& solution, int freeSamples = 400, int exactSamples = 0);
 
+/// Throws InputError naming the series and the time of its first non-finite value. The tracking
+/// errors are left out: NaN there marks a lost closest point, and the plots leave it out.
+void requireFiniteSeries(const PlotSeries& series);
 /// One line that states the scene's parameters, for captions and exported files.
 QString sceneCaption(const Solution& solution);
 

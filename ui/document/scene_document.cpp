@@ -3,6 +3,8 @@
 #include "document/pin_set.h"
 
 #include "common/input_error.h"
+#include "numerics/chebyshev.h"
+#include "paths/path_table.h"
 
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -13,6 +15,23 @@ namespace chaplygin::ui {
 
 namespace {
 constexpr std::size_t kPathCacheSize = 8;
+// the paths kept besides the newest: at most this much memory (docs/robustness.md, Bounded work
+// and memory); one path of the table's whole halving budget is about 170 MB
+constexpr std::size_t kPathCacheBytes = std::size_t(256) << 20;
+
+// a path's table in memory, from above: per panel its node, its Gauss panel and the
+// interpolant's rows and samples at the highest degree
+std::size_t pathBytes(const Path& path) {
+    constexpr std::size_t perPanel = sizeof(PathNode) + sizeof(PathTable::GaussPanel) +
+                                     sizeof(PathTable::ChebPanel) +
+                                     (cheb::kDegree + 2) * sizeof(PathTable::Row) +
+                                     (cheb::kDegree + 1) * sizeof(PathTable::Sample);
+    std::size_t panels = 0;
+    for (const PathPiece& p : path.pieces())
+        if (p.kind == PathPiece::Kind::Curve)
+            panels += p.table->panels().size() + 1;
+    return sizeof(Path) + panels * perPanel;
+}
 constexpr qint64 kFrameMs = 16;
 constexpr int kPathWaitMs = 8; // how long a path request may hold the UI thread
 } // namespace
@@ -83,8 +102,15 @@ std::shared_ptr<const Path> SceneDocument::cachedPath(const PathSource& source) 
 
 void SceneDocument::cachePath(const PathSource& source, std::shared_ptr<const Path> path) {
     m_pathCache.insert(m_pathCache.begin(), {source, std::move(path)});
-    if (m_pathCache.size() > kPathCacheSize)
-        m_pathCache.pop_back();
+    // a count and a size: eight paths of the largest table would take 1.4 GB
+    std::size_t bytes = 0, keep = 0;
+    for (const auto& entry : m_pathCache) {
+        bytes += pathBytes(*entry.second);
+        if (keep > 0 && (keep == kPathCacheSize || bytes > kPathCacheBytes))
+            break;
+        ++keep;
+    }
+    m_pathCache.resize(keep);
 }
 
 std::shared_ptr<const Path> SceneDocument::pathFor(const PathSource& source) {
@@ -172,7 +198,11 @@ void SceneDocument::recompute() {
         else
             solution =
                 std::make_shared<const Solution>(Solution::compute(m_scene, pathFor(m_scene.path)));
-        m_series = collectSeries(*solution, kFreeSamples);
+        // nothing non-finite reaches a view: the solution is checked as it is made, the plots'
+        // series here
+        PlotSeries series = collectSeries(*solution, kFreeSamples);
+        requireFiniteSeries(series);
+        m_series = std::move(series);
         m_solution = std::move(solution);
     } catch (const InputError& e) {
         error = SceneError::of(e);

@@ -10,6 +10,7 @@
 #include "panels/parameters_panel.h"
 #include "panels/path_panel.h"
 #include "plots/plots_panel.h"
+#include "scene/scene_json.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
@@ -34,6 +35,8 @@
 #include <memory>
 #include <random>
 
+#include <sys/resource.h>
+
 using namespace chaplygin;
 using namespace chaplygin::ui;
 
@@ -47,6 +50,9 @@ constexpr int kDefaultEvents = 1500;
 #else
 constexpr int kDefaultEvents = 5000;
 #endif
+
+// the program's documented bound on its resident memory under any sequence of events [MB]
+constexpr double kPeakMemoryMb = 1024;
 
 unsigned envNumber(const char* name, unsigned fallback) {
     bool ok = false;
@@ -265,7 +271,16 @@ QString TestRandomEvents::check() {
     MotionSample m = solution->at(std::clamp(t, 0.0, solution->tEnd()));
     for (double v : {m.x, m.y, m.phi, m.free.x, m.free.y, m.free.phi})
         if (!isFinite(v))
-            return QStringLiteral("non-finite pose at t = %1").arg(t);
+            return QStringLiteral("non-finite pose at t = %1: controlled (%2, %3, %4), free (%5, "
+                                  "%6, %7); the scene:\n%8")
+                .arg(t)
+                .arg(m.x)
+                .arg(m.y)
+                .arg(m.phi)
+                .arg(m.free.x)
+                .arg(m.free.y)
+                .arg(m.free.phi)
+                .arg(QString::fromStdString(sceneToJson(scene)));
     SceneCanvas* canvas = m_window->canvas();
     QPointF p = canvas->toPixel({m.x, m.y});
     if (!isFinite(canvas->scale()) || !(canvas->scale() > 0) || !isFinite(p.x()) ||
@@ -314,8 +329,7 @@ void TestRandomEvents::randomEventStream() {
         QElapsedTimer clock;
         clock.start();
         QString what = randomEvent();
-        if (qEnvironmentVariableIsSet("CHAPLYGIN_GUI_TRACE"))
-            std::printf("  %d %lld ms %s\n", i, clock.elapsed(), qPrintable(what));
+        const qint64 eventMs = clock.elapsed();
         recent << what;
         if (recent.size() > 8)
             recent.removeFirst();
@@ -327,6 +341,10 @@ void TestRandomEvents::randomEventStream() {
             QVERIFY2(!shot.isNull(), qPrintable(QStringLiteral("seed %1").arg(seed)));
         }
         QString problem = check();
+        // the event's own time, and with the events it left queued, the paint and the check
+        if (qEnvironmentVariableIsSet("CHAPLYGIN_GUI_TRACE"))
+            std::printf("  %d %lld ms (%lld ms in all) %s\n", i, eventMs, clock.elapsed(),
+                        qPrintable(what));
         QVERIFY2(problem.isEmpty(),
                  qPrintable(QStringLiteral("seed %1, event %2 (%3): %4\nlast events: %5")
                                 .arg(seed)
@@ -336,6 +354,20 @@ void TestRandomEvents::randomEventStream() {
     m_window->document()->flush();
     QVERIFY2(check().isEmpty(), qPrintable(QStringLiteral("seed %1 at the end").arg(seed)));
     m_window.reset();
+    // memory bounded (docs/robustness.md, Bounded work and memory): the peak resident size of the
+    // whole run. The sanitizers' allocator keeps freed memory in quarantine: no bound there
+    struct rusage usage {};
+    getrusage(RUSAGE_SELF, &usage);
+    const double peakMb = double(usage.ru_maxrss) / 1024; // ru_maxrss is in kB on Linux
+    std::printf("random GUI events: seed %u, %d events, peak resident memory %.0f MB\n", seed,
+                events, peakMb);
+#if !defined(__SANITIZE_ADDRESS__)
+    QVERIFY2(peakMb < kPeakMemoryMb,
+             qPrintable(QStringLiteral("seed %1: peak resident memory %2 MB, over %3 MB")
+                            .arg(seed)
+                            .arg(peakMb)
+                            .arg(kPeakMemoryMb)));
+#endif
 }
 
 QTEST_MAIN(TestRandomEvents)
