@@ -7,6 +7,7 @@
 #include "window_fixture.h"
 
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QUndoStack>

@@ -4,6 +4,7 @@
 // stumble on it.
 #include "lab/gallery.h"
 #include "panels/equations_html.h"
+#include "scene/perturbation.h"
 #include "scene/presets.h"
 #include "scene/solution.h"
 #include "systems/system.h"
