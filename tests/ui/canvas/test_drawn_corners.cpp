@@ -8,7 +8,6 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QLineF>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QUndoStack>
@@ -67,7 +66,12 @@ class TestDrawnCorners : public QObject, public test::WindowFixture {
 
   private slots:
     void initTestCase() { startSuite("ui_drawn_corners_tests"); }
-    void init() { openWindow(); }
+    void init() {
+        // settings of each function's own: ctest runs the functions in parallel processes
+        QCoreApplication::setApplicationName(QStringLiteral("ui_drawn_corners_tests_") +
+                                             QString::fromLatin1(QTest::currentTestFunction()));
+        openWindow();
+    }
     void cleanup() { closeWindow(); }
     void zigZagOfFourStrokesPivotsThreeTimes();
     void drawnHalfCircleDoesNotPivot();
@@ -87,16 +91,16 @@ void TestDrawnCorners::startDrawing(CornerMode corners) {
 }
 
 int TestDrawnCorners::drawnPivots(const std::vector<QPoint>& stroke) {
+    const QPointF press = m_window->canvas()->toWorld(QPointF(stroke.front()));
     drag(m_window->canvas(), stroke);
     m_window->document()->flush();
     const auto& solution = m_window->document()->solution();
     const PathSource& path = solution->scene().path;
     if (path.kind != PathKind::Polyline)
         return -1;
-    // a new stroke from the press, a point every 10 px or more
-    const QPointF first =
-        m_window->canvas()->toPixel(QPointF(path.points.front().first, path.points.front().second));
-    if (QLineF(first, stroke.front()).length() > 0.5 || path.points.size() < 30)
+    // a new stroke from the press (the view may be fitted to it afterwards), a point every 10 px
+    // or more
+    if (path.points.front() != std::pair(press.x(), press.y()) || path.points.size() < 30)
         return -2;
     return solution->path()->pivotCount();
 }
