@@ -1,6 +1,6 @@
 #pragma once
 // The corners of a drawn stroke: the points where the hand turned sharply, told apart from the
-// jitter of the samples (docs/numerics.md, "Corners of a drawn path").
+// jitter of the samples (docs/numerics.md, Corners of a drawn path).
 #include <cstddef>
 #include <utility>
 #include <vector>

@@ -50,8 +50,8 @@ std::shared_ptr<const Curve> stretch(const std::vector<std::pair<double, double>
 }
 
 // A stroke with pivot corners: the body pivots where the hand turned by more than the corner
-// angle (findCorners) and follows a smooth stretch between them (docs/numerics.md, "Corners of
-// a drawn path")
+// angle (findCorners) and follows a smooth stretch between them (docs/numerics.md, Corners of a
+// drawn path)
 std::vector<PathPiece> pivotPolyline(const std::vector<std::pair<double, double>>& pts,
                                      double cornerAngleDeg, double smoothing,
                                      std::size_t halvingBudget) {

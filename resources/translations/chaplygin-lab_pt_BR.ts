@@ -114,6 +114,10 @@
         <translation>(69)–(70), em P</translation>
     </message>
     <message>
+        <source>(69)–(70), at P; m_t = %1 kg translates with P (the disk&apos;s m, the carriage&apos;s M + 2m)</source>
+        <translation>(69)–(70), em P; m_t = %1 kg translada com P (o m do disco, o M + 2m do carrinho)</translation>
+    </message>
+    <message>
         <source>= −λṡ: workless (S_c = Iφ̈, erratum to (66)–(68))</source>
         <translation>= −λṡ: não realiza trabalho (S_c = Iφ̈, errata de (66)–(68))</translation>
     </message>

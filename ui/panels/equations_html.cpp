@@ -226,12 +226,23 @@ QString forces(const At& at) {
                                                   "2)")
                     : QCoreApplication::translate("EquationsPanel", "docs/physics.md \u00a7"
                                                                     "2"));
-    h += row(QStringLiteral("N = F_c\u03c6 = m(\u1e61\u03c6\u0307 + a\u03c6\u0308)"),
-             QStringLiteral("%1 (%2 \u00b7 %3 + %4 \u00b7 %5)")
-                 .arg(operand(d.mass), operand(c.sdot), operand(c.phidot), operand(d.a),
-                      operand(c.phiddot)),
-             c.knifeReaction, QStringLiteral("N"),
-             QCoreApplication::translate("EquationsPanel", "(69)\u2013(70), at P"));
+    if (d.translatingMass == d.mass)
+        h += row(QStringLiteral("N = F_c\u03c6 = m(\u1e61\u03c6\u0307 + a\u03c6\u0308)"),
+                 QStringLiteral("%1 (%2 \u00b7 %3 + %4 \u00b7 %5)")
+                     .arg(operand(d.mass), operand(c.sdot), operand(c.phidot), operand(d.a),
+                          operand(c.phiddot)),
+                 c.knifeReaction, QStringLiteral("N"),
+                 QCoreApplication::translate("EquationsPanel", "(69)\u2013(70), at P"));
+    else // the lateral reaction moves only the mass that translates with P
+        h += row(QStringLiteral("N = F_c\u03c6 = m_t \u1e61\u03c6\u0307 + m_eff a\u03c6\u0308"),
+                 QStringLiteral("%1 \u00b7 %2 \u00b7 %3 + %4 \u00b7 %5 \u00b7 %6")
+                     .arg(operand(d.translatingMass), operand(c.sdot), operand(c.phidot),
+                          operand(d.mass), operand(d.a), operand(c.phiddot)),
+                 c.knifeReaction, QStringLiteral("N"),
+                 QCoreApplication::translate("EquationsPanel",
+                                             "(69)\u2013(70), at P; m_t = %1 kg translates with "
+                                             "P (the disk's m, the carriage's M + 2m)")
+                     .arg(num(d.translatingMass)));
     h += row(
         QStringLiteral("\u03c4 = I\u03c6\u0308 + aN"),
         QStringLiteral("%1 \u00b7 %2 + %3 \u00b7 %4")

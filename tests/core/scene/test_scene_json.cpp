@@ -38,6 +38,7 @@ TEST(SceneJson, RoundTripsEveryPreset) {
     drawn.path.kind = PathKind::Polyline;
     drawn.path.points = {{0, 0}, {1, 0.1}, {2, -0.3}};
     drawn.path.corners = CornerMode::Smooth;
+    drawn.path.cornerAngle = 50;
     drawn.system.kind = SystemKind::Disk;
     drawn.system.params = {{"m", 1}, {"R", 0.5}, {"I1", 0.1}, {"I2", 0.05}};
     drawn.mode = SpeedMode::Speed;
