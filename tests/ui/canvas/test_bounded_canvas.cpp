@@ -122,7 +122,8 @@ void TestBoundedCanvas::extremeZoomsAndLongHorizonsStayWithinBudget() {
     auto window = test::showTestWindow();
     QVERIFY(window);
     SceneCanvas* canvas = window->canvas();
-    for (const Scene& scene : {longSine(), galleryScene("gallery/pushed-off-path.json")}) {
+    for (const Scene& scene : {longSine(), galleryScene("gallery/pushed-off-path.json"),
+                               galleryScene("gallery/long-horizon.json")}) {
         window->document()->setSceneNow(scene);
         QVERIFY2(window->document()->error().isEmpty(), qPrintable(window->document()->error()));
         const double tEnd = window->document()->solution()->tEnd();
