@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 #include "scene/csv_columns.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -24,6 +25,18 @@ std::string sizeHint(double x, double y) {
         return "";
     return "; coordinates this large (" + formatNumber(std::max(std::fabs(x), std::fabs(y))) +
            " m) overflow double precision in the path's arithmetic";
+}
+
+// a path far out: its body's positions are rounded to more than the canvas's smallest pixel,
+// and its pixels overflow at the canvas's zooms
+void requireWithinReach(double x, double y) {
+    const double far = std::max(std::fabs(x), std::fabs(y));
+    if (far > kMaxPathExtent)
+        throw InputError(place(x, y), "lies " + formatNumber(far) +
+                                          " m from the origin; a path must lie within " +
+                                          formatNumber(kMaxPathExtent) +
+                                          " m of it (beyond, double precision cannot resolve "
+                                          "the body's motion and the canvas cannot draw it)");
 }
 
 bool includes(const MotionParts& parts, const MotionParts& column) {
@@ -67,6 +80,14 @@ void requireFinitePath(const Path& path) {
                                                           sizeHint(n.x, n.y));
             }
         }
+    }
+    // finite, and within reach
+    for (const PathPiece& piece : path.pieces()) {
+        if (piece.kind == PathPiece::Kind::Pivot)
+            requireWithinReach(piece.x, piece.y);
+        else
+            for (const PathNode& n : piece.table->nodes())
+                requireWithinReach(n.x, n.y);
     }
 }
 

@@ -9,8 +9,13 @@
 
 namespace chaplygin {
 
+/// How far from the origin a path may lie [m]: there double precision resolves 0.1 µm, below the
+/// canvas's smallest pixel (1e-5 m at its largest zoom), and every pixel stays finite.
+inline constexpr double kMaxPathExtent = 1e9;
+
 /// Throws InputError("path at (x, y)", ...) when a node of the path's table, or its interpolant
-/// at a panel's ends or middle, has a non-finite position, heading or arc length.
+/// at a panel's ends or middle, has a non-finite position, heading or arc length, or (after
+/// those) when a node lies farther than kMaxPathExtent from the origin.
 void requireFinitePath(const Path& path);
 
 /// Throws InputError("column NAME is not finite at t = T s: ...") for the first CSV column read

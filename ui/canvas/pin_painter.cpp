@@ -1,5 +1,7 @@
 #include "canvas/pin_painter.h"
 
+#include "canvas/trail_stroke.h"
+
 #include "canvas/body_painter.h"
 #include "canvas/curve_flattening.h"
 #include "document/pin_set.h"
@@ -51,7 +53,6 @@ void paintPinnedRuns(QPainter& p, PinSet& pins, CanvasCurves& curves, const QTra
         pen.setCosmetic(true);
         pen.setCapStyle(Qt::RoundCap);
         pen.setJoinStyle(Qt::RoundJoin);
-        p.setPen(pen);
         // the trail up to t, like the live body's: the lengths show which run is ahead; along
         // its path flattened at this scale, up to its arc length now
         const FlatCurve& path = curves.pinnedPath(run.solution);
@@ -60,7 +61,7 @@ void paintPinnedRuns(QPainter& p, PinSet& pins, CanvasCurves& curves, const QTra
         for (std::size_t k = 0; k < count; ++k)
             line << world.map(path.points[k]);
         line << world.map(QPointF(m.x, m.y));
-        p.drawPolyline(line);
+        strokePolylineWithin(p, line, pen, paintableArea(p)); // clipped at any zoom
         p.save();
         p.setTransform(world, true);
         paintBody(p, run.solution->scene().system, run.solution->system(), {m.x, m.y, m.phi},

@@ -1,4 +1,5 @@
 #include "canvas/scene_canvas.h"
+#include "canvas/trail_stroke.h"
 
 #include "canvas/layer_blit.h"
 #include "document/scene_document.h"
@@ -130,14 +131,14 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
         const double kappa = 0.5 * (flat.kappa[i - 1] + flat.kappa[i]);
         return pale(curvatureColor(std::isnan(kappa) ? 0 : kappa)).rgb();
     };
+    const QRegion area = within.isNull() ? paintableArea(p) : QRegion(within.toAlignedRect());
     QPolygonF run;
     QRgb runColour = 0;
     auto flush = [&] {
         if (run.size() > 1) {
             QPen pen = m_look.style.pen(QColor(runColour), 6);
             pen.setCapStyle(Qt::FlatCap);
-            p.setPen(pen);
-            p.drawPolyline(run);
+            strokePolylineWithin(p, run, pen, area); // clipped: a zoomed-in band is huge
         }
         run.clear();
     };

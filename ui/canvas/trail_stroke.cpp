@@ -213,4 +213,11 @@ void strokePolylineWithin(QPainter& p, const QPolygonF& line, const QPen& pen,
     p.drawPath(path);
 }
 
+QRegion paintableArea(const QPainter& p) {
+    QRectF area = p.worldTransform().inverted().mapRect(QRectF(p.window()));
+    if (p.hasClipping())
+        area = area.intersected(p.clipBoundingRect());
+    return QRegion(area.toAlignedRect());
+}
+
 } // namespace chaplygin::ui

@@ -17,4 +17,9 @@ namespace chaplygin::ui {
 void strokePolylineWithin(QPainter& painter, const QPolygonF& line, const QPen& pen,
                           const QRegion& area);
 
+/// What the painter can reach, in its user coordinates: its window through the world transform,
+/// within its clip. For a whole-picture strokePolylineWithin: a curve far larger than the
+/// picture is then handed to Qt clipped to it.
+QRegion paintableArea(const QPainter& painter);
+
 } // namespace chaplygin::ui

@@ -45,6 +45,25 @@ TEST(FiniteResults, StrokeAtTheEdgeOfDoublePrecisionIsRefusedNamingThePath) {
     EXPECT_NE(message.find("overflow double precision"), std::string::npos) << message;
 }
 
+TEST(FiniteResults, PathBeyondReachIsRefused) {
+    // the typed path y = 1e308 of seeds 271828, 161803 and 5551212: the free body's trail beside
+    // it jumped by 2e292 m, and the body's pixel overflowed once the view was zoomed
+    Scene scene;
+    scene.path.y = "1e308";
+    std::string message = messageOf(scene);
+    EXPECT_NE(message.find("path at (0, 1e+308): lies 1e+308 m from the origin; a path must lie "
+                           "within 1e+09 m of it"),
+              std::string::npos)
+        << message;
+    // the edge itself is within reach; a drawn point just beyond it is not
+    scene.path.y = "1e9";
+    EXPECT_EQ(messageOf(scene), "");
+    scene.path.kind = PathKind::Polyline;
+    scene.path.points = {{0, 0}, {1, 0}, {-1.5e9, 1}};
+    message = messageOf(scene);
+    EXPECT_NE(message.find("lies 1.5e+09 m from the origin"), std::string::npos) << message;
+}
+
 TEST(FiniteResults, SampleNamesTheColumnAndTheTime) {
     const Solution solution = Solution::compute(presetScene(presetNames().front()));
     MotionSample m = solution.at(1.5);

@@ -61,6 +61,13 @@ std::size_t panelEnds(const Path& path) {
     return n;
 }
 
+// the sanitizers' build runs the same work several times slower
+#if defined(__SANITIZE_ADDRESS__)
+constexpr qint64 kSlowdown = 5;
+#else
+constexpr qint64 kSlowdown = 1;
+#endif
+
 } // namespace
 
 class TestBoundedCanvas : public QObject {
@@ -93,7 +100,8 @@ void TestBoundedCanvas::dashedTrailAcrossDoublePrecisionIsBounded() {
             strokePolylineWithin(p, line, pen, QRegion(image.rect()));
         }
         const qint64 ms = clock.elapsed();
-        QVERIFY2(ms < 500, qPrintable(QStringLiteral("style %1: %2 ms").arg(int(style)).arg(ms)));
+        QVERIFY2(ms < 500 * kSlowdown,
+                 qPrintable(QStringLiteral("style %1: %2 ms").arg(int(style)).arg(ms)));
         // the part in view is drawn: the vertical line through x = 322.894
         QVERIFY2(image.pixel(322, 150) != qRgb(255, 255, 255) ||
                      image.pixel(322, 160) != qRgb(255, 255, 255),
@@ -122,7 +130,8 @@ void TestBoundedCanvas::extremeZoomsAndLongHorizonsStayWithinBudget() {
     auto window = test::showTestWindow();
     QVERIFY(window);
     SceneCanvas* canvas = window->canvas();
-    for (const Scene& scene : {longSine(), galleryScene("gallery/pushed-off-path.json")}) {
+    for (const Scene& scene : {longSine(), galleryScene("gallery/pushed-off-path.json"),
+                               galleryScene("gallery/long-horizon.json")}) {
         window->document()->setSceneNow(scene);
         QVERIFY2(window->document()->error().isEmpty(), qPrintable(window->document()->error()));
         const double tEnd = window->document()->solution()->tEnd();
@@ -164,9 +173,11 @@ void TestBoundedCanvas::extremeZoomsAndLongHorizonsStayWithinBudget() {
         qInfo("scene up to %g s, %zu panel ends: the most points in a curve %zu, the slowest "
               "frame %lld ms",
               tEnd, panelEnds(*window->document()->solution()->path()), most, slowest);
-        // a frame of a lecture's projector is 16 ms; a frame at a zoom step redraws its layers,
-        // on a shared test machine: far below a stall
-        QVERIFY2(slowest < 1000, qPrintable(QStringLiteral("a frame took %1 ms").arg(slowest)));
+        // a frame of a lecture's projector is 16 ms; a frame at a zoom step redraws its layers
+        // (up to 0.66 s measured on a shared test machine at load 8 on 2 cores); the band of the
+        // long horizon's 600 laps took 170 s at 1e5 px/m before it was clipped
+        QVERIFY2(slowest < 1500 * kSlowdown,
+                 qPrintable(QStringLiteral("a frame took %1 ms").arg(slowest)));
     }
 }
 

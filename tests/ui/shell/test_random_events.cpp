@@ -285,10 +285,14 @@ QString TestRandomEvents::check() {
     QPointF p = canvas->toPixel({m.x, m.y});
     if (!isFinite(canvas->scale()) || !(canvas->scale() > 0) || !isFinite(p.x()) ||
         !isFinite(p.y()))
-        return QStringLiteral("canvas maps the body to %1,%2 at scale %3")
+        return QStringLiteral("canvas maps the body at (%1, %2) m to %3,%4 at scale %5; the "
+                              "scene:\n%6")
+            .arg(m.x)
+            .arg(m.y)
             .arg(p.x())
             .arg(p.y())
-            .arg(canvas->scale());
+            .arg(canvas->scale())
+            .arg(QString::fromStdString(sceneToJson(scene)));
     for (int i = 0; i < 4; ++i) {
         QCustomPlot* plot = m_window->plotsPanel()->plot(i);
         for (QCPAxisRect* rect : plot->axisRects())
