@@ -98,6 +98,13 @@ VakonomicMotion::VakonomicMotion(const DerivedSystem& system, const VakonomicIni
     // the pendulum 2Psi'' = -omega^2 sin 2Psi has modulus k^2 = sin^2 Psi0 + (Psidot0/omega)^2
     const double S0 = initial.sdot / m_vT, L0 = Lambda0 / m_omega;
     const double k2 = S0 * S0 + L0 * L0;
+    if (initial.phidot == 0 && k2 == 1) {
+        // Psi0 = +-pi/2 with |Psidot0/omega| below the rounding of k^2 (a straight start whose
+        // curvature's rate is rounding): the separatrix's tau0 = asinh(sdot/(b phidot)) would be
+        // infinite; the motion is the straight line within the rounding (docs/physics.md §8)
+        m_case = Case::Line;
+        return;
+    }
     m_k = std::sqrt(k2);
     m_eps = initial.phidot >= 0 ? 1.0 : -1.0;
     m_sigma = Lambda0 >= 0 ? 1.0 : -1.0;

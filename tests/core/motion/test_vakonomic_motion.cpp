@@ -91,6 +91,22 @@ double checkAgainstReference(const DerivedSystem& sys, const VakonomicInitial& i
 
 } // namespace
 
+// A straight start whose multiplier is rounding (Lambda0/omega = 1e-17, so k^2 rounds to 1):
+// every state finite and the straight line's (the separatrix's tau0 would be infinite)
+TEST(VakonomicMotion, StraightStartWithARoundingMultiplierIsTheLine) {
+    DerivedSystem sys{1.0, 0.5, 1.0};
+    const double vT = 1.0, lambda = 1e-17 * sys.mass * sys.b * (vT / sys.b);
+    VakonomicMotion vak(sys, {0.78, -2.5, 0.0, vT, 0.0, lambda});
+    for (double t : {0.0, 0.5, 1.0, 2.0, 5.0}) {
+        VakonomicState s = vak.at(t);
+        for (double v : {s.x, s.y, s.phi, s.sdot, s.phidot, s.lambda, s.psi})
+            ASSERT_TRUE(std::isfinite(v)) << "t = " << t;
+        EXPECT_NEAR(s.x, 0.78 + vT * t, 1e-12);
+        EXPECT_NEAR(s.y, -2.5, 1e-12);
+        EXPECT_NEAR(s.phi, 0.0, 1e-12);
+    }
+}
+
 TEST(VakonomicMotion, StartsFromTheGivenState) {
     DerivedSystem sys{1.3, 0.4, 0.9};
     VakonomicInitial init{0.3, -0.2, 0.7, 0.6, -0.8, 0.25};
