@@ -16,26 +16,17 @@ namespace {
 using std::numbers::pi;
 using Complex = std::complex<double>;
 
-// status first: the result is read only after the call has filled it
-double checked(int status, const gsl_sf_result& r, const char* what) {
-    const double value = r.val;
-    if (status != GSL_SUCCESS || !std::isfinite(value))
-        throw std::runtime_error(std::string("internal error: GSL ") + what + " failed (" +
-                                 gsl_strerror(status) + ")");
-    return value;
-}
-
 double completeK(double q) {
     gsl_sf_result r;
     int status = gsl_sf_ellint_Kcomp_e(q, GSL_PREC_DOUBLE, &r);
-    return checked(status, r, "ellint_Kcomp");
+    return gsl::checkedResult(status, r, "ellint_Kcomp");
 }
 
 // D(pi/2, q) = (K - E)/q^2 = int_0^{pi/2} sin^2/sqrt(1 - q^2 sin^2)
 double completeD(double q) {
     gsl_sf_result r;
     int status = gsl_sf_ellint_Dcomp_e(q, GSL_PREC_DOUBLE, &r);
-    return checked(status, r, "ellint_Dcomp");
+    return gsl::checkedResult(status, r, "ellint_Dcomp");
 }
 
 // F(phi, q) for any phi: F(phi + j pi) = F(phi) + 2 j K
@@ -43,7 +34,7 @@ double extendedF(double phi, double q, double K) {
     double j = std::nearbyint(phi / pi);
     gsl_sf_result r;
     int status = gsl_sf_ellint_F_e(phi - j * pi, q, GSL_PREC_DOUBLE, &r);
-    double f = checked(status, r, "ellint_F");
+    double f = gsl::checkedResult(status, r, "ellint_F");
     return 2 * j * K + f;
 }
 
@@ -57,13 +48,13 @@ Elliptic elliptic(double w, double q, double K, double D) {
     double r = w - 2 * K * j;
     Elliptic e;
     int status = gsl_sf_elljac_e(r, q * q, &e.sn, &e.cn, &e.dn);
-    checked(status, gsl_sf_result{e.sn + e.cn + e.dn, 0}, "elljac");
+    gsl::checkedResult(status, gsl_sf_result{e.sn + e.cn + e.dn, 0}, "elljac");
     e.am = j * pi + std::atan2(e.sn, e.cn);
     // D(theta) = (sin^3 theta/3) R_D(cos^2 theta, 1 - q^2 sin^2 theta, 1), theta = am r
     gsl_sf_result rd;
     double cn2 = std::max(e.cn * e.cn, 0.0);
     status = gsl_sf_ellint_RD_e(cn2, e.dn * e.dn, 1.0, GSL_PREC_DOUBLE, &rd);
-    checked(status, rd, "ellint_RD");
+    gsl::checkedResult(status, rd, "ellint_RD");
     e.d = 2 * j * D + e.sn * e.sn * e.sn / 3 * rd.val;
     if (std::fmod(std::fabs(j), 2.0) == 1.0) {
         e.sn = -e.sn;

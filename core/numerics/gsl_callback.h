@@ -1,10 +1,15 @@
 #pragma once
 // The one adapter of GSL's C callbacks to C++ callables and OdeProblems (the only void*), and
-// GSL's error handler switched off.
+// GSL's error handler switched off, and a special function's result checked.
 #include "numerics/ode_problem.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_math.h>
+#include <gsl/gsl_sf_result.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace chaplygin::gsl {
 
@@ -48,6 +53,16 @@ inline void ensureErrorHandlerOff() {
         return true;
     }();
     (void)off;
+}
+
+/// The value of a GSL special function's result, read after its status: throws
+/// std::runtime_error naming `what` when the call failed or gave a non-finite value.
+inline double checkedResult(int status, const gsl_sf_result& r, const char* what) {
+    const double value = r.val;
+    if (status != GSL_SUCCESS || !std::isfinite(value))
+        throw std::runtime_error(std::string("internal error: GSL ") + what + " failed (" +
+                                 gsl_strerror(status) + ")");
+    return value;
 }
 
 } // namespace chaplygin::gsl

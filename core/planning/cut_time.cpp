@@ -13,34 +13,22 @@
 #include <string>
 
 namespace chaplygin {
-namespace {
-
-// the value is read after the call has filled it: the status is evaluated first
-double checked(int status, const gsl_sf_result& r, const char* what) {
-    const double value = r.val;
-    if (status != GSL_SUCCESS || !std::isfinite(value))
-        throw std::runtime_error(std::string("internal error: GSL ") + what + " failed (" +
-                                 gsl_strerror(status) + ")");
-    return value;
-}
-
-} // namespace
 
 double firstRotationMaxwellRoot(double q) {
     gsl::ensureErrorHandlerOff();
     gsl_sf_result r;
-    const double K = checked(gsl_sf_ellint_Kcomp_e(q, GSL_PREC_DOUBLE, &r), r, "Kcomp");
-    const double E = checked(gsl_sf_ellint_Ecomp_e(q, GSL_PREC_DOUBLE, &r), r, "Ecomp");
+    const double K = gsl::checkedResult(gsl_sf_ellint_Kcomp_e(q, GSL_PREC_DOUBLE, &r), r, "Kcomp");
+    const double E = gsl::checkedResult(gsl_sf_ellint_Ecomp_e(q, GSL_PREC_DOUBLE, &r), r, "Ecomp");
     // on (K, 2K) write p = 2K + u, u in (-K, 0): sn p = -sn u, cn p = -cn u, dn p = dn u and
     // E(am p) = 2E + E(am u), so that f and f' = -sn dn (E(p) - p) - cn dn^2 need no reduction
     auto f = [&](double p) {
         const double u = p - 2 * K;
         double sn = 0, cn = 0, dn = 0;
         const int status = gsl_sf_elljac_e(u, q * q, &sn, &cn, &dn);
-        checked(status, gsl_sf_result{sn + cn + dn, 0}, "elljac");
+        gsl::checkedResult(status, gsl_sf_result{sn + cn + dn, 0}, "elljac");
         gsl_sf_result e;
-        const double Eu =
-            checked(gsl_sf_ellint_E_e(std::atan2(sn, cn), q, GSL_PREC_DOUBLE, &e), e, "E");
+        const double Eu = gsl::checkedResult(
+            gsl_sf_ellint_E_e(std::atan2(sn, cn), q, GSL_PREC_DOUBLE, &e), e, "E");
         sn = -sn;
         cn = -cn;
         const double Ep = 2 * E + Eu;
@@ -64,7 +52,7 @@ double unitCutTime(double k) {
     gsl::ensureErrorHandlerOff();
     if (k < 1) {
         gsl_sf_result r;
-        return 2 * checked(gsl_sf_ellint_Kcomp_e(k, GSL_PREC_DOUBLE, &r), r, "Kcomp");
+        return 2 * gsl::checkedResult(gsl_sf_ellint_Kcomp_e(k, GSL_PREC_DOUBLE, &r), r, "Kcomp");
     }
     const double q = 1 / k;
     return 2 * q * firstRotationMaxwellRoot(q);

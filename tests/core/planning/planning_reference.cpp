@@ -34,7 +34,16 @@ struct ShootingTarget {
 int shootingResidual(const gsl_vector* v, void* p, gsl_vector* f) {
     const auto* tg = static_cast<const ShootingTarget*>(p);
     const double psi0 = gsl_vector_get(v, 0), lambda0 = gsl_vector_get(v, 1);
-    const double t = gsl_vector_get(v, 2);
+    const Pose end = unitEnd(psi0, lambda0, gsl_vector_get(v, 2));
+    gsl_vector_set(f, 0, end.x - tg->X);
+    gsl_vector_set(f, 1, end.y - tg->Y);
+    gsl_vector_set(f, 2, wrap(end.phi - tg->Phi));
+    return GSL_SUCCESS;
+}
+
+} // namespace
+
+Pose unitEnd(double psi0, double lambda0, double t) {
     DerivedSystem unit;
     unit.mass = unit.translatingMass = 1;
     unit.a = 0;
@@ -44,13 +53,8 @@ int shootingResidual(const gsl_vector* v, void* p, gsl_vector* f) {
     init.phidot = std::cos(psi0);
     init.lambda = lambda0;
     const VakonomicState s = VakonomicMotion(unit, init).at(t);
-    gsl_vector_set(f, 0, s.x - tg->X);
-    gsl_vector_set(f, 1, s.y - tg->Y);
-    gsl_vector_set(f, 2, wrap(s.phi - tg->Phi));
-    return GSL_SUCCESS;
+    return {s.x, s.y, s.phi};
 }
-
-} // namespace
 
 Pose integratedEnd(const DerivedSystem& system, double vT, const Pose& from, double psi0,
                    double lambda0, double t) {

@@ -13,6 +13,10 @@ namespace chaplygin::test {
 Pose integratedEnd(const DerivedSystem& system, double vT, const Pose& from, double psi0,
                    double lambda0, double t);
 
+/// The pose the normalised problem's (b = v_T = 1, a = 0) genuine vakonomic body reaches at t
+/// from (0, 0, 0) with Psi0 and lambda(0), by its closed form.
+Pose unitEnd(double psi0, double lambda0, double t);
+
 /// |dx|/b + |dy|/b + |dphi mod 2 pi|.
 double poseError(const Pose& a, const Pose& b, double length);
 

@@ -42,19 +42,6 @@ TEST(CutTime, SidewaysShiftArrivesAtItsCutTime) {
     EXPECT_NEAR(unitCutTime(k), 3.340383019231, 1e-11);
 }
 
-Pose unitEnd(double psi0, double lambda0, double t) {
-    DerivedSystem unit;
-    unit.mass = unit.translatingMass = 1;
-    unit.a = 0;
-    unit.b = 1;
-    VakonomicInitial init;
-    init.sdot = std::sin(psi0);
-    init.phidot = std::cos(psi0);
-    init.lambda = lambda0;
-    const VakonomicState s = VakonomicMotion(unit, init).at(t);
-    return {s.x, s.y, s.phi};
-}
-
 TEST(CutTime, OptimalUpToItAndNotBeyondByAnIndependentSearch) {
     struct Case {
         double psi0, lambda0;
@@ -63,8 +50,8 @@ TEST(CutTime, OptimalUpToItAndNotBeyondByAnIndependentSearch) {
     for (const Case c : {Case{0.5, 0.4}, Case{2.3, -0.6}, Case{-0.9, 1.0}, Case{2.8, -2.15}}) {
         const double k = std::hypot(std::sin(c.psi0), c.lambda0);
         const double cut = unitCutTime(k);
-        const Pose before = unitEnd(c.psi0, c.lambda0, 0.9 * cut);
-        const Pose after = unitEnd(c.psi0, c.lambda0, 1.1 * cut);
+        const Pose before = test::unitEnd(c.psi0, c.lambda0, 0.9 * cut);
+        const Pose after = test::unitEnd(c.psi0, c.lambda0, 1.1 * cut);
         const auto sBefore = test::leastTimeByShooting(before.x, before.y, before.phi, 400, 11);
         const auto sAfter = test::leastTimeByShooting(after.x, after.y, after.phi, 400, 12);
         EXPECT_NEAR(sBefore.t, 0.9 * cut, 1e-9) << "k = " << k;
