@@ -145,14 +145,14 @@ Solution Solution::compute(const Scene& scene) {
 }
 
 Solution Solution::compute(const Scene& scene, std::shared_ptr<const Path> path) {
-    Solution solution(scene, std::move(path), controlParamsOf(scene));
-    requireFiniteSolution(solution);
-    return solution;
+    return compute(scene, std::move(path), deriveSystem(scene.system));
 }
 
 Solution Solution::compute(const Scene& scene, std::shared_ptr<const Path> path,
                            const DerivedSystem& system) {
-    return Solution(scene, std::move(path), controlParamsOf(scene, system));
+    Solution solution(scene, std::move(path), controlParamsOf(scene, system));
+    requireFiniteSolution(solution); // nothing non-finite reaches a view or a file
+    return solution;
 }
 
 Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,

@@ -2,10 +2,12 @@
 // with a message naming the place, the quantity and the time (docs/robustness.md, Non-finite
 // results).
 #include "common/input_error.h"
+#include "paths/path.h"
 #include "scene/finite_results.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
 #include "scene/solution.h"
+#include "systems/system.h"
 
 #include <gtest/gtest.h>
 
@@ -62,6 +64,16 @@ TEST(FiniteResults, PathBeyondReachIsRefused) {
     scene.path.points = {{0, 0}, {1, 0}, {-1.5e9, 1}};
     message = messageOf(scene);
     EXPECT_NE(message.find("lies 1.5e+09 m from the origin"), std::string::npos) << message;
+}
+
+// every way to solve checks: a tabulated path, and a tabulated path with the system the caller
+// derived already (the document's slider edits)
+TEST(FiniteResults, EveryComputeChecksTheSolution) {
+    Scene scene;
+    scene.path.y = "1e308";
+    const std::shared_ptr<const Path> path = buildPath(scene.path);
+    EXPECT_THROW(Solution::compute(scene, path), InputError);
+    EXPECT_THROW(Solution::compute(scene, path, deriveSystem(scene.system)), InputError);
 }
 
 TEST(FiniteResults, SampleNamesTheColumnAndTheTime) {
