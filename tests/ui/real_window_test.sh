@@ -5,6 +5,9 @@
 # session: APP started as a new user would (no settings) and driven with xdotool: the Animation
 # menu, Space, a step, F11 and Esc, F1, a resize; checked on screenshots of the screen.
 # bad_file_dialog: APP FILE with a bad scene and no terminal shows the message in a dialog.
+# zoom_extremes: APP on the longest gallery scene, playing, zoomed with the wheel to the closest
+# and the farthest view the program allows and back: every burst of wheel steps is painted within
+# seconds (no stall), the program lives on and its peak resident memory stays under 1 GB.
 # Exit 77 (skipped, with the reason) where Xvfb, xdotool, xwininfo or ImageMagick are missing.
 set -u
 app=$1
@@ -142,6 +145,55 @@ bad_file_dialog)
   done
   xdotool search --onlyvisible --name '^Cannot open the scene$' >/dev/null && fail "Return did not close the dialog"
   kill -0 "${pids[1]}" || fail "the program ended: $(head -c 500 "$work/app.log")"
+  ;;
+zoom_extremes)
+  scene=$(dirname "$0")/../../resources/scenes/gallery/long-horizon.json
+  [ -f "$scene" ] || fail "no gallery scene $scene"
+  "$app" "$scene" >"$work/app.log" 2>&1 &
+  pids+=($!)
+  window=$(timeout 30 xdotool search --sync --onlyvisible --name '— Chaplygin Lab$' | head -1)
+  [ -n "$window" ] || fail "no window: $(head -c 500 "$work/app.log")"
+  sleep 1
+  # the time read-out at the canvas's top: it changes with every frame while the scene plays
+  readout=300x24+370+20
+  # Space plays; then bursts of ten wheel steps (1.2 times each) about the body's start on the
+  # circle: 50 in (past the closest zoom, 1e5 px/m), 120 out (past the farthest, 1e-3 px/m), 70
+  # in again
+  xdotool mousemove --sync 845 212 click 1 key space
+  sleep 1
+  shot before
+  peak_kb() { awk '/VmHWM/ { print $2 }' "/proc/${pids[1]}/status"; }
+  # the program's own CPU time [s] (user and system), which the machine's other work does not
+  # inflate as it does the wall time
+  cpu_s() { awk -v hz="$(getconf CLK_TCK)" '{ print ($14 + $15) / hz }' "/proc/${pids[1]}/stat"; }
+  bursts=0
+  slowest=0
+  for direction in 4 4 4 4 4 5 5 5 5 5 5 5 5 5 5 5 5 4 4 4 4 4 4 4; do
+    before_cpu=$(cpu_s)
+    xdotool click --repeat 10 --delay 5 "$direction"
+    shot "burst$bursts"
+    # the program answers: the read-out changes once it has drawn a frame after the burst
+    for _ in $(seq 240); do
+      shot "after$bursts"
+      more_than "$(differ "burst$bursts" "after$bursts" "$readout")" 0 && break
+      sleep 0.25
+    done
+    more_than "$(differ "burst$bursts" "after$bursts" "$readout")" 0 ||
+      fail "burst $bursts: the canvas stopped"
+    used=$(awk -v a="$before_cpu" -v b="$(cpu_s)" 'BEGIN { print b - a }')
+    more_than "$used" "$slowest" && slowest=$used
+    echo "burst $bursts (button $direction): $used s of CPU"
+    kill -0 "${pids[1]}" || fail "the program ended at burst $bursts: $(head -c 500 "$work/app.log")"
+    bursts=$((bursts + 1))
+  done
+  peak=$(peak_kb)
+  echo "zoomed in and out in $bursts bursts while playing: at most $slowest s of CPU a burst, peak resident memory $((peak / 1024)) MB"
+  # ten wheel steps, each drawing the layers anew, and the frames played meanwhile
+  more_than "$slowest" 5 && fail "a burst of ten wheel steps took $slowest s of CPU"
+  [ "$peak" -lt 1048576 ] || fail "peak resident memory $((peak / 1024)) MB, over 1 GB"
+  if grep -E "QWidget|QLayout|QPainter|Segmentation|terminate|non-finite" "$work/app.log"; then
+    fail "warnings on stderr"
+  fi
   ;;
 *)
   fail "unknown case"

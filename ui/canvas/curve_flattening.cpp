@@ -45,8 +45,7 @@ constexpr double kDropFraction = 0.25;
 void pushVisible(FlatCurve& out, const Sample& s, bool withKappa, const FlattenLimits& limits) {
     if (!out.points.empty()) {
         const QPointF d = s.point - out.points.back();
-        const double merge = limits.merge > 0 ? limits.merge : kDropFraction * limits.tolerance;
-        if (std::hypot(d.x(), d.y()) < merge)
+        if (std::hypot(d.x(), d.y()) < kDropFraction * limits.tolerance)
             return;
     }
     push(out, s, withKappa);
@@ -77,6 +76,8 @@ double resolution(QPointF a, QPointF b) {
 template <class Eval>
 void subdivide(FlatCurve& out, const Eval& f, bool withKappa, double a, double b, const Sample& sa,
                const Sample& sb, FlattenLimits& limits, int depth) {
+    if (limits.stopped)
+        return;
     const double m = 0.5 * (a + b);
     const Sample sm = f(m);
     const QPointF chord = 0.5 * (sa.point + sb.point);
@@ -90,11 +91,17 @@ void subdivide(FlatCurve& out, const Eval& f, bool withKappa, double a, double b
             return;
         }
         limits.exceeded = true;
+        if (limits.truncate) {
+            limits.stopped = true; // the curve ends at sa
+            return;
+        }
     }
-    // the midpoint is kept too: it is computed already and halves the chord's error again;
-    // through the seeds alone (an infinite tolerance), only the seeds
-    if (std::isfinite(limits.tolerance))
-        pushVisible(out, sm, withKappa, limits);
+    if (limits.truncate && out.points.size() >= limits.budget) {
+        limits.exceeded = limits.stopped = true; // the curve ends at sa
+        return;
+    }
+    // the midpoint is kept too: it is computed already and halves the chord's error again
+    pushVisible(out, sm, withKappa, limits);
     pushVisible(out, sb, withKappa, limits);
 }
 
@@ -109,6 +116,8 @@ void flattenInto(FlatCurve& out, const std::function<QPointF(double)>& f, double
 FlatCurve flattenPath(const Path& path, FlattenLimits& limits) {
     FlatCurve out;
     for (const PathPiece& piece : path.pieces()) {
+        if (limits.stopped)
+            break;
         if (piece.kind == PathPiece::Kind::Pivot) {
             push(out, Sample{{piece.x, piece.y}, piece.s0, 0}, true);
             continue;
@@ -119,14 +128,14 @@ FlatCurve flattenPath(const Path& path, FlattenLimits& limits) {
             return Sample{{n.x, n.y}, piece.s0 + n.s, piece.direction * n.kappa};
         };
         push(out, sample(nodes.front()), true);
-        for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+        for (std::size_t k = 0; k + 1 < nodes.size() && !limits.stopped; ++k) {
             // within panel k by xi in [-1, 1]: the body's pose is read the same way
             auto eval = [&](double xi) { return sample(table.interpolatedAt(int(k), xi)); };
             subdivide(out, eval, true, -1, 1, sample(nodes[k]), sample(nodes[k + 1]), limits,
                       kMaxHalvings);
         }
         // a piece's last point is kept: the next piece (a pivot, a cusp) starts there
-        if (!(out.points.back() == QPointF(nodes.back().x, nodes.back().y)))
+        if (!limits.stopped && !(out.points.back() == QPointF(nodes.back().x, nodes.back().y)))
             push(out, sample(nodes.back()), true);
     }
     // arc length through a piece's interpolants: kept non-decreasing for countUpTo
@@ -143,7 +152,7 @@ FlatCurve flattenInTime(const std::function<QPointF(double)>& f, double tEnd, Fl
     QPointF fa = f(0);
     out.param.push_back(0);
     out.points.push_back(fa);
-    for (int i = 1; i < seeds; ++i) {
+    for (int i = 1; i < seeds && !limits.stopped; ++i) {
         const double b = i + 1 == seeds ? tEnd : tEnd * i / (seeds - 1);
         const QPointF fb = f(b);
         flattenInto(out, f, a, b, fa, fb, limits);
@@ -151,7 +160,7 @@ FlatCurve flattenInTime(const std::function<QPointF(double)>& f, double tEnd, Fl
         fa = fb;
     }
     // the last point is the trail's end at tEnd
-    if (!(out.points.back() == fa)) {
+    if (!limits.stopped && !(out.points.back() == fa)) {
         out.param.push_back(tEnd);
         out.points.push_back(fa);
     }
@@ -170,7 +179,7 @@ FlatCurve flattenThroughKnots(const std::vector<TrailKnot>& knots, double tEnd,
     const double intervals = double(knots.size());
     const int maxDepth = std::clamp(
         int(std::floor(std::log2(400.0 * (1 << kMaxHalvings) / intervals))), 1, kMaxHalvings);
-    for (std::size_t k = 0; k + 1 < knots.size() && knots[k].t < tEnd; ++k) {
+    for (std::size_t k = 0; k + 1 < knots.size() && knots[k].t < tEnd && !limits.stopped; ++k) {
         const TrailKnot& a = knots[k];
         const TrailKnot& b = knots[k + 1];
         const double h = b.t - a.t;
@@ -199,18 +208,21 @@ FlatCurve flattenThroughKnots(const std::vector<TrailKnot>& knots, double tEnd,
 FlatCurve flattenWithinBudget(const std::function<FlatCurve(FlattenLimits&)>& build,
                               FlattenLimits& limits) {
     limits.budget = kPointBudget;
+    const double asked = limits.tolerance;
     for (int attempt = 0;; ++attempt) {
         limits.exceeded = false;
         FlatCurve out = build(limits);
-        // the last attempt keeps what it has: the seeds everywhere, refined while the budget
-        // lasted
-        if ((!limits.exceeded && out.points.size() <= kPointBudget) || attempt == kCoarserTries)
+        if (attempt == kCoarserTries) {
+            // the last attempt ends the curve where the budget ran out
+            out.truncated = limits.stopped;
             return out;
-        // 16 times coarser, and then only the seeds (the panel ends, the evenly spaced times),
-        // still merged as at the coarser tolerance
+        }
+        if (!limits.exceeded && out.points.size() <= kPointBudget)
+            return out;
+        // 16 times coarser, and then the tolerance asked for, as far as the budget goes
         if (attempt + 1 == kCoarserTries) {
-            limits.merge = kDropFraction * limits.tolerance;
-            limits.tolerance = std::numeric_limits<double>::infinity();
+            limits.tolerance = asked;
+            limits.truncate = true;
         } else {
             limits.tolerance *= 16;
         }

@@ -19,21 +19,29 @@ struct FlatCurve {
     std::vector<double> param;
     std::vector<QPointF> points;
     std::vector<double> kappa; ///< a path's only
+    /// The budget ended the curve at its last point: what follows is not drawn.
+    bool truncated = false;
     /// How many points have param <= limit.
     std::size_t countUpTo(double limit) const;
+    /// Whether the curve is drawn up to limit, so that a body there joins its last point.
+    bool reaches(double limit) const {
+        return !truncated || (!param.empty() && limit <= param.back());
+    }
 };
 
 /// How far a curve is refined: to tolerance [m] where it can be seen (inside `seen`, world
 /// coordinates; a null rectangle is everywhere), only to its seeds elsewhere, and to at most
-/// `budget` points in all. A point closer than `merge` to the one before is left out.
+/// `budget` points in all. A point closer than a quarter of tolerance to the one before is left
+/// out.
 /// `exceeded` is set when the budget stopped a refinement.
 struct FlattenLimits {
     double tolerance = 0;
     QRectF seen;
     std::size_t budget = std::numeric_limits<std::size_t>::max();
-    /// a point closer than this to the one before is left out [m] (0: a quarter of tolerance)
-    double merge = 0;
     bool exceeded = false;
+    /// At the budget the curve ends (`stopped` is then set) instead of going on through its seeds.
+    bool truncate = false;
+    bool stopped = false;
 };
 
 /// Appends f on (a, b] to out: the chord [a, b] is halved while the curve's midpoint lies more
@@ -55,8 +63,11 @@ FlatCurve flattenThroughKnots(const std::vector<TrailKnot>& knots, double tEnd,
                               FlattenLimits& limits);
 
 /// build(limits) made within kPointBudget points: at the tolerance asked for when it fits, else
-/// at a tolerance 16 times coarser, else through its seeds alone (a curve too dense for the
-/// screen is drawn coarser, never stalls a frame). The tolerance used is left in limits.
+/// at a tolerance 16 times coarser, else at the tolerance asked for up to where the budget ends it
+/// (FlatCurve::truncated): a curve too dense for the screen, such as hundreds of laps of one
+/// circle, is drawn exactly as far as the budget goes and never stalls a frame. Its seeds alone
+/// would be chords across the view (a 600-lap circle drawn as heptagons, a ring 20 px wide).
+/// The tolerance used is left in limits.
 FlatCurve flattenWithinBudget(const std::function<FlatCurve(FlattenLimits&)>& build,
                               FlattenLimits& limits);
 
@@ -76,6 +87,11 @@ class CanvasCurves {
     /// exact everywhere).
     void update(const std::shared_ptr<const Solution>& solution, double devicePxPerMetre,
                 const QRectF& view = {});
+    /// Whether the budget ended one of the body's curves (the path, a trail) at this scale.
+    bool truncated() const {
+        return m_path.truncated || m_free.truncated || m_vak.truncated || m_openLoop.truncated ||
+               m_closedLoop.truncated;
+    }
     const FlatCurve& path() const { return m_path; }
     const FlatCurve& free() const { return m_free; }
     const FlatCurve& vakonomic() const { return m_vak; }

@@ -60,7 +60,8 @@ void paintPinnedRuns(QPainter& p, PinSet& pins, CanvasCurves& curves, const QTra
         const std::size_t count = path.countUpTo(m.s);
         for (std::size_t k = 0; k < count; ++k)
             line << world.map(path.points[k]);
-        line << world.map(QPointF(m.x, m.y));
+        if (path.reaches(m.s))
+            line << world.map(QPointF(m.x, m.y));
         strokePolylineWithin(p, line, pen, paintableArea(p)); // clipped at any zoom
         p.save();
         p.setTransform(world, true);

@@ -73,7 +73,8 @@ void SceneCanvas::paintTrails(QPainter& p, const MotionSample& now, const QRegio
         line.reserve(qsizetype(n) + 1);
         for (std::size_t i = 0; i < n; ++i)
             line << world.map(curve.points[i]);
-        line << world.map(trail.end);
+        if (curve.reaches(trail.limit)) // a curve the budget ended does not jump to the body
+            line << world.map(trail.end);
         // a frame repaints a small area: only the segments near it are stroked
         strokePolylineWithin(p, line, trail.pen, area);
     }
@@ -331,7 +332,8 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     line.reserve(qsizetype(n) + 1);
     for (std::size_t i = 0; i < n; ++i)
         line << world.map(controlled.curve->points[i]);
-    line << world.map(controlled.end);
+    if (controlled.curve->reaches(controlled.limit))
+        line << world.map(controlled.end);
     const qreal dpr = devicePixelRatioF();
     QPoint origin;
     const QImage* layer = dpr == std::round(dpr) ? &pathLayer(origin) : nullptr;
@@ -394,11 +396,14 @@ void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
     }
     f.setPointSizeF(9 * m_look.style.lineScale);
     p.setFont(f);
-    p.drawText(QRectF(8, 6, width() - 16, topBandPx()), Qt::AlignLeft,
-               tr("t = %1 s of %2 s    scale %3 px/m")
-                   .arg(m_time, 0, 'f', 2)
-                   .arg(tEnd, 0, 'f', 2)
-                   .arg(m_view.scale(), 0, 'g', 3));
+    QString readout = tr("t = %1 s of %2 s    scale %3 px/m")
+                          .arg(m_time, 0, 'f', 2)
+                          .arg(tEnd, 0, 'f', 2)
+                          .arg(m_view.scale(), 0, 'g', 3);
+    // said, not hidden: a curve too dense for a frame at this zoom ends where its budget did
+    if (m_curves.truncated())
+        readout += QStringLiteral("    ") + tr("curves drawn in part at this zoom");
+    p.drawText(QRectF(8, 6, width() - 16, topBandPx()), Qt::AlignLeft, readout);
 }
 
 } // namespace chaplygin::ui

@@ -113,6 +113,7 @@ class CurveFlatteningTest : public QObject {
     void knifePointOnDrawnPathAtEveryFrame();
     void trailsWithinQuarterPixelOfTheirMotion();
     void pushedTrailsWithinQuarterPixelOfTheirMotion();
+    void curveTooDenseForTheBudgetEndsExactly();
 };
 
 void CurveFlatteningTest::drawnPathWithinQuarterPixelOfExactPath() {
@@ -237,6 +238,46 @@ void CurveFlatteningTest::pushedTrailsWithinQuarterPixelOfTheirMotion() {
             QVERIFY(exactOff * scale <= CanvasCurves::kTolerancePx);
         }
     }
+}
+
+void CurveFlatteningTest::curveTooDenseForTheBudgetEndsExactly() {
+    // 600 laps of the unit circle in time (the long horizon's controlled body) at 2.7e3 device
+    // px/m, seen near (1, 0): no tolerance fits the budget, so the curve is drawn at the one
+    // asked for as far as the budget goes, every point and chord within it of the circle, and
+    // ends there; its seeds alone were chords of 12.5 rad, straight across the view
+    const double pi = std::numbers::pi;
+    const double tEnd = 1200 * pi;
+    auto circle = [](double t) { return QPointF(std::cos(t), std::sin(t)); };
+    const double tolerance = CanvasCurves::kTolerancePx / 4096;
+    FlattenLimits limits{tolerance, QRectF(0.6, -0.2, 0.6, 0.4)};
+    const FlatCurve flat = flattenWithinBudget(
+        [&](FlattenLimits& l) { return flattenInTime(circle, tEnd, l); }, limits);
+    QVERIFY(flat.truncated);
+    QVERIFY2(flat.points.size() <= kPointBudget + 1,
+             qPrintable(QString::number(flat.points.size())));
+    QCOMPARE(limits.tolerance, tolerance);
+    QVERIFY(flat.param.back() > 0 && flat.param.back() < tEnd);
+    QVERIFY(flat.reaches(flat.param.back()));
+    QVERIFY(!flat.reaches(std::nextafter(flat.param.back(), tEnd)));
+    // within the seen region, chords within the tolerance of the circle (the sagitta of a chord
+    // of the unit circle subtending angle d is 1 - cos(d/2)); elsewhere only the seeds, 12.5 rad
+    // apart, as before
+    int seenChords = 0;
+    for (std::size_t i = 1; i < flat.points.size(); ++i) {
+        const QPointF a = flat.points[i - 1], b = flat.points[i];
+        if (!limits.seen.contains(a) || !limits.seen.contains(b))
+            continue;
+        ++seenChords;
+        const double angle = flat.param[i] - flat.param[i - 1];
+        QVERIFY2(1 - std::cos(angle / 2) <= tolerance * (1 + 1e-9),
+                 qPrintable(
+                     QStringLiteral("a chord of %1 rad at t = %2").arg(angle).arg(flat.param[i])));
+        for (QPointF q : {a, b})
+            QVERIFY(std::abs(std::hypot(q.x(), q.y()) - 1) < 1e-12);
+    }
+    // the laps drawn lie over the ones left out: the picture is the whole curve's
+    QVERIFY2(seenChords > 100 * 10, qPrintable(QString::number(seenChords)));
+    QVERIFY(flat.param.back() > 100 * 2 * pi);
 }
 
 QTEST_GUILESS_MAIN(CurveFlatteningTest)
