@@ -1919,6 +1919,10 @@ O que os estudantes devem observar…</translation>
         <source>vakonomic body, equation (21)</source>
         <translation>corpo vakonômico, equação (21)</translation>
     </message>
+    <message>
+        <source>curves drawn in part at this zoom</source>
+        <translation>curvas desenhadas em parte neste zoom</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::SceneDocument</name>
