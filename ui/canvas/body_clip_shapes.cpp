@@ -19,6 +19,9 @@ const std::pair<QPainterPath, QPainterPath>& BodyClipShapes::of(const Solution& 
         QPainterPathStroker pen;
         pen.setWidth(penPx / scale);
         QPainterPath ring = pen.createStroke(shape);
+        // united in pixels, where Qt flattens the curves to its tolerance, and brought back
+        const QTransform toPixels = QTransform::fromScale(scale, scale);
+        m_covered = toPixels.inverted().map(toPixels.map(shape).united(toPixels.map(ring)));
         m_shapes = {std::move(shape), std::move(ring)};
     }
     return m_shapes;

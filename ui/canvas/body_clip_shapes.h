@@ -16,11 +16,15 @@ class BodyClipShapes {
     /// For the solution's body at `scale` [px/m] with an outline pen of penPx [px].
     const std::pair<QPainterPath, QPainterPath>& of(const Solution& solution, double scale,
                                                     double penPx);
+    /// The shape and its ring as one outline without overlaps (after `of`): one fill per frame
+    /// instead of two, the ring's curves flattened at the scale's pixels.
+    const QPainterPath& covered() const { return m_covered; }
 
   private:
     const Solution* m_solution = nullptr;
     double m_scale = 0, m_penPx = 0;
     std::pair<QPainterPath, QPainterPath> m_shapes;
+    QPainterPath m_covered;
 };
 
 } // namespace chaplygin::ui

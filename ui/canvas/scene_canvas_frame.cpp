@@ -311,8 +311,12 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     const QTransform world = worldTransform();
     const auto& [shape, ring] =
         m_bodyClips.of(*m_document->solution(), m_view.scale(), 3 * m_look.style.lineScale + 2);
-    // each body's area and the ring its outline's pen covers, in pixels
-    std::vector<std::pair<QPainterPath, QPainterPath>> clips;
+    const QPainterPath& covered = m_bodyClips.covered();
+    // each body's area and the ring its outline's pen covers, in pixels, and both as one
+    struct Clip {
+        QPainterPath area, outline, both;
+    };
+    std::vector<Clip> clips;
     auto add = [&](double x, double y, double phi) {
         QTransform pose;
         pose.translate(x, y);
@@ -321,7 +325,7 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
         QPainterPath mapped = map.map(shape);
         if (!mapped.boundingRect().intersects(QRectF(rect())))
             return;
-        clips.emplace_back(std::move(mapped), map.map(ring));
+        clips.push_back({std::move(mapped), map.map(ring), map.map(covered)});
     };
     forEachShownPose(now, m_look.vakonomic, drawsOpenLoop(), drawsClosedLoop(), add);
     if (clips.empty())
@@ -339,7 +343,7 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     const QImage* layer = dpr == std::round(dpr) ? &pathLayer(origin) : nullptr;
     m_pathOverBodiesFromLayer = layer && !layer->isNull();
     // the band and the controlled trail up to now on it, then the knife at P
-    for (const auto& [area, outline] : clips) {
+    for (const auto& [area, outline, both] : clips) {
         const QRect box =
             area.boundingRect().united(outline.boundingRect()).toAlignedRect() & rect();
         // the controlled trail lies on the band: where no band is, there is nothing to draw
@@ -359,7 +363,7 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
         }
         // the layer's band within the box (or the band drawn there, at a view's first paint)
         // and the trail on it, in the body's area or under its outline
-        drawMaskedLayer(p, *layer, origin, box, {&area, &outline}, [&](QPainter& c) {
+        drawMaskedLayer(p, *layer, origin, box, {&both}, [&](QPainter& c) {
             if (layer->isNull())
                 paintPath(c, world, QRectF(box));
             strokePolylineWithin(c, line, controlled.pen, QRegion(box));
