@@ -101,10 +101,27 @@ std::vector<PathPiece> singleCurve(std::shared_ptr<const Curve> curve, std::size
 } // namespace
 
 std::vector<PathPiece> piecesThroughCusps(const std::shared_ptr<const Curve>& curve,
-                                          int firstDirection, std::size_t halvingBudget) {
+                                          int firstDirection, std::size_t halvingBudget,
+                                          CuspAtEnds atEnds) {
     std::vector<Cusp> cusps = findCusps(*curve);
-    if (cusps.empty() && firstDirection > 0)
+    if (cusps.empty() && firstDirection > 0 && !atEnds.start && !atEnds.end)
         return singleCurve(curve, halvingBudget);
+    // r' = 0 at an end: the limits of findCusps there, r'' != 0 (docs/physics.md §3); a cusp
+    // found within rounding of that end is the same one
+    const double u0 = curve->u0(), u1 = curve->u1(), near = 1e-9 * (u1 - u0);
+    auto cuspAt = [&](double u) {
+        const CurvePoint p = curve->eval(u);
+        const double accel = std::hypot(p.ddx, p.ddy);
+        return Cusp{u, accel, (p.ddx * p.dddy - p.ddy * p.dddx) / (2 * accel * accel)};
+    };
+    std::optional<Cusp> startCusp, endCusp;
+    if (atEnds.start)
+        startCusp = cuspAt(u0);
+    if (atEnds.end)
+        endCusp = cuspAt(u1);
+    std::erase_if(cusps, [&](const Cusp& c) {
+        return (atEnds.start && c.u <= u0 + near) || (atEnds.end && c.u >= u1 - near);
+    });
     std::vector<PathPiece> pieces;
     double ua = curve->u0(), psiEnd = 0;
     for (std::size_t k = 0; k <= cusps.size(); ++k) {
@@ -112,8 +129,12 @@ std::vector<PathPiece> piecesThroughCusps(const std::shared_ptr<const Curve>& cu
         PathTable::CuspEnds ends;
         if (k > 0)
             ends.start = cusps[k - 1];
+        else
+            ends.start = startCusp;
         if (k < cusps.size())
             ends.end = cusps[k];
+        else
+            ends.end = endCusp;
         PathPiece piece;
         piece.table = std::make_shared<const PathTable>(std::make_shared<SubCurve>(curve, ua, ub),
                                                         std::move(ends), halvingBudget);

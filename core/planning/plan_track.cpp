@@ -11,6 +11,8 @@ namespace {
 
 using std::numbers::pi;
 
+constexpr double kAtCusp = 1e-12; // |sin Psi0| below which the track starts at a cusp
+
 void checkTrack(const GeodesicTrack& g) {
     auto finite = [](double v, const char* name) {
         if (!std::isfinite(v))
@@ -53,24 +55,36 @@ PathSource planTrack(const PlanRequest& request, const PlannedGeodesic& motion) 
 std::shared_ptr<const Path> buildGeodesicTrack(const GeodesicTrack& track,
                                                std::size_t halvingBudget) {
     checkTrack(track);
-    const double sinPsi0 = std::fabs(track.psi0) == pi ? 0.0 : std::sin(track.psi0);
-    if (sinPsi0 == 0 && track.lambda0 == 0) {
+    GeodesicTrack g = track;
+    // a start within rounding of a cusp (the planner's Psi0 = 1e-17) starts at the cusp: a cusp
+    // that close would lie before findCusps' first sample
+    if (std::fabs(std::sin(g.psi0)) < kAtCusp)
+        g.psi0 = std::fabs(g.psi0) < pi / 2 ? 0.0 : pi;
+    const double sinPsi0 = g.psi0 == pi ? 0.0 : std::sin(g.psi0);
+    if (sinPsi0 == 0 && g.lambda0 == 0) {
         // Psi stays at 0 (turning left) or pi (right): a pivot about P by length/b
         PathPiece pivot;
         pivot.kind = PathPiece::Kind::Pivot;
-        pivot.x = track.x;
-        pivot.y = track.y;
-        pivot.phiFrom = track.phi;
-        pivot.phiTo = track.phi + std::copysign(track.length / track.b, std::cos(track.psi0));
+        pivot.x = g.x;
+        pivot.y = g.y;
+        pivot.phiFrom = g.phi;
+        pivot.phiTo = g.phi + std::copysign(g.length / g.b, std::cos(g.psi0));
         return std::make_shared<const Path>(std::vector<PathPiece>{pivot});
     }
-    std::vector<PathPiece> pieces = piecesThroughCusps(std::make_shared<GeodesicTrackCurve>(track),
-                                                       sinPsi0 < 0 ? -1 : 1, halvingBudget);
+    // the first stretch backs up when sdot < 0 at the start, or, starting at a cusp (sdot = 0),
+    // when sddot = v_T cos Psi0 Psidot0 < 0
+    const double leaving = sinPsi0 != 0 ? sinPsi0 : std::cos(g.psi0) * g.lambda0;
+    // the motion may end at a cusp too (the sideways shift's Psi0 = pi rotation)
+    const auto curve = std::make_shared<GeodesicTrackCurve>(g);
+    const UnitGeodesic unit(g.psi0, g.lambda0);
+    const bool endsAtCusp = std::fabs(unit.at(g.length / g.b).sinPsi) < kAtCusp;
+    std::vector<PathPiece> pieces =
+        piecesThroughCusps(curve, leaving < 0 ? -1 : 1, halvingBudget, {sinPsi0 == 0, endsAtCusp});
     // the tables' headings are atan2's: turn every stretch by the same 2 pi n so that the body
     // starts at the track's phi
     const PathPiece& first = pieces.front();
     const double start = first.table->nodes().front().phi + first.phiOffset;
-    const double shift = 2 * pi * std::round((track.phi - start) / (2 * pi));
+    const double shift = 2 * pi * std::round((g.phi - start) / (2 * pi));
     for (PathPiece& p : pieces)
         p.phiOffset += shift;
     return std::make_shared<const Path>(std::move(pieces));

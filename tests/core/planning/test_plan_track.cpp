@@ -168,6 +168,16 @@ TEST(PlanTrack, SidewaysShiftBothOptima) {
     EXPECT_EQ(optimal, 2);
     EXPECT_EQ(backingFirst, 1);
     EXPECT_GT(check.cusps, 0);
+    // the next motions include rotations that start and end at a cusp (Psi0 = pi or 0,
+    // sdot = 0 at both ends)
+    int atCusp = 0;
+    for (const PlannedGeodesic& g : plan.geodesics) {
+        if (g.optimal || g.t > 6.2)
+            continue;
+        atCusp += std::fabs(g.psi0) == pi && g.family == GeodesicFamily::Rotation;
+        checkTracking(scene, r, g, check);
+    }
+    EXPECT_GE(atCusp, 3);
 }
 
 TEST(PlanTrack, PivotByPiEitherWay) {
