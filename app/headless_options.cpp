@@ -305,6 +305,7 @@ void readOutputs(const OptionValues& given, HeadlessOptions& o) {
         if (!(o.planHorizon > 0))
             throw InputError("--plan-horizon", "must be > 0 [s], not " + *horizon);
     }
+    o.trackPlan = given.has("--track-plan");
     if (auto choice = given.value("--plan-choice"))
         o.planChoice = parseWholeNumber(*choice, "--plan-choice", 1, 1e6, "from 1 on");
     o.pathGiven = given.has("--preset") || given.has("--scene") || given.has("--path") ||
@@ -349,10 +350,11 @@ HeadlessOptions parseOptions(const std::vector<std::string>& args) {
                          : o.withPlots         ? "--with-plots"
                                                : "--body",
                          "applies only to --animation");
-    if (!o.planTo && (o.planFrom || given.has("--plan-horizon") || o.planChoice))
+    if (!o.planTo && (o.planFrom || given.has("--plan-horizon") || o.planChoice || o.trackPlan))
         throw InputError(o.planFrom                    ? "--plan-from"
                          : given.has("--plan-horizon") ? "--plan-horizon"
-                                                       : "--plan-choice",
+                         : o.planChoice                ? "--plan-choice"
+                                                       : "--track-plan",
                          "applies only to --plan-to X,Y,PHI");
     if (o.planTo && (o.sweep || o.workPrecision || !o.animationPath.empty() || !o.plotsDir.empty()))
         throw InputError("--plan-to", "plans alone or beside a plain run (--csv, --summary); "

@@ -33,6 +33,7 @@ struct HeadlessOptions {
     std::optional<Pose> planFrom;   ///< --plan-from X,Y,PHI (default: the path's start, or 0)
     double planHorizon = 0;         ///< --plan-horizon T [s]; 0: the planner's default
     int planChoice = 0;             ///< --plan-choice N: the CSV's motion, 1 = first listed
+    bool trackPlan = false;         ///< --track-plan: the chosen motion's track is the path
     bool pathGiven = false;         ///< --preset, --scene, --path or --points was given
 };
 

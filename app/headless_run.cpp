@@ -6,6 +6,7 @@
 #include "headless_options.h"
 #include "lab/parameter_sweep.h"
 #include "lab/work_precision.h"
+#include "planning/plan_track.h"
 #include "plots/plot_export.h"
 #include "plots/sweep_plot.h"
 #include "plots/work_precision_plot.h"
@@ -98,19 +99,40 @@ int solvePlan(const HeadlessOptions& o) {
         throw InputError("--plan-to", "no genuine vakonomic motion reaches the target within "
                                       "the horizon of " +
                                           formatNumber(plan.horizon) + " s (see --plan-horizon)");
+    // the chosen motion: the N-th listed, or the first optimal one
+    std::size_t chosen = 0;
+    if (o.planChoice > static_cast<int>(plan.geodesics.size()))
+        throw InputError("--plan-choice", "there are " + std::to_string(plan.geodesics.size()) +
+                                              " motions within the horizon, not " +
+                                              std::to_string(o.planChoice));
+    if (o.planChoice > 0)
+        chosen = static_cast<std::size_t>(o.planChoice - 1);
+    else
+        while (chosen + 1 < plan.geodesics.size() && !plan.geodesics[chosen].optimal)
+            ++chosen;
+    const PlannedGeodesic& g = plan.geodesics[chosen];
+    if (o.trackPlan) {
+        // the usual run on the motion's knife track: the controlled body is the genuine
+        // vakonomic one (docs/physics.md §10)
+        if (g.family == GeodesicFamily::Rest)
+            throw InputError("--track-plan", "the target is the start (t = 0): there is no "
+                                             "track to follow");
+        HeadlessOptions tracked = o;
+        tracked.scene.path = planTrack(request, g);
+        tracked.scene.preset.clear();
+        tracked.scene.tEnd.reset();
+        tracked.scene.perturbation.reset();
+        tracked.scene.pins.clear();
+        const Solution run = Solution::compute(tracked.scene);
+        checkTimes(run, tracked);
+        if (!o.csvPath.empty())
+            writeFileAtomically(o.csvPath, formatCsv(rowsFor(run, tracked)));
+        if (!o.summaryPath.empty() || o.csvPath.empty())
+            writeFileAtomically(o.summaryPath.empty() ? "-" : o.summaryPath,
+                                formatPlanSummary(request, plan, &run));
+        return 0;
+    }
     if (!o.csvPath.empty()) {
-        // the chosen motion: the N-th listed, or the first optimal one
-        std::size_t chosen = 0;
-        if (o.planChoice > static_cast<int>(plan.geodesics.size()))
-            throw InputError("--plan-choice", "there are " + std::to_string(plan.geodesics.size()) +
-                                                  " motions within the horizon, not " +
-                                                  std::to_string(o.planChoice));
-        if (o.planChoice > 0)
-            chosen = static_cast<std::size_t>(o.planChoice - 1);
-        else
-            while (chosen + 1 < plan.geodesics.size() && !plan.geodesics[chosen].optimal)
-                ++chosen;
-        const PlannedGeodesic& g = plan.geodesics[chosen];
         std::vector<double> times = o.times.value_or(std::vector<double>{});
         for (double t : times)
             if (t < 0 || t > g.t)

@@ -144,6 +144,11 @@ const std::array kOptions = {
     OptionSpec{.name = "--plan-choice", .argument = "N",
                .help = "--csv writes the N-th listed motion (default: the first optimal one)",
                .modes = Headless, .section = S::Output},
+    OptionSpec{.name = "--track-plan", .argument = "",
+               .help = "the chosen motion's knife track becomes the path and the usual run\n"
+                       "follows: the controlled body tracking it is the genuine vakonomic\n"
+                       "body (docs/physics.md §10)",
+               .modes = Headless, .section = S::Output},
     OptionSpec{.name = "--plots", .argument = "DIR",
                .help = "the plots, as the app draws them",
                .modes = Headless, .section = S::Output},

@@ -14,6 +14,8 @@ void bindScene(pybind11::module_& m);
 void bindSolution(pybind11::module_& m);
 /// Scene.sweep, Scene.work_precision and the gallery's entries.
 void bindLab(pybind11::module_& m);
+/// plan(), Motion and Scene.from_plan (pose to pose).
+void bindPlan(pybind11::module_& m);
 
 /// A Python number as a double; throws InputError(where) for anything else.
 double numberArgument(pybind11::handle value, const std::string& where);

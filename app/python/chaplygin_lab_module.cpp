@@ -47,4 +47,5 @@ PYBIND11_MODULE(chaplygin_lab, m) {
     chaplygin::python::bindScene(m);
     chaplygin::python::bindSolution(m);
     chaplygin::python::bindLab(m);
+    chaplygin::python::bindPlan(m);
 }

@@ -72,15 +72,16 @@ ControlState controlOnCurve(const ControlParams& p, double kappa, double dkappa,
 }
 
 ControlState controlAtCusp(const ControlParams& p, double phi, double psi, double turnRate,
-                           double accel) {
+                           double accel, int slope) {
     const double m = p.system.mass, a = p.system.a, b = p.system.b;
     ControlState c;
     c.psi = psi;
     c.sdot = 0;
     c.phidot = std::copysign(p.speed / b, turnRate);
-    // Psi = atan2(sigma, b phi') with sigma = sdot/udot passing 0 at slope -|r''|: dPsi/du =
-    // -|r''|/(b phi'), and du/dt = v_T/(b |phi'|)
-    c.psidot = -accel * p.speed / (b * b * turnRate * std::fabs(turnRate));
+    // Psi = atan2(sigma, b phi') with sigma = sdot/udot passing 0 at slope -|r''| (forwards to
+    // backing up) or +|r''| (back to forwards): dPsi/du = slope |r''|/(b phi'), and
+    // du/dt = v_T/(b |phi'|)
+    c.psidot = slope * accel * p.speed / (b * b * turnRate * std::fabs(turnRate));
     c.sddot = b * c.phidot * c.psidot;
     c.phiddot = 0;
     c.chi = c.psi - (a / b) * phi;

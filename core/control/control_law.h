@@ -48,8 +48,10 @@ ControlState controlOnCurve(const ControlParams& p, double kappa, double dkappa,
 
 /// The control at a cusp (Energy mode): sdot = 0, phidot = sign(dphi/du) v_T/b, and
 /// Psidot = (dPsi/du)(du/dt) = -|r''| v_T/(b^2 dphi/du |dphi/du|) (docs/physics.md §3).
+/// `slope` is the sign of d sigma/du there: -1 from driving forwards to backing up, +1 from
+/// backing up to driving forwards (Psidot changes sign with it).
 ControlState controlAtCusp(const ControlParams& p, double phi, double psi, double turnRate,
-                           double accel);
+                           double accel, int slope = -1);
 
 /// The control while pivoting in place at a corner (turn > 0: left). Only Energy mode can pivot.
 ControlState controlAtPivot(const ControlParams& p, double phi, double turnSign);

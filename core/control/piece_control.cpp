@@ -16,7 +16,9 @@ ControlState controlOnPiece(const ControlParams& p, const PathPiece& piece, cons
                                                            std::fabs(node.u - ends.end->u));
         const Cusp& cusp = start ? *ends.start : *ends.end;
         const double psi = psiAtCusp(cusp, piece.direction) + piece.psiOffset;
-        return controlAtCusp(p, heading, psi, cusp.turnRate, cusp.accel);
+        // sigma falls through 0 into a backing stretch and out of one, rises otherwise
+        const int slope = start ? piece.direction : -piece.direction;
+        return controlAtCusp(p, heading, psi, cusp.turnRate, cusp.accel, slope);
     }
     // the body's curvature dphi/ds with s along its heading: the table's, reversed when backing
     return controlOnCurve(p, piece.direction * node.kappa, node.dkappa, heading, piece.direction,

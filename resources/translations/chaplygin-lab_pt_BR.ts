@@ -980,6 +980,18 @@ realimentação: %2</translation>
         <source>The genuine vakonomic system leaves the circle</source>
         <translation>O sistema vakonômico genuíno deixa o círculo</translation>
     </message>
+    <message>
+        <source>Park sideways by b: two mirror optima</source>
+        <translation>Estacionar de lado por b: dois ótimos espelhados</translation>
+    </message>
+    <message>
+        <source>Pivot by π: the Maxwell point</source>
+        <translation>Girar de π: o ponto de Maxwell</translation>
+    </message>
+    <message>
+        <source>A geodesic past its cut time</source>
+        <translation>Uma geodésica além do seu tempo de corte</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::HelpWindow</name>

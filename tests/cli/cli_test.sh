@@ -469,6 +469,48 @@ plan_csv)
   expect_err "--plan-choice: there are"
   [ ! -e "$work/q.csv" ] || fail "a CSV was written despite the error"
   ;;
+track_plan)
+  # --track-plan: the chosen motion's knife track is the path; the controlled body tracking it and
+  # the genuine vakonomic body coincide (x, y, phi, lambda) to 1e-8, agree with the planner's own
+  # closed-form CSV at the same times, and end on the target (docs/physics.md §10)
+  /usr/bin/python3 - "$exe" "$work" <<'PY' || fail "track plan"
+import csv, math, subprocess, sys
+exe, work = sys.argv[1], sys.argv[2]
+def rows(args):
+    out = work + "/t.csv"
+    r = subprocess.run([exe, "--headless", *args, "--samples", "81", "--csv", out],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, (args, r.stderr)
+    return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(open(out))]
+cases = [  # target, choice, extra arguments: libration and rotation through cusps, backing first,
+           # the sideways shift's two optima, pivoting by pi either way, the line, b != 1, a start
+           # away from the origin, the disk
+    ("1.5,0.8,1", None, []), ("-0.7,1.9,-2.4", None, []), ("-0.7,1.9,-2.4", "3", []),
+    ("2.5,-1,0.3", "2", []), ("0,1,0", "1", []), ("0,1,0", "2", []),
+    ("0,0,3.141592653589793", "1", []), ("0,0,3.141592653589793", "2", []),
+    ("-1.5,0,0", None, []), ("0.9,0.2,-1.3", None, ["--param", "b=0.35", "--param", "a=0.2",
+     "--vT", "2.5", "--plan-from", "0.4,-0.2,0.7"]),
+    ("1.2,0.6,1", None, ["--system", "disk", "--plan-from", "1,1,4"]),
+]
+worst = 0
+for to, choice, extra in cases:
+    args = ["--plan-to", to, *extra] + (["--plan-choice", choice] if choice else [])
+    tracked = rows(args + ["--track-plan"])
+    closed = rows(args)  # the same 81 times over the planned motion's t, to rounding
+    assert len(tracked) == 81 and len(closed) == 81
+    for r, c in zip(tracked, closed):
+        assert abs(r["t"] - c["t"]) <= 1e-14 * (1 + c["t"])
+        for a, v in (("x", "vak_x"), ("y", "vak_y"), ("phi", "vak_phi"), ("lambda", "vak_lambda")):
+            e = max(abs(r[a] - r[v]), abs(r[a] - c[v]), abs(r[v] - c[v]))
+            worst = max(worst, e)
+            assert e <= 1e-8, (to, choice, r["t"], a, r[a], r[v], c[v])
+    X, Y, PHI = map(float, to.split(","))
+    end = tracked[-1]
+    dphi = math.remainder(end["phi"] - PHI, 2 * math.pi)
+    assert abs(end["x"] - X) + abs(end["y"] - Y) + abs(dphi) <= 1e-8, (to, choice, end)
+print("worst", worst)
+PY
+  ;;
 *)
   fail "unknown case"
   ;;

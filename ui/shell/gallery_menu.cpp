@@ -19,6 +19,9 @@ namespace {
                       "The paper's printed branch reverses at inflections"),
     QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu",
                       "The genuine vakonomic system leaves the circle"),
+    QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu", "Park sideways by b: two mirror optima"),
+    QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu", "Pivot by \u03c0: the Maxwell point"),
+    QT_TRANSLATE_NOOP("chaplygin::ui::GalleryMenu", "A geodesic past its cut time"),
 };
 } // namespace
 

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 using namespace chaplygin;
@@ -159,5 +160,32 @@ TEST(GalleryScenes, AggressiveFeedbackOvershootsAndAtP3IsLost) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("leaves the chained form's domain"), std::string::npos)
             << e.what();
+    }
+}
+
+// The pose-to-pose scenes (docs/physics.md §10): each tracks a planned motion's knife track, its
+// controlled body ends on the target and moves as the genuine vakonomic body
+TEST(GalleryScenes, ParkingScenesEndOnTheirTargets) {
+    struct Case {
+        const char* name;
+        double x, y, phi, duration;
+    };
+    for (const Case& c : {Case{"park-sideways", 0, 1, 0, 3.340383019231},
+                          Case{"pivot-by-pi", 0, 0, std::numbers::pi, std::numbers::pi},
+                          Case{"past-cut-time", 2, 0, 0, 6.877058802592}}) {
+        const Solution s = Solution::compute(galleryEntry(c.name).scene);
+        EXPECT_NEAR(s.duration(), c.duration, 1e-11) << c.name;
+        const MotionSample end = s.at(s.tEnd());
+        const double error = std::fabs(end.x - c.x) + std::fabs(end.y - c.y) +
+                             std::fabs(std::remainder(end.phi - c.phi, 2 * std::numbers::pi));
+        EXPECT_LE(error, 1e-8) << c.name;
+        for (double t = 0; t <= s.tEnd(); t += s.tEnd() / 50) {
+            const MotionSample m = s.at(t);
+            EXPECT_LE(std::fabs(m.x - m.vak.x) + std::fabs(m.y - m.vak.y) +
+                          std::fabs(m.phi - m.vak.phi) + std::fabs(m.control.lambda - m.vak.lambda),
+                      1e-8)
+                << c.name << " t = " << t;
+        }
+        std::printf("%s: end error %.2e\n", c.name, error);
     }
 }
