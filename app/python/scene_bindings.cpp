@@ -253,6 +253,7 @@ py::object pathText(const Scene& s) {
     case PathKind::Parametric:
         return py::str("x=" + s.path.xOfU + ";y=" + s.path.yOfU);
     case PathKind::Polyline:
+    case PathKind::Geodesic:
         break;
     }
     return py::none();

@@ -1,10 +1,12 @@
 #include "lab/method_registry.h"
 
 #include "common/input_error.h"
+#include "control/piece_control.h"
 #include "lab/quadrature_time_law.h"
 #include "lab/sleigh_problems.h"
 #include "numerics/fixed_step.h"
 #include "numerics/gsl_ode.h"
+#include "planning/scene_path.h"
 #include "scene/solution.h"
 
 #include <algorithm>
@@ -24,7 +26,7 @@ FreeInitial initialOf(const Path& path, const ControlParams& params) {
     PathNode n = path.start();
     ControlState c = first.kind == PathPiece::Kind::Pivot
                          ? controlAtPivot(params, n.phi, first.phiTo - first.phiFrom)
-                         : controlOnCurve(params, n.kappa, n.dkappa, n.phi);
+                         : controlOnPiece(params, first, first.table->nodes().front());
     return {n.x, n.y, n.phi, c.sdot, c.phidot};
 }
 
@@ -254,7 +256,7 @@ MethodOutput pointsOnCurve(const Curve& curve, const std::vector<double>& us) {
     return out;
 }
 
-MethodCase::MethodCase(const Scene& s) : MethodCase(s, buildPath(s.path)) {}
+MethodCase::MethodCase(const Scene& s) : MethodCase(s, buildScenePath(s.path)) {}
 
 MethodCase::MethodCase(const Scene& s, std::shared_ptr<const Path> p)
     : scene(s), path(std::move(p)), params(controlParamsOf(s)) {

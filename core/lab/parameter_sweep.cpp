@@ -1,6 +1,7 @@
 #include "lab/parameter_sweep.h"
 
 #include "control/piece_control.h"
+#include "planning/scene_path.h"
 
 #include "common/input_error.h"
 #include "paths/path.h"
@@ -240,7 +241,7 @@ SweepReport runParameterSweep(const Scene& scene, const SweepSpec& spec,
     report.spec = spec;
     Scene base = scene;
     base.tEnd.reset();
-    std::shared_ptr<const Path> path = buildPath(base.path);
+    std::shared_ptr<const Path> path = buildScenePath(base.path);
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (options.cancel && options.cancel->load()) {
             report.cancelled = true;

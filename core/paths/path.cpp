@@ -98,12 +98,12 @@ std::vector<PathPiece> singleCurve(std::shared_ptr<const Curve> curve, std::size
     return {piece};
 }
 
-// A curve with cusps inside: one piece per stretch between them, alternating forward and
-// backing up; the heading is continuous (the tangent line), and so is Psi (docs/physics.md §3)
-std::vector<PathPiece> throughCusps(const std::shared_ptr<const Curve>& curve,
-                                    std::size_t halvingBudget) {
+} // namespace
+
+std::vector<PathPiece> piecesThroughCusps(const std::shared_ptr<const Curve>& curve,
+                                          int firstDirection, std::size_t halvingBudget) {
     std::vector<Cusp> cusps = findCusps(*curve);
-    if (cusps.empty())
+    if (cusps.empty() && firstDirection > 0)
         return singleCurve(curve, halvingBudget);
     std::vector<PathPiece> pieces;
     double ua = curve->u0(), psiEnd = 0;
@@ -117,10 +117,10 @@ std::vector<PathPiece> throughCusps(const std::shared_ptr<const Curve>& curve,
         PathPiece piece;
         piece.table = std::make_shared<const PathTable>(std::make_shared<SubCurve>(curve, ua, ub),
                                                         std::move(ends), halvingBudget);
-        piece.direction = k % 2 == 0 ? 1 : -1;
+        piece.direction = k % 2 == 0 ? firstDirection : -firstDirection;
         const double heading = piece.table->nodes().front().phi;
         if (k == 0) {
-            piece.phiOffset = 0;
+            piece.phiOffset = piece.direction < 0 ? std::numbers::pi : 0.0;
         } else {
             const PathPiece& prev = pieces.back();
             const double prevEnd = prev.table->nodes().back().phi + prev.phiOffset;
@@ -141,8 +141,6 @@ std::vector<PathPiece> throughCusps(const std::shared_ptr<const Curve>& curve,
     return pieces;
 }
 
-} // namespace
-
 Path::Path(std::vector<PathPiece> pieces) : m_pieces(std::move(pieces)) {
     double s = 0;
     for (PathPiece& p : m_pieces) {
@@ -153,8 +151,24 @@ Path::Path(std::vector<PathPiece> pieces) : m_pieces(std::move(pieces)) {
     m_length = s;
 }
 
+namespace {
+
+// a path that is one pivot (the pivoting geodesic, docs/physics.md §10) has its geometry there
+PathNode pivotNode(const PathPiece& p, double phi) {
+    PathNode n;
+    n.x = p.x;
+    n.y = p.y;
+    n.phi = phi;
+    n.kappa = std::copysign(INFINITY, p.phiTo - p.phiFrom);
+    return n;
+}
+
+} // namespace
+
 PathNode Path::start() const {
     const PathPiece& p = m_pieces.front();
+    if (p.kind == PathPiece::Kind::Pivot)
+        return pivotNode(p, p.phiFrom);
     PathNode n = p.table->nodes().front();
     n.phi += p.phiOffset;
     return n;
@@ -162,6 +176,11 @@ PathNode Path::start() const {
 
 PathNode Path::end() const {
     const PathPiece& p = m_pieces.back();
+    if (p.kind == PathPiece::Kind::Pivot) {
+        PathNode n = pivotNode(p, p.phiTo);
+        n.s = m_length;
+        return n;
+    }
     PathNode n = p.table->nodes().back();
     n.phi += p.phiOffset;
     n.s = m_length;
@@ -185,8 +204,8 @@ std::shared_ptr<const Path> buildPath(const PathSource& source, std::size_t halv
     case PathKind::Parametric: {
         Expression x = Expression::compile(source.xOfU, "u", "x(u)");
         Expression y = Expression::compile(source.yOfU, "u", "y(u)");
-        return std::make_shared<const Path>(throughCusps(
-            std::make_shared<ParametricCurve>(x, y, source.from, source.to), halvingBudget));
+        return std::make_shared<const Path>(piecesThroughCusps(
+            std::make_shared<ParametricCurve>(x, y, source.from, source.to), 1, halvingBudget));
     }
     case PathKind::Polyline: {
         auto pts = distinctPoints(source);
@@ -207,6 +226,8 @@ std::shared_ptr<const Path> buildPath(const PathSource& source, std::size_t halv
         return std::make_shared<const Path>(
             singleCurve(std::make_shared<SplineCurve>(xs, ys, source.smoothing), halvingBudget));
     }
+    case PathKind::Geodesic:
+        throw InputError("path", "a geodesic track is built with its closed form (buildScenePath)");
     }
     throw InputError("path", "unknown path kind");
 }

@@ -42,9 +42,17 @@ class Path {
     double m_length = 0;
 };
 
+/// A curve with cusps inside as pieces, one per stretch between them, the first driven in
+/// `firstDirection` (+1 forwards, -1 backing up) and the others alternating; the heading is
+/// continuous (the tangent line), and so is Psi (docs/physics.md §3).
+std::vector<PathPiece> piecesThroughCusps(const std::shared_ptr<const Curve>& curve,
+                                          int firstDirection,
+                                          std::size_t halvingBudget = PathTable::kHalvingBudget);
+
 /// Builds and tabulates the path within a budget of panel halvings per piece (PathTable). Throws
 /// InputError naming the expression position, the x or u where the path breaks, or the point of a
-/// polyline.
+/// polyline. A geodesic track
+/// is built by buildScenePath (core/planning).
 std::shared_ptr<const Path> buildPath(const PathSource& source,
                                       std::size_t halvingBudget = PathTable::kHalvingBudget);
 

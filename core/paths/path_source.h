@@ -9,8 +9,21 @@
 
 namespace chaplygin {
 
-enum class PathKind { Graph, Parametric, Polyline };
+enum class PathKind { Graph, Parametric, Polyline, Geodesic };
 enum class CornerMode { Pivot, Smooth };
+
+/// The knife track of a genuine vakonomic motion, a geodesic of the sub-Riemannian problem on
+/// SE(2) (docs/physics.md §10): from the start pose, the unit geodesic (Psi0, Lambda0) scaled by
+/// b, followed for the sub-Riemannian length (v_T t). Built by buildScenePath (core/planning).
+struct GeodesicTrack {
+    double x = 0, y = 0, phi = 0; ///< the start pose [m, m, rad]
+    double b = 1;                 ///< the length scale of the metric ds^2 + b^2 dphi^2 [m]
+    double psi0 = 0;              ///< Psi(0) = atan2(sdot, b phidot) in (-pi, pi] [rad]
+    double lambda0 = 0;           ///< b Psidot(0)/v_T, the normalised Lambda0
+    double length = 0;            ///< v_T t [m]
+
+    bool operator==(const GeodesicTrack&) const = default;
+};
 
 /// What the user gave for the path, before any tabulation. Plain data with defaults.
 struct PathSource {
@@ -24,6 +37,7 @@ struct PathSource {
     /// pivot corners: the least turn of the stroke [degrees] that is a corner (findCorners);
     /// smaller turns are smoothed
     double cornerAngle = kDefaultCornerAngleDeg;
+    GeodesicTrack geodesic; ///< the geodesic track (kind Geodesic)
 
     bool operator==(const PathSource&) const = default;
 };

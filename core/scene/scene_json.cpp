@@ -28,6 +28,8 @@ std::string kindName(PathKind k) {
         return "parametric";
     case PathKind::Polyline:
         return "polyline";
+    case PathKind::Geodesic:
+        return "geodesic";
     }
     return "graph";
 }
@@ -138,9 +140,23 @@ PathSource readPath(const json& p, const std::string& at) {
             src.smoothing = number(*it, at + "/smoothing");
         if (auto it = p.find("corner_angle"); it != p.end())
             src.cornerAngle = number(*it, at + "/corner_angle");
+    } else if (kind == "geodesic") {
+        src.kind = PathKind::Geodesic;
+        GeodesicTrack& g = src.geodesic;
+        const json& from = member(p, at, "from");
+        if (!from.is_array() || from.size() != 3)
+            bad(at + "/from", "must be an array of three numbers [x, y, phi]");
+        g.x = number(from[0], at + "/from/0");
+        g.y = number(from[1], at + "/from/1");
+        g.phi = number(from[2], at + "/from/2");
+        g.b = number(member(p, at, "b"), at + "/b");
+        g.psi0 = number(member(p, at, "psi0"), at + "/psi0");
+        g.lambda0 = number(member(p, at, "lambda0"), at + "/lambda0");
+        g.length = number(member(p, at, "length"), at + "/length");
     } else {
-        bad(at + "/kind",
-            "must be \"graph\", \"parametric\" or \"polyline\", got \"" + kind + "\"");
+        bad(at + "/kind", "must be \"graph\", \"parametric\", \"polyline\" or \"geodesic\", "
+                          "got \"" +
+                              kind + "\"");
     }
     return src;
 }
@@ -190,6 +206,13 @@ json writePath(const PathSource& path) {
         p["corners"] = cornerModeName(path.corners);
         p["smoothing"] = path.smoothing;
         p["corner_angle"] = path.cornerAngle;
+        break;
+    case PathKind::Geodesic:
+        p["from"] = {path.geodesic.x, path.geodesic.y, path.geodesic.phi};
+        p["b"] = path.geodesic.b;
+        p["psi0"] = path.geodesic.psi0;
+        p["lambda0"] = path.geodesic.lambda0;
+        p["length"] = path.geodesic.length;
         break;
     }
     return p;

@@ -3,6 +3,7 @@
 #include "common/input_error.h"
 #include "control/piece_control.h"
 #include "numerics/chebyshev.h"
+#include "planning/scene_path.h"
 #include "scene/finite_results.h"
 #include "scene/perturbation.h"
 
@@ -24,7 +25,7 @@ FreeInitial initialState(const std::shared_ptr<const Path>& path, const ControlP
     init.phi = n.phi;
     ControlState c = first.kind == PathPiece::Kind::Pivot
                          ? controlAtPivot(params, n.phi, first.phiTo - first.phiFrom)
-                         : controlOnCurve(params, n.kappa, n.dkappa, n.phi);
+                         : controlOnPiece(params, first, first.table->nodes().front());
     init.sdot = c.sdot;
     init.phidot = c.phidot;
     return init;
@@ -38,7 +39,7 @@ VakonomicInitial vakonomicInitial(const std::shared_ptr<const Path>& path,
     PathNode n = path->start();
     ControlState c = first.kind == PathPiece::Kind::Pivot
                          ? controlAtPivot(params, n.phi, first.phiTo - first.phiFrom)
-                         : controlOnCurve(params, n.kappa, n.dkappa, n.phi);
+                         : controlOnPiece(params, first, first.table->nodes().front());
     return {f.x, f.y, f.phi, f.sdot, f.phidot, c.lambda};
 }
 
@@ -139,7 +140,7 @@ ControlParams controlParamsOf(const Scene& scene, const DerivedSystem& system) {
 
 Solution Solution::compute(const Scene& scene) {
     ControlParams params = controlParamsOf(scene); // parameters first: cheaper to reject
-    Solution solution(scene, buildPath(scene.path), params);
+    Solution solution(scene, buildScenePath(scene.path), params);
     requireFiniteSolution(solution); // nothing non-finite reaches a view or a file
     return solution;
 }

@@ -5,6 +5,7 @@
 #include "common/input_error.h"
 #include "numerics/chebyshev.h"
 #include "paths/path_table.h"
+#include "planning/scene_path.h"
 
 #include <QtConcurrent/QtConcurrentRun>
 
@@ -116,7 +117,7 @@ void SceneDocument::cachePath(const PathSource& source, std::shared_ptr<const Pa
 std::shared_ptr<const Path> SceneDocument::pathFor(const PathSource& source) {
     if (auto hit = cachedPath(source))
         return hit;
-    std::shared_ptr<const Path> path = buildPath(source);
+    std::shared_ptr<const Path> path = buildScenePath(source);
     cachePath(source, path);
     return path;
 }
@@ -137,7 +138,7 @@ void SceneDocument::requestPath(const PathSource& source, PathDone done) {
             if (id != latest->load())
                 return job; // superseded before it started
             try {
-                job.path = buildPath(source);
+                job.path = buildScenePath(source);
             } catch (const InputError& e) {
                 job.error = QString::fromStdString(e.what());
             } catch (const std::exception& e) {
