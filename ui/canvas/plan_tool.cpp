@@ -7,6 +7,7 @@
 #include "document/scene_document.h"
 #include "motion/free_motion.h"
 #include "motion/vakonomic_motion.h"
+#include "planning/plan_track.h"
 #include "scene/scene_plan.h"
 
 #include <QElapsedTimer>
@@ -17,10 +18,13 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QWidget>
+#include <QtConcurrent/QtConcurrentRun>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <utility>
 
 namespace chaplygin::ui {
 
@@ -45,6 +49,7 @@ QString timeLabel(double t) {
 PlanTool::PlanTool(const CanvasView& view, const CanvasStyle& style, SceneDocument* document,
                    QObject* parent)
     : CanvasTool(parent), m_view(view), m_style(style), m_document(document) {
+    connect(&m_planWatcher, &QFutureWatcherBase::finished, this, &PlanTool::takeBackgroundPlan);
     m_playTimer.setInterval(16);
     connect(&m_playTimer, &QTimer::timeout, this, [this] {
         const int i = chosen();
@@ -77,6 +82,28 @@ void PlanTool::stopPlaying() {
     m_playTimer.stop();
     m_playTime = -1;
     emit changed();
+}
+
+void PlanTool::trackPlan() {
+    const int i = chosen();
+    if (i < 0 || m_planned.geodesics[std::size_t(i)].t <= 0)
+        return;
+    Scene scene = m_document->scene();
+    try {
+        scene.path = planTrack(m_request, m_planned.geodesics[std::size_t(i)]);
+    } catch (const InputError& e) {
+        m_error = QString::fromStdString(e.what());
+        emit changed();
+        return;
+    }
+    scene.preset.clear();
+    scene.tEnd.reset(); // the time to traverse the track: the motion's own
+    // the plan keeps its start where the new path begins, and the motion chosen
+    ScenePlan plan = m_plan;
+    plan.from = m_request.from;
+    scene.plan = plan;
+    m_plan = plan;
+    m_document->edit(scene, tr("Track this plan"));
 }
 
 QString PlanTool::chosenSummary() const {
@@ -150,6 +177,8 @@ void PlanTool::syncFromDocument() {
 }
 
 void PlanTool::replan() {
+    ++m_generation; // what a background plan brings back now is stale
+    m_nextRequest.reset();
     m_playTimer.stop();
     m_playTime = -1;
     m_planned = {};
@@ -244,12 +273,56 @@ bool PlanTool::move(const QMouseEvent& e) {
         m_plan.from->y = from.y();
     }
     m_plan.choice = 0; // the least time while dragging
-    QElapsedTimer clock;
-    clock.start();
-    replan();
-    m_slowestMs = std::max(m_slowestMs, clock.nsecsElapsed() * 1e-6);
+    planInBackground();
     emit changed();
     return true;
+}
+
+void PlanTool::planInBackground() {
+    const auto& solution = m_document->solution();
+    if (!solution || solution->scene().mode != SpeedMode::Energy)
+        return;
+    PlanRequest request;
+    try {
+        request = planRequestOf(m_plan, *solution);
+    } catch (const InputError&) {
+        return;
+    }
+    // the latest pose wins: one plan at a time, the newest pose next
+    m_nextRequest = request;
+    if (m_planWatcher.isRunning())
+        return;
+    const quint64 generation = m_generation;
+    m_nextRequest.reset();
+    m_planWatcher.setFuture(QtConcurrent::run([request, generation]() {
+        BackgroundPlan job{request, {}, generation, 0, {}};
+        QElapsedTimer clock;
+        clock.start();
+        try {
+            job.plan = planVakonomic(request);
+        } catch (const InputError& e) {
+            job.error = QString::fromStdString(e.what());
+        }
+        job.ms = clock.nsecsElapsed() * 1e-6;
+        return job;
+    }));
+}
+
+void PlanTool::takeBackgroundPlan() {
+    const BackgroundPlan job = m_planWatcher.result();
+    m_slowestMs = std::max(m_slowestMs, job.ms);
+    // a plan made before the document's last one is stale
+    if (job.generation == m_generation && active()) {
+        m_request = job.request;
+        m_planned = job.plan;
+        m_error = job.error;
+        if (m_error.isEmpty() && m_planned.geodesics.empty())
+            m_error = tr("No motion reaches the target within %1 s").arg(m_planned.horizon);
+        ++m_planId;
+        emit changed();
+    }
+    if (m_nextRequest && active())
+        planInBackground();
 }
 
 void PlanTool::release(const QMouseEvent& e) {
@@ -315,6 +388,24 @@ void PlanTool::updateTracks() const {
             },
             limits));
     }
+}
+
+QRectF PlanTool::worldBounds() const {
+    const auto& solution = m_document->solution();
+    if (!solution)
+        return {};
+    updateTracks();
+    const Pose from = planStart(m_plan, *solution);
+    double x0 = std::min(from.x, m_plan.to.x), x1 = std::max(from.x, m_plan.to.x);
+    double y0 = std::min(from.y, m_plan.to.y), y1 = std::max(from.y, m_plan.to.y);
+    for (const FlatCurve& c : m_tracks)
+        for (QPointF p : c.points) {
+            x0 = std::min(x0, p.x());
+            x1 = std::max(x1, p.x());
+            y0 = std::min(y0, p.y());
+            y1 = std::max(y1, p.y());
+        }
+    return QRectF(QPointF(x0, y0), QPointF(x1, y1));
 }
 
 int PlanTool::motionAt(QPointF pixel) const {
@@ -388,25 +479,42 @@ void PlanTool::paint(QPainter& p) const {
             p.restore();
         }
     }
-    // each motion's time beside its track, a third of the way along
+    // each motion's time beside its track where no other label is: the full ones first, a
+    // faint one left without when its track has no free place
     QFont font = p.font();
     font.setPointSizeF(font.pointSizeF() * m_style.lineScale);
     p.setFont(font);
     const QFontMetricsF metrics(font);
-    for (std::size_t i = 0; i < m_tracks.size(); ++i) {
-        const auto& c = m_tracks[i];
-        if (c.points.empty())
-            continue;
-        const double t = m_planned.geodesics[i].t;
-        const std::size_t k = std::min(c.countUpTo(t / 3), c.points.size() - 1);
-        const QPointF at = world.map(c.points[k]) + QPointF(6, -6) * m_style.lineScale;
-        const QString label = timeLabel(t);
-        QRectF box = metrics.boundingRect(label).translated(at).adjusted(-2, -1, 2, 1);
-        p.setPen(Qt::NoPen);
-        p.setBrush(QColor(255, 255, 255, isFull(i) ? 220 : 150));
-        p.drawRoundedRect(box, 3, 3);
-        p.setPen(isFull(i) ? ink.darker(130) : faint);
-        p.drawText(at, label);
+    std::vector<QRectF> placed;
+    for (int pass = 1; pass >= 0; --pass) {
+        for (std::size_t i = 0; i < m_tracks.size(); ++i) {
+            const auto& c = m_tracks[i];
+            if (c.points.empty() || isFull(i) != (pass == 1))
+                continue;
+            const double t = m_planned.geodesics[i].t;
+            const QString label = timeLabel(t);
+            std::optional<std::pair<QPointF, QRectF>> spot;
+            for (double along : {1.0 / 3, 0.5, 2.0 / 3, 1.0 / 6, 5.0 / 6}) {
+                const std::size_t k = std::min(c.countUpTo(t * along), c.points.size() - 1);
+                const QPointF at = world.map(c.points[k]) + QPointF(6, -6) * m_style.lineScale;
+                const QRectF box =
+                    metrics.boundingRect(label).translated(at).adjusted(-2, -1, 2, 1);
+                const bool free = std::none_of(placed.begin(), placed.end(),
+                                               [&](const QRectF& r) { return r.intersects(box); });
+                if (free || (!spot && pass == 1))
+                    spot = std::pair{at, box};
+                if (free)
+                    break;
+            }
+            if (!spot)
+                continue;
+            placed.push_back(spot->second);
+            p.setPen(Qt::NoPen);
+            p.setBrush(QColor(255, 255, 255, isFull(i) ? 220 : 150));
+            p.drawRoundedRect(spot->second, 3, 3);
+            p.setPen(isFull(i) ? ink.darker(130) : faint);
+            p.drawText(spot->first, label);
+        }
     }
     // the played bodies: the genuine vakonomic one along the chosen motion, the free ghost from
     // the same start

@@ -5,12 +5,14 @@
 #include "scene/scene.h"
 
 #include <QElapsedTimer>
+#include <QFutureWatcher>
 #include <QPointF>
 #include <QRectF>
 #include <QString>
 #include <QTimer>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace chaplygin::ui {
@@ -42,21 +44,28 @@ class PlanTool : public CanvasTool {
 
     /// The plan shown: the document's, or the one being dragged.
     const ScenePlan& plan() const { return m_plan; }
-    /// The planner's answer for it (empty with an error).
+    /// The planner's answer for it (empty with an error), and the request it answered (while
+    /// dragging, the last pose planned on the worker).
     const Plan& planned() const { return m_planned; }
+    const PlanRequest& plannedRequest() const { return m_request; }
     /// Why nothing is planned (the constant-speed mode, no motion within the horizon); empty
     /// when planned.
     const QString& error() const { return m_error; }
     /// The motion chosen (an index into planned().geodesics), -1 when none.
     int chosen() const;
-    /// The knife tracks of the planned motions as last drawn, flattened to kTolerancePx device
+    /// The knife tracks of the planned motions as drawn, flattened to kTolerancePx device
     /// pixels within the view (param: time [s]).
-    const std::vector<FlatCurve>& tracks() const { return m_tracks; }
+    const std::vector<FlatCurve>& tracks() const {
+        updateTracks();
+        return m_tracks;
+    }
     /// Where the handles are drawn [px].
     QPointF targetHandle() const;
     QPointF headingHandle() const;
     QPointF startHandle() const;
-    /// The longest a plan took while dragging [ms].
+    /// The world rectangle of the start, the target and every planned track [m] (for the fit).
+    QRectF worldBounds() const;
+    /// The longest a plan took while dragging, on the planning thread [ms].
     double slowestPlanMs() const { return m_slowestMs; }
     /// The time along the chosen motion the played bodies are drawn at [s]; negative when
     /// nothing is played.
@@ -75,10 +84,25 @@ class PlanTool : public CanvasTool {
     /// Shows the played bodies at time t [s] along the chosen motion (clamped to it).
     void showAt(double t);
     void stopPlaying();
+    /// "Track this plan": the chosen motion's knife track becomes the scene's path (one undo
+    /// step), so that the controlled body and the genuine vakonomic body coincide on it.
+    void trackPlan();
 
   private:
     enum class Drag { None, Target, Heading, Start, Choosing };
+    /// Plans the document's plan now (after a change, an undo, a load).
     void replan();
+    /// While dragging: plans the pose dragged to on a worker thread, the latest pose next when
+    /// one is under way (a plan can take longer than a frame: docs/physics.md §10).
+    void planInBackground();
+    void takeBackgroundPlan();
+    struct BackgroundPlan {
+        PlanRequest request;
+        Plan plan;
+        quint64 generation;
+        double ms;
+        QString error;
+    };
     /// Flattens the planned tracks for the view when the plan, the scale or the view changed.
     void updateTracks() const;
     void commit(const ScenePlan& plan, const QString& description);
@@ -98,7 +122,10 @@ class PlanTool : public CanvasTool {
     Drag m_drag = Drag::None;
     QPointF m_grabOffset; // [m] from the mouse to the dragged point
     double m_slowestMs = 0;
-    quint64 m_planId = 0; // a new one for each plan made
+    QFutureWatcher<BackgroundPlan> m_planWatcher;
+    std::optional<PlanRequest> m_nextRequest; // the newest pose while a plan is under way
+    quint64 m_generation = 0;                 // one more at each plan made on this thread
+    quint64 m_planId = 0;                     // a new one for each plan made
     mutable quint64 m_tracksOf = ~quint64(0);
     mutable double m_tracksScale = 0;
     mutable QRectF m_tracksSeen;

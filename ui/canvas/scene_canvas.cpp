@@ -233,7 +233,7 @@ void SceneCanvas::setLegendVisible(bool visible) {
 
 void SceneCanvas::frame(const QRectF& box, double margin, double minScale) {
     // the scene goes between the time line at the top and the legend at the bottom
-    m_view.frame(box, drawingArea(), margin, minScale);
+    m_view.frame(box, drawingArea().adjusted(0, planReadoutHeight(), 0, 0), margin, minScale);
     m_view.setFittedPath(m_document->solution()->path());
     setFollowBody(false);
     update();
@@ -241,7 +241,8 @@ void SceneCanvas::frame(const QRectF& box, double margin, double minScale) {
 
 void SceneCanvas::fitScene() {
     const auto& solution = m_document->solution();
-    const QRectF path = pathBounds();
+    // in plan mode the plan's start, target and tracks too
+    const QRectF path = m_planMode ? pathBounds().united(m_planTool->worldBounds()) : pathBounds();
     if (!solution || path.isNull())
         return;
     m_view.setFitsEverything(false);
@@ -321,6 +322,9 @@ void SceneCanvas::setPlanMode(bool on) {
         m_drawTool->cancel();
         m_editTool->cancel();
         m_planTool->syncFromDocument();
+        // the plan in view, unless the user chose the view
+        if (m_view.autoFit() && !m_view.follows())
+            fitScene();
     }
     updateCursor();
     update();

@@ -200,6 +200,8 @@ class SceneCanvas : public QWidget {
     void paintTimeReadout(QPainter& p, double tEnd) const;
     /// Plan mode: the chosen motion and how to use the tool, under the time line.
     void paintPlanReadout(QPainter& p) const;
+    /// The readout's height [px] (0 outside plan mode): a fit keeps the scene below it.
+    double planReadoutHeight() const;
     /// The static layer (grid, path, legend) from the layer cache.
     const QPixmap& background();
     /// The static layer onto the widget within region: the cached background, or while following

@@ -294,6 +294,16 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
     }
 }
 
+double SceneCanvas::planReadoutHeight() const {
+    if (!m_planMode)
+        return 0;
+    QFont font = this->font();
+    font.setPointSizeF(font.pointSizeF() * m_look.style.lineScale);
+    const QFontMetricsF metrics(font);
+    const int lines = m_look.style.largeTime ? 1 : 2;
+    return 6 * m_look.style.lineScale + lines * (metrics.lineSpacing() + 4);
+}
+
 void SceneCanvas::paintPlanReadout(QPainter& p) const {
     // the chosen motion's family, k, Psi0, lambda(0), t and cut time, and how to use the tool,
     // in the corner under the time line
@@ -301,10 +311,11 @@ void SceneCanvas::paintPlanReadout(QPainter& p) const {
     font.setPointSizeF(font.pointSizeF() * m_look.style.lineScale);
     p.setFont(font);
     const QFontMetricsF metrics(font);
-    const QStringList lines{
-        m_planTool->chosenSummary(),
-        tr("Plan: drag the target's dot or its heading's handle (Shift snaps), or the start; "
-           "click a motion to choose it")};
+    QStringList lines{m_planTool->chosenSummary()};
+    // presenting, the chosen motion alone: the drawing keeps the room
+    if (!m_look.style.largeTime)
+        lines << tr("Plan: drag the target's dot or its heading's handle (Shift snaps), or the "
+                    "start; click a motion to choose it");
     const QRectF area = drawingArea();
     QPointF at = area.topLeft() + QPointF(10, 6 * m_look.style.lineScale + metrics.ascent());
     for (const QString& line : lines) {

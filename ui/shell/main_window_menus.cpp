@@ -110,9 +110,18 @@ void MainWindow::buildMenus() {
     playPlan->setEnabled(false);
     connect(playPlan, &QAction::triggered, m_canvas->planTool(), &PlanTool::play);
     connect(m_canvas, &SceneCanvas::planModeChanged, playPlan, &QAction::setEnabled);
+    QAction* trackPlan = edit->addAction(tr("&Track this plan"));
+    trackPlan->setObjectName(QStringLiteral("trackPlanAction"));
+    trackPlan->setIconText(tr("Track plan"));
+    trackPlan->setToolTip(tr("Make the chosen motion's knife track the path: the controlled body "
+                             "and the genuine vakonomic body then coincide"));
+    trackPlan->setEnabled(false);
+    connect(trackPlan, &QAction::triggered, m_canvas->planTool(), &PlanTool::trackPlan);
+    connect(m_canvas, &SceneCanvas::planModeChanged, trackPlan, &QAction::setEnabled);
     m_timeline->addSeparator();
     m_timeline->addAction(m_planAction);
     m_timeline->addAction(playPlan);
+    m_timeline->addAction(trackPlan);
 
     QMenu* view = m_viewMenu = menuBar()->addMenu(tr("&View"));
     view->setObjectName(QStringLiteral("viewMenu"));
