@@ -436,7 +436,8 @@ QString planHtml(const PlanRequest& request, const PlannedGeodesic& g, int index
                  .arg(operand(g.psi0), operand(d.b), operand(g.psidot0), operand(v)),
              g.modulus * g.modulus, QString(),
              QCoreApplication::translate("EquationsPanel",
-                                         "the pendulum's modulus, docs/physics.md \u00a710"));
+                                         "the pendulum's modulus, docs/physics.md \u00a7"
+                                         "10"));
     h += row(QStringLiteral("\u03a8\u2080"), QString(), g.psi0, QStringLiteral("rad"),
              QCoreApplication::translate("EquationsPanel",
                                          "\u03a8(0) = atan2(\u1e61, b\u03c6\u0307) at the start"));
