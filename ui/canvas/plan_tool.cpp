@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <numbers>
 #include <optional>
 #include <utility>
@@ -91,7 +92,7 @@ void PlanTool::trackPlan() {
     Scene scene = m_document->scene();
     try {
         scene.path = planTrack(m_request, m_planned.geodesics[std::size_t(i)]);
-    } catch (const InputError& e) {
+    } catch (const std::exception& e) {
         m_error = QString::fromStdString(e.what());
         emit changed();
         return;
@@ -197,7 +198,7 @@ void PlanTool::replan() {
         m_planned = planVakonomic(m_request);
         if (m_planned.geodesics.empty())
             m_error = tr("No motion reaches the target within %1 s").arg(m_planned.horizon);
-    } catch (const InputError& e) {
+    } catch (const std::exception& e) {
         m_error = QString::fromStdString(e.what());
     }
 }
@@ -300,7 +301,7 @@ void PlanTool::planInBackground() {
         clock.start();
         try {
             job.plan = planVakonomic(request);
-        } catch (const InputError& e) {
+        } catch (const std::exception& e) {
             job.error = QString::fromStdString(e.what());
         }
         job.ms = clock.nsecsElapsed() * 1e-6;

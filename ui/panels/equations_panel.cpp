@@ -1,6 +1,5 @@
 #include "panels/equations_panel.h"
 
-#include "common/input_error.h"
 #include "document/math_text.h"
 #include "document/scene_document.h"
 #include "panels/equations_html.h"
@@ -11,6 +10,7 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <exception>
 
 namespace chaplygin::ui {
 
@@ -64,7 +64,8 @@ QString EquationsPanel::planSection(const Solution& solution) {
         try {
             m_request = planRequestOf(*plan, solution);
             m_planned = planVakonomic(m_request);
-        } catch (const InputError&) {
+        } catch (const std::exception&) {
+            // no section: the Plan tool says why
         }
     }
     const int n = int(m_planned.geodesics.size());

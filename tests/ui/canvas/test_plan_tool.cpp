@@ -412,9 +412,10 @@ void TestPlanTool::thePlanIsSavedAndRestored() {
     other.open(file);
     QVERIFY(other.scene().plan);
     QVERIFY(*other.scene().plan == *s.plan);
-    // and the window shows it
+    // and the window shows it, in plan mode
+    m_canvas->setPlanMode(false);
     m_window->document()->open(file);
-    m_canvas->setPlanMode(true);
+    QVERIFY(m_canvas->planMode());
     QCOMPARE(m_tool->chosen(), count - 1);
     QCOMPARE(m_tool->plan().horizon, std::optional<double>(15));
 }
