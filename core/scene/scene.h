@@ -3,6 +3,7 @@
 // and what the view shows.
 #include "control/control_law.h"
 #include "paths/path_source.h"
+#include "planning/pose_planner.h"
 #include "systems/system.h"
 
 #include <optional>
@@ -67,6 +68,24 @@ struct Perturbation {
     bool operator==(const Perturbation&) const = default;
 };
 
+/// A plan from pose to pose (docs/physics.md §10): the target pose, the start pose (the path's
+/// start when absent), the horizon (the planner's default when absent) and the motion chosen
+/// among those the planner lists, sorted by arrival time.
+struct ScenePlan {
+    std::optional<Pose> from;
+    Pose to;
+    std::optional<double> horizon; ///< [s]
+    int choice = 0;                ///< index in the planner's list (0: the first, least time)
+
+    friend bool operator==(const ScenePlan& a, const ScenePlan& b) {
+        auto same = [](const Pose& p, const Pose& q) {
+            return p.x == q.x && p.y == q.y && p.phi == q.phi;
+        };
+        return a.from.has_value() == b.from.has_value() && (!a.from || same(*a.from, *b.from)) &&
+               same(a.to, b.to) && a.horizon == b.horizon && a.choice == b.choice;
+    }
+};
+
 /// Everything that defines a scene: plain data with defaults, saved and loaded as JSON,
 /// shared by the GUI, the CLI and the tests.
 struct Scene {
@@ -78,9 +97,10 @@ struct Scene {
     std::optional<double> tEnd; ///< horizon [s]; default: the time to traverse the path
     std::optional<Perturbation> perturbation; ///< the perturbed bodies, when given
 
-    VectorOverlay vectors;       ///< arrows drawn on the bodies (view only)
-    std::string note;            ///< the lecturer's Markdown note (view only)
-    std::vector<PinnedRun> pins; ///< runs kept for comparison, oldest first (view only)
+    VectorOverlay vectors;         ///< arrows drawn on the bodies (view only)
+    std::string note;              ///< the lecturer's Markdown note (view only)
+    std::vector<PinnedRun> pins;   ///< runs kept for comparison, oldest first (view only)
+    std::optional<ScenePlan> plan; ///< the Plan tool's target and chosen motion
 
     bool operator==(const Scene&) const = default;
 };

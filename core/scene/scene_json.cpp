@@ -293,6 +293,45 @@ Perturbation readPerturbation(const json& v) {
     return p;
 }
 
+json writePose(const Pose& pose) {
+    return json::array({pose.x, pose.y, pose.phi});
+}
+
+// a pose as [x, y, phi]: metres and radians
+Pose readPose(const json& v, const std::string& at) {
+    if (!v.is_array() || v.size() != 3)
+        bad(at, "must be [x, y, phi] (metres and radians)");
+    return {number(v[0], at + "/0"), number(v[1], at + "/1"), number(v[2], at + "/2")};
+}
+
+// "plan": {"to": [x, y, phi], "from": [x, y, phi], "horizon": T, "choice": N} (docs/physics.md
+// §10); only "to" is required
+ScenePlan readPlan(const json& v) {
+    object(v, "/plan");
+    ScenePlan plan;
+    for (auto it = v.begin(); it != v.end(); ++it) {
+        const std::string at = "/plan/" + it.key();
+        if (it.key() == "to") {
+            plan.to = readPose(it.value(), at);
+        } else if (it.key() == "from") {
+            plan.from = readPose(it.value(), at);
+        } else if (it.key() == "horizon") {
+            plan.horizon = number(it.value(), at);
+            if (!(*plan.horizon > 0))
+                bad(at, "must be > 0 [s]");
+        } else if (it.key() == "choice") {
+            if (!it->is_number_integer() || it->get<long long>() < 0 ||
+                it->get<long long>() > 1000000)
+                bad(at, "must be a whole number >= 0 (the motion's place in the list)");
+            plan.choice = int(it->get<long long>());
+        } else {
+            bad(at, "unknown field (use to, from, horizon or choice)");
+        }
+    }
+    member(v, "/plan", "to");
+    return plan;
+}
+
 } // namespace
 
 std::string sceneToJson(const Scene& scene) {
@@ -326,6 +365,16 @@ std::string sceneToJson(const Scene& scene) {
             writeRun(p, pin);
             j["pins"].push_back(p);
         }
+    }
+    if (scene.plan) {
+        json p = json::object();
+        p["to"] = writePose(scene.plan->to);
+        if (scene.plan->from)
+            p["from"] = writePose(*scene.plan->from);
+        if (scene.plan->horizon)
+            p["horizon"] = *scene.plan->horizon;
+        p["choice"] = scene.plan->choice;
+        j["plan"] = p;
     }
     return j.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
@@ -394,6 +443,8 @@ Scene sceneFromJson(const std::string& text) {
             s.pins.push_back(readRun(object((*it)[i], at), at));
         }
     }
+    if (auto it = j.find("plan"); it != j.end())
+        s.plan = readPlan(*it);
     return s;
 }
 

@@ -193,6 +193,70 @@
         <source>workless: the energy stays (m_eff/2)(ṡ² + b²φ̇²) = %1 J</source>
         <translation>sem trabalho: a energia fica (m_eff/2)(ṡ² + b²φ̇²) = %1 J</translation>
     </message>
+    <message>
+        <source>at rest (the target is the start)</source>
+        <translation>em repouso (o alvo é o início)</translation>
+    </message>
+    <message>
+        <source>pivoting about P (Ψ ≡ 0 or π)</source>
+        <translation>pivotando em torno de P (Ψ ≡ 0 ou π)</translation>
+    </message>
+    <message>
+        <source>the straight line (Ψ ≡ ±π/2)</source>
+        <translation>a linha reta (Ψ ≡ ±π/2)</translation>
+    </message>
+    <message>
+        <source>libration (k &amp;lt; 1)</source>
+        <translation>libração (k &amp;lt; 1)</translation>
+    </message>
+    <message>
+        <source>rotation (k &amp;gt; 1)</source>
+        <translation>rotação (k &amp;gt; 1)</translation>
+    </message>
+    <message>
+        <source>separatrix (k = 1)</source>
+        <translation>separatriz (k = 1)</translation>
+    </message>
+    <message>
+        <source>Plan: motion %1 of %2, %3</source>
+        <translation>Plano: movimento %1 de %2, %3</translation>
+    </message>
+    <message>
+        <source>the pendulum&apos;s modulus, docs/physics.md §10</source>
+        <translation>o módulo do pêndulo, docs/physics.md §10</translation>
+    </message>
+    <message>
+        <source>Ψ(0) = atan2(ṡ, bφ̇) at the start</source>
+        <translation>Ψ(0) = atan2(ṡ, bφ̇) no início</translation>
+    </message>
+    <message>
+        <source>the one free constant: the control</source>
+        <translation>a única constante livre: o controle</translation>
+    </message>
+    <message>
+        <source>arrival, the least time (certified by the cut time)</source>
+        <translation>chegada, o menor tempo (certificado pelo tempo de corte)</translation>
+    </message>
+    <message>
+        <source>arrival</source>
+        <translation>chegada</translation>
+    </message>
+    <message>
+        <source>cut time</source>
+        <translation>tempo de corte</translation>
+    </message>
+    <message>
+        <source>optimal up to here: the first Maxwell time</source>
+        <translation>ótimo até aqui: o primeiro tempo de Maxwell</translation>
+    </message>
+    <message>
+        <source>along the motion now, t clamped to it</source>
+        <translation>ao longo do movimento agora, t limitado a ele</translation>
+    </message>
+    <message>
+        <source>along the motion now</source>
+        <translation>ao longo do movimento agora</translation>
+    </message>
 </context>
 <context>
     <name>MethodNames</name>
@@ -1042,6 +1106,10 @@ realimentação: %2</translation>
         <source>Don&apos;t show this at start</source>
         <translation>Não mostrar ao iniciar</translation>
     </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;Plan&lt;/b&gt; (Edit menu) turns this round: drag a target pose and the program finds every vakonomic motion from the start that reaches it, choosing only λ(0). The fastest is drawn in full and certified; the fainter ones arrive later, each labelled with its time. Where two are equally fast, both are drawn in full.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;Planejar&lt;/b&gt; (menu Editar) inverte a pergunta: arraste uma pose alvo e o programa encontra todo movimento vakonômico que a alcança a partir do início, escolhendo apenas λ(0). O mais rápido é desenhado em traço cheio e certificado; os mais tênues chegam depois, cada um com seu tempo. Onde dois são igualmente rápidos, ambos são desenhados em traço cheio.&lt;/p&gt;</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::LanguageMenu</name>
@@ -1411,6 +1479,50 @@ realimentação: %2</translation>
     <message>
         <source>Shift+F</source>
         <translation>Shift+F</translation>
+    </message>
+    <message>
+        <source>P&amp;lan a motion (pose to pose)</source>
+        <translation>P&amp;lanejar um movimento (de pose a pose)</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+T</source>
+        <translation>Ctrl+Shift+T</translation>
+    </message>
+    <message>
+        <source>Plan</source>
+        <translation>Planejar</translation>
+    </message>
+    <message>
+        <source>Plan: drag the target pose (its dot and its heading&apos;s handle; Shift snaps) and see every genuine vakonomic motion that reaches it, the fastest in full; click one to choose it</source>
+        <translation>Planejar: arraste a pose alvo (seu ponto e a alça de sua direção; Shift ajusta à grade) e veja todo movimento vakonômico genuíno que a alcança, o mais rápido em traço cheio; clique num deles para escolhê-lo</translation>
+    </message>
+    <message>
+        <source>Play the planned motion</source>
+        <translation>Reproduzir o movimento planejado</translation>
+    </message>
+    <message>
+        <source>Play plan</source>
+        <translation>Reproduzir plano</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+Space</source>
+        <translation>Ctrl+Shift+Space</translation>
+    </message>
+    <message>
+        <source>The genuine vakonomic body along the chosen motion, with the free ghost from the same start</source>
+        <translation>O corpo vakonômico genuíno ao longo do movimento escolhido, com o fantasma livre a partir do mesmo início</translation>
+    </message>
+    <message>
+        <source>&amp;Track this plan</source>
+        <translation>Segui&amp;r este plano</translation>
+    </message>
+    <message>
+        <source>Track plan</source>
+        <translation>Seguir plano</translation>
+    </message>
+    <message>
+        <source>Make the chosen motion&apos;s knife track the path: the controlled body and the genuine vakonomic body then coincide</source>
+        <translation>Tornar o rastro da lâmina do movimento escolhido o caminho: o corpo controlado e o corpo vakonômico genuíno então coincidem</translation>
     </message>
 </context>
 <context>
@@ -1828,6 +1940,69 @@ O que os estudantes devem observar…</translation>
     </message>
 </context>
 <context>
+    <name>chaplygin::ui::PlanTool</name>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Track this plan</source>
+        <translation>Seguir este plano</translation>
+    </message>
+    <message>
+        <source>at rest</source>
+        <translation>em repouso</translation>
+    </message>
+    <message>
+        <source>pivoting</source>
+        <translation>pivotando</translation>
+    </message>
+    <message>
+        <source>straight line</source>
+        <translation>linha reta</translation>
+    </message>
+    <message>
+        <source>libration</source>
+        <translation>libração</translation>
+    </message>
+    <message>
+        <source>rotation</source>
+        <translation>rotação</translation>
+    </message>
+    <message>
+        <source>separatrix</source>
+        <translation>separatriz</translation>
+    </message>
+    <message>
+        <source>motion %1 of %2: %3, k = %4, Ψ₀ = %5 rad, λ(0) = %6 kg m/s, t = %7 s, cut time %8%9</source>
+        <translation>movimento %1 de %2: %3, k = %4, Ψ₀ = %5 rad, λ(0) = %6 kg m/s, t = %7 s, tempo de corte %8%9</translation>
+    </message>
+    <message>
+        <source>, optimal</source>
+        <translation>, ótimo</translation>
+    </message>
+    <message>
+        <source>Planning needs constant energy (v_T): the constant-speed mode has no genuine vakonomic motion</source>
+        <translation>O planejamento requer energia constante (v_T): o modo de velocidade constante não tem movimento vakonômico genuíno</translation>
+    </message>
+    <message>
+        <source>No motion reaches the target within %1 s</source>
+        <translation>Nenhum movimento alcança o alvo em até %1 s</translation>
+    </message>
+    <message>
+        <source>Choose a planned motion</source>
+        <translation>Escolher um movimento planejado</translation>
+    </message>
+    <message>
+        <source>Move the plan&apos;s start</source>
+        <translation>Mover o início do plano</translation>
+    </message>
+    <message>
+        <source>Move the plan&apos;s target</source>
+        <translation>Mover o alvo do plano</translation>
+    </message>
+</context>
+<context>
     <name>chaplygin::ui::PlotsPanel</name>
     <message>
         <source> — click or drag to move the animation to that time</source>
@@ -1934,6 +2109,10 @@ O que os estudantes devem observar…</translation>
     <message>
         <source>curves drawn in part at this zoom</source>
         <translation>curvas desenhadas em parte neste zoom</translation>
+    </message>
+    <message>
+        <source>Plan: drag the target&apos;s dot or its heading&apos;s handle (Shift snaps), or the start; click a motion to choose it</source>
+        <translation>Plano: arraste o ponto do alvo ou a alça de sua direção (Shift ajusta à grade), ou o início; clique num movimento para escolhê-lo</translation>
     </message>
 </context>
 <context>

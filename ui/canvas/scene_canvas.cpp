@@ -4,6 +4,7 @@
 #include "canvas/draw_tool.h"
 #include "canvas/edit_points_tool.h"
 #include "canvas/pan_tool.h"
+#include "canvas/plan_tool.h"
 #include "document/scene_document.h"
 
 #include <QKeyEvent>
@@ -31,6 +32,7 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
           m_view, m_look.style, [this] { return drawnPoints(); }, this)),
       m_pushTool(new PushTool(
           m_view, m_look.style, [this](QPointF p) { return grabAt(p); }, this)),
+      m_planTool(new PlanTool(m_view, m_look.style, document, this)),
       m_panTool(new PanTool(m_view, this)) {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
@@ -55,6 +57,10 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
         emit pointsEdited(points);
     });
     connect(m_pushTool, &PushTool::pushDragged, this, &SceneCanvas::pushDragged);
+    connect(document, &SceneDocument::solutionChanged, m_planTool, [this] {
+        if (m_planMode)
+            m_planTool->syncFromDocument();
+    });
     connect(m_panTool, &PanTool::panned, this, [this] {
         setFollowBody(false);
         update();
@@ -227,7 +233,7 @@ void SceneCanvas::setLegendVisible(bool visible) {
 
 void SceneCanvas::frame(const QRectF& box, double margin, double minScale) {
     // the scene goes between the time line at the top and the legend at the bottom
-    m_view.frame(box, drawingArea(), margin, minScale);
+    m_view.frame(box, drawingArea().adjusted(0, planReadoutHeight(), 0, 0), margin, minScale);
     m_view.setFittedPath(m_document->solution()->path());
     setFollowBody(false);
     update();
@@ -235,7 +241,8 @@ void SceneCanvas::frame(const QRectF& box, double margin, double minScale) {
 
 void SceneCanvas::fitScene() {
     const auto& solution = m_document->solution();
-    const QRectF path = pathBounds();
+    // in plan mode the plan's start, target and tracks too
+    const QRectF path = m_planMode ? pathBounds().united(m_planTool->worldBounds()) : pathBounds();
     if (!solution || path.isNull())
         return;
     m_view.setFitsEverything(false);
@@ -299,15 +306,38 @@ void SceneCanvas::setFollowBody(bool follow) {
 void SceneCanvas::setDrawMode(bool on) {
     m_drawMode = on;
     m_drawTool->cancel();
+    if (on)
+        setPlanMode(false);
     setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
     update();
 }
 
-std::array<CanvasTool*, 4> SceneCanvas::allTools() const {
-    return {m_editTool, m_drawTool, m_pushTool, m_panTool};
+void SceneCanvas::setPlanMode(bool on) {
+    if (on == m_planMode)
+        return;
+    m_planMode = on;
+    m_planTool->cancel();
+    m_planTool->stopPlaying();
+    if (on) {
+        m_drawTool->cancel();
+        m_editTool->cancel();
+        m_planTool->syncFromDocument();
+        // the plan in view, unless the user chose the view
+        if (m_view.autoFit() && !m_view.follows())
+            fitScene();
+    }
+    updateCursor();
+    update();
+    emit planModeChanged(on);
+}
+
+std::array<CanvasTool*, 5> SceneCanvas::allTools() const {
+    return {m_editTool, m_drawTool, m_planTool, m_pushTool, m_panTool};
 }
 
 std::vector<CanvasTool*> SceneCanvas::tools() const {
+    if (m_planMode)
+        return {m_planTool, m_panTool};
     if (m_drawMode)
         return {m_editTool, m_drawTool, m_panTool};
     return {m_pushTool, m_panTool};

@@ -31,6 +31,7 @@ class CanvasTool;
 class DrawTool;
 class EditPointsTool;
 class PanTool;
+class PlanTool;
 
 /// The animation canvas: the prescribed path coloured by curvature, the controlled body to scale
 /// at its pose with its trail, and a translucent ghost of the free motion with its own trail.
@@ -45,6 +46,9 @@ class SceneCanvas : public QWidget {
     double time() const { return m_time; }
     bool followsBody() const { return m_view.follows(); }
     bool drawMode() const { return m_drawMode; }
+    /// Whether the Plan tool is the mouse's (docs/physics.md §10).
+    bool planMode() const { return m_planMode; }
+    PlanTool* planTool() const { return m_planTool; }
     /// Whether the genuine vakonomic body (a third body) is drawn.
     bool showsVakonomic() const { return m_look.vakonomic; }
     /// Whether the perturbed bodies are drawn when the scene has a perturbation
@@ -117,6 +121,8 @@ class SceneCanvas : public QWidget {
     void keepViewForNextPath() { m_view.setKeepViewForNextPath(true); }
     void setFollowBody(bool follow);
     void setDrawMode(bool on);
+    /// The Plan tool and panning take the mouse; ends draw mode.
+    void setPlanMode(bool on);
     void zoomBy(double factor);
     void setShowVakonomic(bool show);
     void setShowOpenLoop(bool show);
@@ -130,6 +136,7 @@ class SceneCanvas : public QWidget {
     /// The user moved (drag) or deleted (right click) a vertex of the drawn path in draw mode.
     void pointsEdited(const std::vector<std::pair<double, double>>& points);
     void followBodyChanged(bool follow);
+    void planModeChanged(bool on);
     /// The user dragged the controlled body sideways at time t: a push of pushDy [m] to the
     /// left of its heading (docs/physics.md §9).
     void pushDragged(double t, double pushDy);
@@ -151,9 +158,9 @@ class SceneCanvas : public QWidget {
     BodyLook bodyLook() const;
     /// The tools the mouse reaches in the current mode, in the order they are offered a press.
     std::vector<CanvasTool*> tools() const;
-    /// Every tool, in the order of their gestures' priority: editing a point, a stroke, a push,
-    /// panning.
-    std::array<CanvasTool*, 4> allTools() const;
+    /// Every tool, in the order of their gestures' priority: editing a point, a stroke, a plan's
+    /// handle, a push, panning.
+    std::array<CanvasTool*, 5> allTools() const;
     /// After a gesture began or ended: the cursor of the gesture under way, else the mode's.
     void updateCursor();
     /// The path's band, the controlled trail and the knife point P again over the bodies drawn
@@ -191,6 +198,10 @@ class SceneCanvas : public QWidget {
     /// The legend's strip, from a layer made once per size, style and shown bodies.
     void paintLegendLayer(QPainter& p);
     void paintTimeReadout(QPainter& p, double tEnd) const;
+    /// Plan mode: the chosen motion and how to use the tool, under the time line.
+    void paintPlanReadout(QPainter& p) const;
+    /// The readout's height [px] (0 outside plan mode): a fit keeps the scene below it.
+    double planReadoutHeight() const;
     /// The static layer (grid, path, legend) from the layer cache.
     const QPixmap& background();
     /// The static layer onto the widget within region: the cached background, or while following
@@ -241,9 +252,11 @@ class SceneCanvas : public QWidget {
     CanvasView m_view;
     CanvasLook m_look; // the style, the bodies shown and the legend
     bool m_drawMode = false;
+    bool m_planMode = false;
     DrawTool* m_drawTool;
     EditPointsTool* m_editTool;
     PushTool* m_pushTool;
+    PlanTool* m_planTool;
     PanTool* m_panTool;
     mutable const Solution* m_boundsOf = nullptr; // the solution m_pathBounds belongs to
     mutable QRectF m_pathBounds;

@@ -4,10 +4,12 @@
 #include "canvas/edit_points_tool.h"
 #include "canvas/masked_layer.h"
 #include "canvas/pin_painter.h"
+#include "canvas/plan_tool.h"
 #include "canvas/trail_stroke.h"
 #include "document/pin_set.h"
 #include "document/scene_document.h"
 
+#include <QFontMetricsF>
 #include <QPaintEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -280,9 +282,52 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
     }
     // what the gestures show: a push being dragged, the drawn path's points, a stroke
     m_pushTool->paint(p);
-    if (m_drawMode) {
+    if (m_planMode) {
+        p.save();
+        p.setClipRect(drawingArea());
+        m_planTool->paint(p);
+        paintPlanReadout(p);
+        p.restore();
+    }
+    if (m_drawMode && !m_planMode) {
         m_editTool->paint(p);
         m_drawTool->paint(p);
+    }
+}
+
+double SceneCanvas::planReadoutHeight() const {
+    if (!m_planMode)
+        return 0;
+    QFont font = this->font();
+    font.setPointSizeF(font.pointSizeF() * m_look.style.lineScale);
+    const QFontMetricsF metrics(font);
+    const int lines = m_look.style.largeTime ? 1 : 2;
+    return 6 * m_look.style.lineScale + lines * (metrics.lineSpacing() + 4);
+}
+
+void SceneCanvas::paintPlanReadout(QPainter& p) const {
+    // the chosen motion's family, k, Psi0, lambda(0), t and cut time, and how to use the tool,
+    // in the corner under the time line
+    QFont font = this->font();
+    font.setPointSizeF(font.pointSizeF() * m_look.style.lineScale);
+    p.setFont(font);
+    const QFontMetricsF metrics(font);
+    QStringList lines{m_planTool->chosenSummary()};
+    // presenting, the chosen motion alone: the drawing keeps the room
+    if (!m_look.style.largeTime)
+        lines << tr("Plan: drag the target's dot or its heading's handle (Shift snaps), or the "
+                    "start; click a motion to choose it");
+    const QRectF area = drawingArea();
+    QPointF at = area.topLeft() + QPointF(10, 6 * m_look.style.lineScale + metrics.ascent());
+    for (const QString& line : lines) {
+        const QString shown = metrics.elidedText(line, Qt::ElideRight, area.width() - 24);
+        const QRectF box = metrics.boundingRect(shown).translated(at).adjusted(-4, -2, 4, 2);
+        p.setPen(Qt::NoPen);
+        p.setBrush(QColor(255, 255, 255, 215));
+        p.drawRect(box);
+        p.setPen(Qt::black);
+        p.drawText(at, shown);
+        at.ry() += metrics.lineSpacing() + 4;
     }
 }
 

@@ -5,6 +5,7 @@
 #include "document/scene_command.h"
 #include "document/scene_document.h"
 #include "document/scene_files.h"
+#include "scene/scene_plan.h"
 #include "systems/system.h"
 
 #include <exception>
@@ -21,7 +22,9 @@ void SceneDocument::apply(const Scene& scene) {
 }
 
 void SceneDocument::install(const Scene& scene, const QString& description) {
-    check(scene); // a scene that does not solve never replaces the current one
+    check(scene);   // a scene that does not solve never replaces the current one
+    if (scene.plan) // nor one whose chosen motion does not exist (docs/physics.md §10)
+        planOf(*scene.plan, *m_checked);
     PinSet::check(*this, scene);
     if (description.isEmpty()) {
         m_undo->clear();

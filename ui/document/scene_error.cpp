@@ -15,6 +15,8 @@ SceneError SceneError::of(const InputError& e) {
     Part part = Part::Path;
     if (first == QLatin1String("perturbation"))
         part = Part::Perturbation;
+    else if (first == QLatin1String("plan")) // the Plan tool's (docs/physics.md §10)
+        part = Part::Other;
     else if (system.contains(first))
         part = Part::System;
     return {part, where, QString::fromStdString(e.what())};

@@ -1,7 +1,17 @@
 #pragma once
+#include "planning/pose_planner.h"
+#include "scene/scene.h"
+
 #include <QWidget>
 
+#include <memory>
+#include <optional>
+
 class QTextBrowser;
+
+namespace chaplygin {
+class Solution;
+}
 
 namespace chaplygin::ui {
 
@@ -29,12 +39,18 @@ class EquationsPanel : public QWidget {
     void showEvent(QShowEvent* e) override;
 
   private:
+    /// The chosen motion of the scene's plan (docs/physics.md §10), empty without one.
+    QString planSection(const Solution& solution);
     SceneDocument* m_document;
     QTextBrowser* m_view;
     double m_time = 0;
     bool m_stale = true;
     double m_basePoints = 0;
     QString m_html;
+    std::optional<ScenePlan> m_planOf; // the plan m_planned was made for
+    std::shared_ptr<const Solution> m_plannedFor;
+    PlanRequest m_request;
+    Plan m_planned;
 };
 
 } // namespace chaplygin::ui

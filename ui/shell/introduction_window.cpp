@@ -181,6 +181,11 @@ IntroductionWindow::IntroductionWindow(bool useSettings, QWidget* parent) : QDia
            "<b>vakonomic body</b> obeys the other mechanics the paper discusses: its \u03bb "
            "follows an equation of its own, only its start can be chosen, and it cannot keep to "
            "the path either.</p>");
+    m_html += tr("<p><b>Plan</b> (Edit menu) turns this round: drag a target pose and the "
+                 "program finds every vakonomic motion from the start that reaches it, choosing "
+                 "only \u03bb(0). The fastest is drawn in full and certified; the fainter ones "
+                 "arrive later, each labelled with its time. Where two are equally fast, both are "
+                 "drawn in full.</p>");
     auto* text = new QLabel(withDottedSymbolFont(m_html));
     text->setWordWrap(true);
     text->setTextFormat(Qt::RichText);

@@ -91,6 +91,12 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     connect(m_document, &SceneDocument::fileNameChanged, this, &MainWindow::updateTitle);
     connect(m_document, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
     connect(m_document, &SceneDocument::sceneApplied, this, &MainWindow::showScene);
+    // a scene that comes with a plan shows it (docs/physics.md §10)
+    connect(m_document, &SceneDocument::sceneApplied, this,
+            [this](const Scene& scene, bool pathChanged) {
+                if (pathChanged && scene.plan)
+                    m_canvas->setPlanMode(true);
+            });
     connect(m_document, &SceneDocument::recentFilesChanged, this, &MainWindow::rebuildRecentMenu);
     connect(m_playback, &Playback::timeChanged, this, &MainWindow::onTime);
     connect(m_plots, &PlotsPanel::seekRequested, m_playback, &Playback::seek);

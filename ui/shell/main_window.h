@@ -94,6 +94,8 @@ class MainWindow : public QMainWindow {
     TimelineBar* timeline() const { return m_timeline; }
     QUndoStack* undoStack() const;
     QAction* followAction() const { return m_followAction; }
+    /// Edit > Plan a motion: the canvas's Plan tool (docs/physics.md §10).
+    QAction* planAction() const { return m_planAction; }
     QMenu* recentMenu() const { return m_recentMenu; }
     PresentationMode* presentation() const { return m_presentation; }
     BodyDisplayMenu* bodyDisplayMenu() const { return m_bodyMenu; }
@@ -177,6 +179,7 @@ class MainWindow : public QMainWindow {
     QMenu* m_viewMenu = nullptr;
     QAction* m_vakonomicAction = nullptr; // View > Genuine vakonomic body
     QAction* m_followAction = nullptr;
+    QAction* m_planAction = nullptr;
     ElidedLabel* m_status;
     ExportReport* m_exportReport;
     PresentationMode* m_presentation = nullptr;

@@ -2,6 +2,7 @@
 // Compare, Help), kept apart from main_window.cpp, which builds and wires the docks.
 #include "shell/main_window.h"
 
+#include "canvas/plan_tool.h"
 #include "canvas/scene_canvas.h"
 #include "common/atomic_file.h"
 #include "common/input_error.h"
@@ -88,6 +89,39 @@ void MainWindow::buildMenus() {
     m_redoAction = redo;
     edit->addAction(undo);
     edit->addAction(redo);
+    edit->addSeparator();
+    // pose to pose (docs/physics.md §10): the Plan tool, in the menu, on the toolbar and a key
+    m_planAction = edit->addAction(tr("P&lan a motion (pose to pose)"));
+    m_planAction->setObjectName(QStringLiteral("planAction"));
+    m_planAction->setCheckable(true);
+    m_planAction->setShortcut(QKeySequence(tr("Ctrl+Shift+T")));
+    m_planAction->setIconText(tr("Plan"));
+    m_planAction->setToolTip(tr("Plan: drag the target pose (its dot and its heading's handle; "
+                                "Shift snaps) and see every genuine vakonomic motion that "
+                                "reaches it, the fastest in full; click one to choose it"));
+    connect(m_planAction, &QAction::toggled, m_canvas, &SceneCanvas::setPlanMode);
+    connect(m_canvas, &SceneCanvas::planModeChanged, m_planAction, &QAction::setChecked);
+    QAction* playPlan = edit->addAction(tr("Play the planned motion"));
+    playPlan->setObjectName(QStringLiteral("playPlanAction"));
+    playPlan->setIconText(tr("Play plan"));
+    playPlan->setShortcut(QKeySequence(tr("Ctrl+Shift+Space")));
+    playPlan->setToolTip(tr("The genuine vakonomic body along the chosen motion, with the free "
+                            "ghost from the same start"));
+    playPlan->setEnabled(false);
+    connect(playPlan, &QAction::triggered, m_canvas->planTool(), &PlanTool::play);
+    connect(m_canvas, &SceneCanvas::planModeChanged, playPlan, &QAction::setEnabled);
+    QAction* trackPlan = edit->addAction(tr("&Track this plan"));
+    trackPlan->setObjectName(QStringLiteral("trackPlanAction"));
+    trackPlan->setIconText(tr("Track plan"));
+    trackPlan->setToolTip(tr("Make the chosen motion's knife track the path: the controlled body "
+                             "and the genuine vakonomic body then coincide"));
+    trackPlan->setEnabled(false);
+    connect(trackPlan, &QAction::triggered, m_canvas->planTool(), &PlanTool::trackPlan);
+    connect(m_canvas, &SceneCanvas::planModeChanged, trackPlan, &QAction::setEnabled);
+    m_timeline->addSeparator();
+    m_timeline->addAction(m_planAction);
+    m_timeline->addAction(playPlan);
+    m_timeline->addAction(trackPlan);
 
     QMenu* view = m_viewMenu = menuBar()->addMenu(tr("&View"));
     view->setObjectName(QStringLiteral("viewMenu"));

@@ -233,3 +233,49 @@ TEST(SceneJson, BadPerturbationsNameTheirField) {
     EXPECT_NE(errorOf(with("{\"t_push\": 1}")).find("/perturbation/t_push: needs a push"),
               std::string::npos);
 }
+
+TEST(SceneJson, PlanRoundTripsAndOldFilesLoadWithout) {
+    Scene s = presetScene("line");
+    EXPECT_EQ(sceneToJson(s).find("\"plan\""), std::string::npos);
+    EXPECT_EQ(sceneFromJson(sceneToJson(s)).plan, std::nullopt);
+    ScenePlan plan;
+    plan.to = {0.1, 1.0 / 3.0, -2.75};
+    plan.choice = 2;
+    s.plan = plan;
+    EXPECT_EQ(sceneFromJson(sceneToJson(s)), s);
+    plan.from = Pose{-1.5, 0.25, 3.0};
+    plan.horizon = 12.5;
+    s.plan = plan;
+    const Scene back = sceneFromJson(sceneToJson(s));
+    EXPECT_EQ(back, s);
+    ASSERT_TRUE(back.plan && back.plan->from);
+    EXPECT_EQ(back.plan->from->phi, 3.0);
+    EXPECT_EQ(back.plan->to.y, 1.0 / 3.0);
+    // the comparison sees every field
+    Scene other = s;
+    other.plan->from->y = 0.5;
+    EXPECT_FALSE(other == s);
+    other = s;
+    other.plan->horizon.reset();
+    EXPECT_FALSE(other == s);
+}
+
+TEST(SceneJson, BadPlansNameTheirField) {
+    std::string base = sceneToJson(presetScene("line"));
+    base.resize(base.rfind('}'));
+    const auto with = [&](const std::string& p) { return base + ", \"plan\": " + p + "}"; };
+    const auto expectError = [&](const std::string& plan, const std::string& message) {
+        EXPECT_NE(errorOf(with(plan)).find(message), std::string::npos) << errorOf(with(plan));
+    };
+    expectError("[1, 2, 3]", "scene file /plan: must be an object");
+    expectError("{}", "scene file /plan: missing \"to\"");
+    expectError("{\"to\": [1, 2]}", "scene file /plan/to: must be [x, y, phi]");
+    expectError("{\"to\": [1, \"2\", 0]}", "scene file /plan/to/1: must be a number");
+    expectError("{\"to\": [1, 2, null]}", "scene file /plan/to/2: must be a number");
+    expectError("{\"to\": [1, 2, 0], \"from\": 3}", "scene file /plan/from: must be [x, y, phi]");
+    expectError("{\"to\": [1, 2, 0], \"horizon\": 0}", "scene file /plan/horizon: must be > 0");
+    expectError("{\"to\": [1, 2, 0], \"horizon\": -3}", "scene file /plan/horizon: must be > 0");
+    expectError("{\"to\": [1, 2, 0], \"choice\": -1}", "scene file /plan/choice: must be a whole");
+    expectError("{\"to\": [1, 2, 0], \"choice\": 0.5}", "scene file /plan/choice: must be a whole");
+    expectError("{\"to\": [1, 2, 0], \"target\": 1}", "scene file /plan/target: unknown field");
+}

@@ -1,0 +1,500 @@
+// The Plan tool (docs/physics.md §10) driven with the mouse: its action in the menu, on the
+// toolbar and on a key; the target dragged by its handles; the drawn tracks against the
+// geodesic integrated here by RK4 from the planned start (not the closed form the tool draws);
+// choosing a motion by a click; one undo step per change; the plan in the scene file.
+#include "canvas/plan_tool.h"
+#include "canvas/scene_canvas.h"
+#include "common/input_error.h"
+#include "document/scene_document.h"
+#include "gui_test_support.h"
+#include "scene/scene_json.h"
+#include "scene/scene_plan.h"
+#include "shell/main_window.h"
+#include "shell/presentation_mode.h"
+#include "shell/timeline_bar.h"
+
+#include <QAction>
+#include <QMenuBar>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <numbers>
+
+using namespace chaplygin;
+using namespace chaplygin::ui;
+
+namespace {
+
+// the sideways shift by b from (0, 0, 0) with b = v_T = 1 (the shared notes' known answer, an
+// independent shooting computation): two minimisers on the Maxwell set
+constexpr double kSidewaysTime = 3.340383019231;
+
+// a straight drawn path along x from the origin: the plan starts at (0, 0, 0)
+Scene straightScene() {
+    Scene s;
+    s.path.kind = PathKind::Polyline;
+    s.path.points = {{0, 0}, {4, 0}};
+    return s;
+}
+
+struct Knife {
+    double x, y, phi, psi, lambda;
+};
+
+// the knife's motion, x' = v sin Psi cos phi, y' = v sin Psi sin phi, phi' = v cos Psi / b,
+// Psi' = Lambda, Lambda' = -(v^2 / 2 b^2) sin 2 Psi, by classical RK4 in n steps to time t
+std::vector<Knife> integrateKnife(Knife k, double b, double v, double t, int n) {
+    auto rate = [&](const Knife& s) {
+        return Knife{v * std::sin(s.psi) * std::cos(s.phi), v * std::sin(s.psi) * std::sin(s.phi),
+                     v * std::cos(s.psi) / b, s.lambda, -v * v / (2 * b * b) * std::sin(2 * s.psi)};
+    };
+    auto step = [](const Knife& s, const Knife& d, double h) {
+        return Knife{s.x + h * d.x, s.y + h * d.y, s.phi + h * d.phi, s.psi + h * d.psi,
+                     s.lambda + h * d.lambda};
+    };
+    std::vector<Knife> out{k};
+    const double h = t / n;
+    for (int i = 0; i < n; ++i) {
+        const Knife k1 = rate(k), k2 = rate(step(k, k1, h / 2)), k3 = rate(step(k, k2, h / 2)),
+                    k4 = rate(step(k, k3, h));
+        k = Knife{k.x + h / 6 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x),
+                  k.y + h / 6 * (k1.y + 2 * k2.y + 2 * k3.y + k4.y),
+                  k.phi + h / 6 * (k1.phi + 2 * k2.phi + 2 * k3.phi + k4.phi),
+                  k.psi + h / 6 * (k1.psi + 2 * k2.psi + 2 * k3.psi + k4.psi),
+                  k.lambda + h / 6 * (k1.lambda + 2 * k2.lambda + 2 * k3.lambda + k4.lambda)};
+        out.push_back(k);
+    }
+    return out;
+}
+
+double distanceToSegment(QPointF p, QPointF a, QPointF b) {
+    const QPointF ab = b - a, ap = p - a;
+    const double len2 = QPointF::dotProduct(ab, ab);
+    const double t = len2 > 0 ? std::clamp(QPointF::dotProduct(ap, ab) / len2, 0.0, 1.0) : 0.0;
+    return std::hypot(ap.x() - t * ab.x(), ap.y() - t * ab.y());
+}
+
+double distanceToPolyline(QPointF p, const std::vector<QPointF>& line) {
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k + 1 < line.size(); ++k)
+        best = std::min(best, distanceToSegment(p, line[k], line[k + 1]));
+    return best;
+}
+
+double angleMiss(double a, double b) {
+    return std::abs(std::remainder(a - b, 2 * std::numbers::pi));
+}
+
+void sendMove(QWidget* w, QPointF at, Qt::KeyboardModifiers modifiers) {
+    QMouseEvent move(QEvent::MouseMove, at, w->mapToGlobal(at), Qt::NoButton, Qt::LeftButton,
+                     modifiers);
+    QApplication::sendEvent(w, &move);
+}
+
+// a drag of the left button from `from` to `to` in `steps` moves
+void drag(QWidget* w, QPointF from, QPointF to, Qt::KeyboardModifiers modifiers, int steps = 12) {
+    QTest::mousePress(w, Qt::LeftButton, modifiers, from.toPoint());
+    for (int i = 1; i <= steps; ++i)
+        sendMove(w, from + (to - from) * (double(i) / steps), modifiers);
+    QTest::mouseRelease(w, Qt::LeftButton, modifiers, to.toPoint());
+}
+
+} // namespace
+
+class TestPlanTool : public QObject {
+    Q_OBJECT
+  private slots:
+    void initTestCase();
+    void init();
+    void cleanup();
+
+    void reachedFromMenuToolbarAndKey();
+    void draggingTheTargetDrawsTheOptimalMotions();
+    void theHeadingHandleTurnsTheTarget();
+    void aClickChoosesAnotherMotion();
+    void undoRestoresThePlan();
+    void trackingThePlanMakesItThePath();
+    void playAnimatesTheChosenMotion();
+    void thePlanIsSavedAndRestored();
+    void aBadPlanInAFileIsRefusedNamingItsField();
+    void fitsAt1024x768AndInPresentation();
+
+  private:
+    /// The drawn track of motion i against the RK4 integration of its start: every drawn
+    /// vertex and every integrated point within 0.25 device pixels of the other curve; its
+    /// end on the target.
+    void checkDrawnTrack(int i);
+    std::unique_ptr<MainWindow> m_window;
+    SceneCanvas* m_canvas = nullptr;
+    PlanTool* m_tool = nullptr;
+};
+
+void TestPlanTool::initTestCase() {
+    test::useTestSettings(QStringLiteral("ui_plan_tool_tests"));
+}
+
+void TestPlanTool::init() {
+    m_window = test::showTestWindow();
+    QVERIFY(m_window);
+    m_window->document()->loadNow(straightScene());
+    m_canvas = m_window->canvas();
+    m_tool = m_canvas->planTool();
+    QVERIFY(m_tool);
+}
+
+void TestPlanTool::cleanup() {
+    m_window.reset();
+}
+
+void TestPlanTool::reachedFromMenuToolbarAndKey() {
+    QAction* plan = m_window->planAction();
+    QVERIFY(plan && plan->isCheckable());
+    QVERIFY(m_window->timeline()->actions().contains(plan));
+    bool inMenu = false;
+    for (QAction* menu : m_window->menuBar()->actions())
+        if (menu->menu() && menu->menu()->actions().contains(plan))
+            inMenu = true;
+    QVERIFY(inMenu);
+    QVERIFY(!m_canvas->planMode());
+    QTest::keySequence(m_window.get(), plan->shortcut());
+    QVERIFY(m_canvas->planMode());
+    QVERIFY(plan->isChecked());
+    // drawing ends it
+    m_canvas->setDrawMode(true);
+    QVERIFY(!m_canvas->planMode());
+    QVERIFY(!plan->isChecked());
+    m_canvas->setDrawMode(false);
+    plan->trigger();
+    QVERIFY(m_canvas->planMode());
+}
+
+void TestPlanTool::checkDrawnTrack(int i) {
+    const PlannedGeodesic& g = m_tool->planned().geodesics.at(std::size_t(i));
+    const double b = m_window->document()->solution()->system().b;
+    const double v = m_window->document()->scene().speed;
+    const Pose from = m_tool->plan().from.value_or(Pose{});
+    const int n = 20000;
+    const auto knife = integrateKnife({from.x, from.y, from.phi, g.psi0, g.psidot0}, b, v, g.t, n);
+    // the end on the target
+    const Knife& end = knife.back();
+    const Pose to = m_tool->plan().to;
+    const double miss =
+        std::abs(end.x - to.x) / b + std::abs(end.y - to.y) / b + angleMiss(end.phi, to.phi);
+    QVERIFY2(miss < 1e-8, qPrintable(QString::number(miss)));
+    // the drawn curve and the integrated one within 0.25 device pixels of each other
+    const QTransform world = m_canvas->worldToPixel();
+    const double px = CanvasCurves::kTolerancePx / m_canvas->devicePixelRatioF();
+    std::vector<QPointF> exact;
+    for (const Knife& k : knife)
+        exact.push_back(world.map(QPointF(k.x, k.y)));
+    std::vector<QPointF> drawn;
+    for (QPointF p : m_tool->tracks().at(std::size_t(i)).points)
+        drawn.push_back(world.map(p));
+    QVERIFY(drawn.size() >= 2);
+    double worst = 0;
+    for (QPointF p : drawn)
+        worst = std::max(worst, distanceToPolyline(p, exact));
+    // where it can be seen: the drawn curve is exact in the view, coarser beyond it
+    const QRectF view = QRectF(m_canvas->rect());
+    for (std::size_t k = 0; k < exact.size(); k += 7)
+        if (view.contains(exact[k]))
+            worst = std::max(worst, distanceToPolyline(exact[k], drawn));
+    QVERIFY2(worst <= px, qPrintable(QStringLiteral("%1 px").arg(worst)));
+    // its last point is the target's handle
+    QVERIFY(QLineF(drawn.back(), m_tool->targetHandle()).length() <= px);
+}
+
+void TestPlanTool::draggingTheTargetDrawsTheOptimalMotions() {
+    m_canvas->setPlanMode(true);
+    QTest::qWait(50); // the window's layout settled: the view stays during the drag
+    QVERIFY(m_tool->error().isEmpty());
+    // without a plan the target is the path's end, (4, 0, 0): straight ahead in 4 s
+    QCOMPARE(m_tool->planned().geodesics.front().t, 4.0);
+    const int steps = m_window->undoStack()->count();
+    // dragged with Shift, snapping to half the grid step: exactly the sideways shift (0, 1, 0)
+    const QPointF goal = m_canvas->toPixel({0, 1});
+    // a move each frame: the plans are made on a worker, the latest pose next
+    const QPointF grabbed = m_tool->targetHandle();
+    QTest::mousePress(m_canvas, Qt::LeftButton, Qt::ShiftModifier, grabbed.toPoint());
+    for (int i = 1; i <= 30; ++i) {
+        sendMove(m_canvas, grabbed + (goal - grabbed) * (i / 30.0), Qt::ShiftModifier);
+        QTest::qWait(16);
+    }
+    // the pose dragged to is planned and drawn while the button is still held
+    QTRY_VERIFY2(m_tool->plannedRequest().to.y == 1.0 && m_tool->plannedRequest().to.x == 0.0,
+                 qPrintable(QStringLiteral("planned (%1, %2), dragged to (%3, %4)")
+                                .arg(m_tool->plannedRequest().to.x)
+                                .arg(m_tool->plannedRequest().to.y)
+                                .arg(m_tool->plan().to.x)
+                                .arg(m_tool->plan().to.y)));
+    QVERIFY(m_tool->active());
+    QCOMPARE(m_tool->planned().geodesics.front().t, m_tool->planned().geodesics.at(1).t);
+    QTest::mouseRelease(m_canvas, Qt::LeftButton, Qt::ShiftModifier, goal.toPoint());
+    QCOMPARE(m_window->undoStack()->count(), steps + 1);
+    m_window->document()->flush();
+    QVERIFY(m_window->document()->scene().plan);
+    QCOMPARE(m_window->document()->scene().plan->to.x, 0.0);
+    QCOMPARE(m_window->document()->scene().plan->to.y, 1.0);
+    QCOMPARE(m_window->document()->scene().plan->to.phi, 0.0);
+    const auto& motions = m_tool->planned().geodesics;
+    QVERIFY(motions.size() >= 2);
+    // the Maxwell point: two optimal motions, both at the known least time, both drawn
+    QVERIFY(motions[0].optimal && motions[1].optimal);
+    QVERIFY(std::abs(motions[0].t - kSidewaysTime) < 1e-9);
+    QVERIFY(std::abs(motions[1].t - kSidewaysTime) < 1e-9);
+    QCOMPARE(m_tool->chosen(), 0);
+    QCOMPARE(m_tool->tracks().size(), motions.size());
+    checkDrawnTrack(0);
+    checkDrawnTrack(1);
+    for (int i = 2; i < int(motions.size()); ++i)
+        checkDrawnTrack(i);
+    qInfo("slowest plan while dragging (worker thread): %.2f ms, %d motions listed",
+          m_tool->slowestPlanMs(), int(motions.size()));
+}
+
+void TestPlanTool::theHeadingHandleTurnsTheTarget() {
+    m_canvas->setPlanMode(true);
+    // the heading handle dragged a quarter turn about the target, with Shift: exactly pi/2
+    const QPointF centre = m_tool->targetHandle();
+    const QPointF handle = m_tool->headingHandle();
+    const double r = QLineF(centre, handle).length();
+    drag(m_canvas, handle, centre + QPointF(3, -r), Qt::ShiftModifier);
+    m_window->document()->flush();
+    QCOMPARE(m_tool->plan().to.phi, std::numbers::pi / 2);
+    QCOMPARE(m_window->document()->scene().plan->to.phi, std::numbers::pi / 2);
+    QVERIFY(!m_tool->planned().geodesics.empty());
+    QVERIFY(m_tool->planned().certified);
+    checkDrawnTrack(0);
+}
+
+void TestPlanTool::aClickChoosesAnotherMotion() {
+    m_canvas->setPlanMode(true);
+    Scene s = m_window->document()->scene();
+    s.plan = ScenePlan{};
+    s.plan->to = {0, 1, 0};
+    s.plan->horizon = 5; // the two optima and a few more, apart enough to click
+    m_window->document()->edit(s, QStringLiteral("plan"));
+    m_window->document()->flush();
+    QVERIFY(m_tool->planned().geodesics.size() >= 2);
+    m_canvas->repaint();
+    // a point of the second track far from every other
+    const QTransform world = m_canvas->worldToPixel();
+    std::vector<std::vector<QPointF>> others;
+    for (std::size_t i = 0; i < m_tool->tracks().size(); ++i) {
+        if (i == 1)
+            continue;
+        others.emplace_back();
+        for (QPointF p : m_tool->tracks()[i].points)
+            others.back().push_back(world.map(p));
+    }
+    QPointF click;
+    double farthest = 0;
+    for (QPointF p : m_tool->tracks()[1].points) {
+        const QPointF at = world.map(p);
+        double d = std::numeric_limits<double>::infinity();
+        for (const auto& other : others)
+            d = std::min(d, distanceToPolyline(at, other));
+        if (d > farthest && m_canvas->drawingArea().adjusted(0, 60, 0, 0).contains(at)) {
+            farthest = d;
+            click = at;
+        }
+    }
+    // beyond the tool's reach (6 px) of every other track
+    QVERIFY2(farthest > 8, qPrintable(QString::number(farthest)));
+    const int steps = m_window->undoStack()->count();
+    QTest::mouseClick(m_canvas, Qt::LeftButton, {}, click.toPoint());
+    m_window->document()->flush();
+    QCOMPARE(m_window->undoStack()->count(), steps + 1);
+    QCOMPARE(m_window->document()->scene().plan->choice, 1);
+    QCOMPARE(m_tool->chosen(), 1);
+    // the chosen one ends on the target too
+    checkDrawnTrack(1);
+    m_window->undoStack()->undo();
+    m_window->document()->flush();
+    QCOMPARE(m_tool->chosen(), 0);
+}
+
+void TestPlanTool::playAnimatesTheChosenMotion() {
+    m_canvas->setPlanMode(true);
+    QAction* play = m_window->findChild<QAction*>(QStringLiteral("playPlanAction"));
+    QVERIFY(play && play->isEnabled());
+    QVERIFY(m_window->timeline()->actions().contains(play));
+    QCOMPARE(m_tool->playTime(), -1.0);
+    play->trigger();
+    QVERIFY(m_tool->playing());
+    QTRY_VERIFY_WITH_TIMEOUT(m_tool->playTime() > 0.5, 3000);
+    QVERIFY(m_tool->chosenSummary().contains(QStringLiteral("k = ")));
+    // the straight path's end, 4 s ahead: the last frame is the motion's end
+    QTRY_VERIFY_WITH_TIMEOUT(!m_tool->playing(), 8000);
+    QCOMPARE(m_tool->playTime(), 4.0);
+    m_canvas->setPlanMode(false);
+    QVERIFY(!play->isEnabled());
+    QCOMPARE(m_tool->playTime(), -1.0);
+}
+
+void TestPlanTool::trackingThePlanMakesItThePath() {
+    m_canvas->setPlanMode(true);
+    Scene s = m_window->document()->scene();
+    s.plan = ScenePlan{};
+    s.plan->to = {0, 1, 0};
+    s.plan->choice = 1; // the backing-first twin of the sideways shift
+    m_window->document()->edit(s, QStringLiteral("plan"));
+    m_window->document()->flush();
+    QAction* track = m_window->findChild<QAction*>(QStringLiteral("trackPlanAction"));
+    QVERIFY(track && track->isEnabled());
+    const int steps = m_window->undoStack()->count();
+    track->trigger();
+    m_window->document()->flush();
+    QCOMPARE(m_window->undoStack()->count(), steps + 1);
+    const auto& solution = m_window->document()->solution();
+    QCOMPARE(solution->scene().path.kind, PathKind::Geodesic);
+    // the controlled body and the genuine vakonomic body coincide, and reach the target
+    QVERIFY(std::abs(solution->tEnd() - kSidewaysTime) < 1e-9);
+    double worst = 0;
+    for (int i = 0; i <= 50; ++i) {
+        const MotionSample m = solution->at(solution->tEnd() * i / 50);
+        worst = std::max(
+            {worst, std::abs(m.x - m.vak.x), std::abs(m.y - m.vak.y), angleMiss(m.phi, m.vak.phi)});
+    }
+    QVERIFY2(worst < 1e-8, qPrintable(QString::number(worst)));
+    const MotionSample end = solution->at(solution->tEnd());
+    QVERIFY(std::abs(end.x) + std::abs(end.y - 1) + angleMiss(end.phi, 0) < 1e-8);
+    // the plan stays, its start where the new path begins
+    QCOMPARE(m_tool->chosen(), 1);
+    m_window->undoStack()->undo();
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->solution()->scene().path.kind, PathKind::Polyline);
+}
+
+void TestPlanTool::undoRestoresThePlan() {
+    m_canvas->setPlanMode(true);
+    const Pose before = m_tool->plan().to;
+    const QPointF from = m_tool->targetHandle();
+    drag(m_canvas, from, from + QPointF(-80, -60), {});
+    m_window->document()->flush();
+    QVERIFY(m_window->document()->scene().plan);
+    const Pose moved = m_window->document()->scene().plan->to;
+    QVERIFY(std::hypot(moved.x - before.x, moved.y - before.y) > 0.1);
+    QCOMPARE(m_tool->plan().to.x, moved.x);
+    drag(m_canvas, m_tool->targetHandle(), m_tool->targetHandle() + QPointF(30, 30), {});
+    m_window->document()->flush();
+    m_window->undoStack()->undo();
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->scene().plan->to.x, moved.x);
+    QCOMPARE(m_tool->plan().to.y, moved.y);
+    m_window->undoStack()->undo();
+    m_window->document()->flush();
+    QVERIFY(!m_window->document()->scene().plan);
+    QCOMPARE(m_tool->plan().to.x, before.x);
+    QCOMPARE(m_tool->plan().to.y, before.y);
+}
+
+void TestPlanTool::thePlanIsSavedAndRestored() {
+    Scene s = straightScene();
+    ScenePlan plan;
+    plan.from = Pose{0.5, -0.25, 0.3};
+    plan.to = {1.5, 2.0, -2.0};
+    plan.horizon = 15;
+    s.plan = plan;
+    m_window->document()->loadNow(s);
+    const int count = int(planOf(plan, *m_window->document()->solution()).geodesics.size());
+    QVERIFY(count >= 2);
+    s.plan->choice = count - 1;
+    m_window->document()->loadNow(s);
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("plan.chaplygin.json"));
+    m_window->document()->save(file);
+    SceneDocument other;
+    other.open(file);
+    QVERIFY(other.scene().plan);
+    QVERIFY(*other.scene().plan == *s.plan);
+    // and the window shows it, in plan mode
+    m_canvas->setPlanMode(false);
+    m_window->document()->open(file);
+    QVERIFY(m_canvas->planMode());
+    QCOMPARE(m_tool->chosen(), count - 1);
+    QCOMPARE(m_tool->plan().horizon, std::optional<double>(15));
+}
+
+void TestPlanTool::aBadPlanInAFileIsRefusedNamingItsField() {
+    QTemporaryDir dir;
+    auto write = [&](const std::string& text) {
+        const QString file = dir.filePath(QStringLiteral("bad.chaplygin.json"));
+        std::ofstream(file.toStdString()) << text;
+        return file;
+    };
+    std::string base = sceneToJson(straightScene());
+    base.resize(base.rfind('}'));
+    const auto expectRefused = [&](const std::string& plan, const QString& where) {
+        const QString file = write(base + ", \"plan\": " + plan + "}");
+        const Scene before = m_window->document()->scene();
+        try {
+            m_window->document()->open(file);
+            QFAIL("the file was accepted");
+        } catch (const InputError& e) {
+            const SceneError error = SceneError::of(e);
+            QVERIFY2(error.where == where,
+                     qPrintable(error.where + QStringLiteral(": ") + error.message));
+        }
+        QVERIFY(m_window->document()->scene() == before);
+    };
+    expectRefused("{\"to\": [1, 2, 0], \"horizon\": -1}",
+                  QStringLiteral("scene file /plan/horizon"));
+    expectRefused("{\"to\": [1, null, 0]}", QStringLiteral("scene file /plan/to/1"));
+    expectRefused("{\"to\": [1, 2, 0], \"choice\": 400}", QStringLiteral("plan choice"));
+    // no motion within a horizon too short for the target
+    expectRefused("{\"to\": [3, 0, 0], \"horizon\": 1}", QStringLiteral("plan to"));
+}
+
+void TestPlanTool::fitsAt1024x768AndInPresentation() {
+    Scene s = straightScene();
+    s.plan = ScenePlan{};
+    s.plan->to = {0, 1, 0};
+    m_window->document()->loadNow(s);
+    m_canvas->setPlanMode(true);
+    // CHAPLYGIN_PLAN_SHOTS: a folder for the pictures to look at
+    const QString shots = qEnvironmentVariable("CHAPLYGIN_PLAN_SHOTS");
+    struct Case {
+        QSize size;
+        bool presenting;
+        const char* name;
+    };
+    for (const Case& c :
+         {Case{{1280, 800}, false, "plan-1280x800"}, Case{{1024, 768}, false, "plan-1024x768"},
+          Case{{1024, 768}, true, "plan-presentation-1024x768"}}) {
+        m_window->presentation()->setFullScreen(false);
+        m_window->presentation()->setActive(c.presenting);
+        m_window->resize(c.size);
+        QApplication::processEvents();
+        m_canvas->fitScene();
+        const QRectF area = m_canvas->drawingArea();
+        // the handles and both optimal tracks in the drawing area
+        QVERIFY2(area.contains(m_tool->targetHandle()), c.name);
+        QVERIFY2(area.contains(m_tool->startHandle()), c.name);
+        QVERIFY2(area.contains(m_tool->headingHandle()), c.name);
+        const QTransform world = m_canvas->worldToPixel();
+        for (int i = 0; i < 2; ++i)
+            for (QPointF p : m_tool->tracks().at(std::size_t(i)).points)
+                QVERIFY2(area.adjusted(-1, -1, 1, 1).contains(world.map(p)), c.name);
+        // the three actions on the toolbar, whole in the window
+        for (const char* name : {"planAction", "playPlanAction", "trackPlanAction"}) {
+            QAction* action = m_window->findChild<QAction*>(QLatin1String(name));
+            QVERIFY(action);
+            QWidget* button = m_window->timeline()->widgetForAction(action);
+            QVERIFY2(button && button->isVisible(), name);
+            const QRect box(button->mapTo(m_window.get(), QPoint()), button->size());
+            QVERIFY2(m_window->rect().contains(box), name);
+        }
+        if (!shots.isEmpty())
+            QVERIFY(m_window->grab().save(shots + QLatin1Char('/') + QLatin1String(c.name) +
+                                          QStringLiteral(".png")));
+    }
+    m_window->presentation()->setActive(false);
+}
+
+QTEST_MAIN(TestPlanTool)
+#include "test_plan_tool.moc"
