@@ -11,10 +11,10 @@
 #include "scene/presets.h"
 #include "scene/scene_json.h"
 #include "shell/main_window.h"
+#include "widgets/number_field.h"
 
 #include <QComboBox>
 #include <QDialog>
-#include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -272,7 +272,7 @@ void TestBadInputs::badParameter() {
     QFETCH(double, value);
     QFETCH(QString, expected);
     Snapshot before = snapshot();
-    QDoubleSpinBox* spin = m_window->parametersPanel()->spinBox(name);
+    NumberField* spin = m_window->parametersPanel()->spinBox(name);
     QVERIFY(spin);
     spin->setValue(value);
     ParametersPanel* panel = m_window->parametersPanel();
@@ -287,7 +287,7 @@ void TestBadInputs::negativeInertiaClamps() {
     gyration->setCurrentIndex(1);
     emit gyration->activated(1);
     m_window->document()->flush();
-    QDoubleSpinBox* inertia = panel->spinBox(QStringLiteral("I"));
+    NumberField* inertia = panel->spinBox(QStringLiteral("I"));
     QVERIFY(inertia);
     // the spin box cannot express I < 0: it clamps to the allowed minimum, which solves (b = |a|)
     QCOMPARE(inertia->minimum(), 0.0);

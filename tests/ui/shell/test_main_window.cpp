@@ -11,10 +11,10 @@
 #include "shell/main_window.h"
 #include "shell/playback.h"
 #include "shell/timeline_bar.h"
+#include "widgets/number_field.h"
 
 #include <QComboBox>
 #include <QDockWidget>
-#include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
@@ -219,7 +219,7 @@ void TestMainWindow::parameterChangeUpdatesPlots() {
     QCustomPlot* psi = m_window->plotsPanel()->plot(0);
     QVector<double> before = graphValues(psi);
     QVERIFY(before.size() > 10);
-    QDoubleSpinBox* b = m_window->parametersPanel()->spinBox(QStringLiteral("b"));
+    NumberField* b = m_window->parametersPanel()->spinBox(QStringLiteral("b"));
     QVERIFY(b);
     b->setValue(2.0);
     m_window->document()->flush();
@@ -315,7 +315,7 @@ void TestMainWindow::sliderDragCoalesces() {
 
 void TestMainWindow::invalidParameterKeepsSolution() {
     auto before = m_window->document()->solution();
-    QDoubleSpinBox* b = m_window->parametersPanel()->spinBox(QStringLiteral("b"));
+    NumberField* b = m_window->parametersPanel()->spinBox(QStringLiteral("b"));
     b->setValue(0.2); // below a = 0.5
     m_window->document()->flush();
     QVERIFY(m_window->parametersPanel()->errorText().contains(QStringLiteral("b")));
