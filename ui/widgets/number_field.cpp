@@ -111,11 +111,17 @@ void NumberField::setIntegers(bool integers) {
 }
 
 QString NumberField::withUnit(double v) const {
-    return m_unit.isEmpty() ? formatted(v) : formatted(v) + QLatin1Char(' ') + m_unit;
+    if (m_unit.isEmpty())
+        return formatted(v);
+    // a degree sign follows its number (35°); other units after a space (1.5 kg)
+    return m_unit.startsWith(QChar(0x00b0)) ? formatted(v) + m_unit
+                                            : formatted(v) + QLatin1Char(' ') + m_unit;
 }
 
 void NumberField::showValue() {
     lineEdit()->setText(withUnit(m_value));
+    if (!hasFocus())
+        lineEdit()->setCursorPosition(0); // a long value too narrow to show shows its first digits
 }
 
 QString NumberField::refusalOf(double v) const {
