@@ -74,6 +74,7 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     speedForm->addRow(tr("&Mode"), m_mode);
     layout->addLayout(speedForm);
     m_speedLabel = new QLabel;
+    m_speedLabel->setWordWrap(true); // a long translation wraps instead of widening the dock
     layout->addWidget(m_speedLabel);
 
     m_error = new QLabel;
@@ -129,8 +130,7 @@ ParametersPanel::Row ParametersPanel::addRow(const QString& name, const SystemPa
 
     NumberField* spin = row.spin;
     QSlider* slider = row.slider;
-    connect(spin, &NumberField::messageChanged, this, [this, name](const QString& message) {
-        m_lastEdited = name;
+    connect(spin, &NumberField::messageChanged, this, [this](const QString& message) {
         m_error->setText(message);
         m_error->setVisible(!message.isEmpty());
     });
@@ -231,7 +231,9 @@ void ParametersPanel::showError(const QString& message) {
     // the entry that was refused stays marked until a value is accepted: what is shown red is
     // not what is used
     for (auto& [name, row] : m_rows) {
-        bool invalid = !message.isEmpty() && name == m_lastEdited;
+        // a field's own refusal stays marked too
+        bool invalid =
+            (!message.isEmpty() && name == m_lastEdited) || !row.spin->message().isEmpty();
         if (row.spin->property("invalid").toBool() == invalid)
             continue;
         row.spin->setProperty("invalid", invalid);

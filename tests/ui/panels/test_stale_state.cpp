@@ -50,10 +50,13 @@ void TestStaleState::messagesBelongToTheirScene() {
             refused = QString::fromStdString(e.name);
     QVERIFY(!refused.isEmpty());
     QVERIFY(!m_window->loadGalleryEntry(refused));
-    QVERIFY(!m_window->statusBar()->currentMessage().isEmpty());
+    const QString refusal = m_window->statusBar()->currentMessage();
+    QVERIFY(!refusal.isEmpty());
     QVERIFY(m_window->accuracyReadout()->noteText().contains(QStringLiteral("Refused")));
     choosePreset("circle");
-    QVERIFY(m_window->statusBar()->currentMessage().isEmpty());
+    // the refusal is gone; the status bar names the preset that came instead
+    QVERIFY(!m_window->statusBar()->currentMessage().contains(refusal));
+    QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("circle")));
     QVERIFY(!m_window->accuracyReadout()->noteText().contains(QStringLiteral("Refused")));
     // a refused parameter's message goes with the next scene too
     NumberField* m = m_window->parametersPanel()->spinBox(QStringLiteral("m"));
