@@ -298,7 +298,7 @@ void TestMainWindow::typedParametricPath() {
     m_window->document()->flush();
     QCOMPARE(panel->yOfUEdit()->text(), QStringLiteral("3*sin(u"));
     QCOMPARE(m_window->document()->solution()->system().mass, 2.0);
-    QVERIFY(std::abs(m_window->document()->solution()->path()->length() - 3 * 3.1416) < 1e-9);
+    QVERIFY(std::abs(m_window->document()->solution()->path()->length() - 3 * M_PI) < 1e-9);
 }
 
 void TestMainWindow::sliderDragCoalesces() {
