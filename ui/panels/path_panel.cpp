@@ -117,7 +117,6 @@ PathPanel::PathPanel(QWidget* parent)
     m_smoothing->setValue(kDrawnSmoothing);
     m_smoothing->setToolTip(
         tr("Smooth corners: spline bandwidth in point spacings (0 passes through every point)"));
-    dv->addRow(tr("Smoothing"), m_smoothing);
     m_cornerAngle = new NumberField(tr("Corner angle"));
     m_cornerAngle->setObjectName(QStringLiteral("drawCornerAngle"));
     m_cornerAngle->setMinimum(0);
@@ -128,11 +127,22 @@ PathPanel::PathPanel(QWidget* parent)
     m_cornerAngle->setToolTip(
         tr("Pivot corners: the stroke pivots where it turns by more than this angle between its "
            "neighbouring points; smaller turns are smoothed (docs/user-guide.md, Drawing a path)"));
-    dv->addRow(tr("Corner angle"), m_cornerAngle);
+    // one row for both: the dock fits a 1280 x 800 screen unscrolled
+    auto* shapeRow = new QHBoxLayout;
+    for (NumberField* field : {m_smoothing, m_cornerAngle}) {
+        auto* label = new QLabel(field->name());
+        label->setBuddy(field);
+        label->setToolTip(field->toolTip());
+        shapeRow->addWidget(label);
+        shapeRow->addWidget(field, 1);
+    }
+    dv->addRow(shapeRow);
     for (NumberField* field : {m_smoothing, m_cornerAngle})
         connect(field, &NumberField::messageChanged, this, &PathPanel::showError);
     m_polylineInfo = new QLabel;
     dv->addRow(m_polylineInfo);
+    dv->setRowVisible(m_polylineInfo, false); // no empty line under a path that is not drawn
+    m_drawnForm = dv;
     layout->addWidget(drawn);
     layout->addStretch(1);
     for (QComboBox* combo : findChildren<QComboBox*>()) {
@@ -244,6 +254,7 @@ void PathPanel::setScene(const Scene& scene) {
                 .arg(p.points.size())
                 .arg(p.corners == CornerMode::Pivot ? tr("pivot") : tr("smooth")));
     }
+    m_drawnForm->setRowVisible(m_polylineInfo, p.kind == PathKind::Polyline);
     updateKind();
 }
 

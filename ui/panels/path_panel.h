@@ -6,6 +6,7 @@
 #include <utility>
 
 class QComboBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -89,6 +90,7 @@ class PathPanel : public QWidget {
     NumberField* m_smoothing;
     NumberField* m_cornerAngle;
     QLabel* m_polylineInfo;
+    QFormLayout* m_drawnForm;
     bool m_drawing = false;
     // a stroke was drawn since draw mode began: the corners and smoothing shown are its own
     bool m_strokeDrawn = false;

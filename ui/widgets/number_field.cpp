@@ -5,6 +5,8 @@
 
 #include <QKeyEvent>
 #include <QLineEdit>
+#include <QStyle>
+#include <QStyleOptionSpinBox>
 
 #include <charconv>
 #include <cmath>
@@ -223,16 +225,23 @@ void NumberField::focusOutEvent(QFocusEvent* event) {
     QAbstractSpinBox::focusOutEvent(event);
 }
 
+// the spin box's frame and arrows around room for `sample` (QAbstractSpinBox's own hints know no
+// value of this field)
+QSize NumberField::sizeFor(const QString& sample) const {
+    ensurePolished();
+    QStyleOptionSpinBox option;
+    initStyleOption(&option);
+    const QSize content(fontMetrics().horizontalAdvance(sample) + 2,
+                        lineEdit()->minimumSizeHint().height());
+    return style()->sizeFromContents(QStyle::CT_SpinBox, &option, content, this);
+}
+
 QSize NumberField::sizeHint() const {
-    QSize size = QAbstractSpinBox::sizeHint();
-    size.rwidth() += fontMetrics().horizontalAdvance(withUnit(-0.0001234));
-    return size;
+    return sizeFor(withUnit(-12.345)); // a longer value scrolls in the field until it grows
 }
 
 QSize NumberField::minimumSizeHint() const {
-    QSize size = QAbstractSpinBox::minimumSizeHint();
-    size.rwidth() += fontMetrics().horizontalAdvance(withUnit(-1.25));
-    return size;
+    return sizeFor(withUnit(0.5)); // a narrow dock scrolls a longer value
 }
 
 } // namespace chaplygin::ui

@@ -72,6 +72,7 @@ class NumberField : public QAbstractSpinBox {
     void showValue();
     void setMessage(const QString& message);
     QString withUnit(double v) const;
+    QSize sizeFor(const QString& sample) const;
 
     QString m_name;
     QString m_unit;
