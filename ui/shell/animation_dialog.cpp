@@ -63,6 +63,7 @@ AnimationDialog::AnimationDialog(const AnimationSettings& initial, QWidget* pare
         connect(field, &NumberField::messageChanged, this, [this](const QString& message) {
             m_error->setText(message);
             m_error->setVisible(!message.isEmpty());
+            adjustSize(); // the message's line, not a clipped note under it
         });
     m_plots = new QCheckBox(tr("Plots beside the canvas"));
     m_plots->setChecked(initial.withPlots);
