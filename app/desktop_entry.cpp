@@ -17,12 +17,12 @@
 #include "shell/presentation_mode.h"
 #include "translations.h"
 #include "version.h"
+#include "widgets/number_field.h"
 
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
-#include <QDoubleSpinBox>
 #include <QFile>
 #include <QIcon>
 #include <QImage>
@@ -32,7 +32,6 @@
 #include <QLocale>
 #include <QMessageBox>
 #include <QPixmap>
-#include <QSpinBox>
 #include <QTimer>
 
 #include <cstdio>

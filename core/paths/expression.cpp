@@ -58,8 +58,9 @@ void checkCharactersAndNames(const std::string& text, const std::string& variabl
                 ++j;
             std::string name = text.substr(i, j - i);
             if (name != variable && name != "pi" && name != "e" && !kFunctions.count(name)) {
-                std::string hint =
-                    name.size() == 1 ? " (the variable here is " + variable + ")" : "";
+                std::string hint = name.size() == 1 && !variable.empty()
+                                       ? " (the variable here is " + variable + ")"
+                                       : "";
                 throw InputError(at(label, i), "unknown name '" + name + "'" + hint);
             }
             i = j;
@@ -391,6 +392,22 @@ Jet3 Expression::jet(double at) const {
 
 const std::string& Expression::text() const {
     return m_impl->text;
+}
+
+double evaluateNumber(const std::string& text, const std::string& label) {
+    checkCharactersAndNames(text, std::string(), label); // no variable: every name is a constant
+    mu::Parser parser;
+    defineCommon(parser);
+    double value = 0;
+    try {
+        parser.SetExpr(text);
+        value = parser.Eval();
+    } catch (const mu::Parser::exception_type& e) {
+        throw InputError(at(label, static_cast<std::size_t>(std::max(0, e.GetPos()))), e.GetMsg());
+    }
+    if (!std::isfinite(value))
+        throw InputError(label, "'" + text.substr(0, 40) + "' is not a finite number");
+    return value;
 }
 
 } // namespace chaplygin

@@ -30,4 +30,10 @@ class Expression {
     std::shared_ptr<const Impl> m_impl;
 };
 
+/// A typed number in the same syntax without a variable ("2*pi", "1e6", "sqrt(2)"), evaluated
+/// once by muparser in double precision: a plain decimal reads as strtod reads it. Throws
+/// InputError whose where() is label or "<label>, position N" for a syntax error, and one that
+/// says so for a result that is not finite (1/0, 10^400).
+double evaluateNumber(const std::string& text, const std::string& label);
+
 } // namespace chaplygin

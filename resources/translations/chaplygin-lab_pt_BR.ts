@@ -803,16 +803,8 @@ realimentação: %2</translation>
         <translation>Procurar…</translation>
     </message>
     <message>
-        <source> fps</source>
-        <translation> qps</translation>
-    </message>
-    <message>
         <source>px</source>
         <translation>px</translation>
-    </message>
-    <message>
-        <source> × real time</source>
-        <translation> × tempo real</translation>
     </message>
     <message>
         <source>Plots beside the canvas</source>
@@ -845,6 +837,22 @@ realimentação: %2</translation>
     <message>
         <source>MP4 video (*.mp4);;GIF (*.gif);;PNG frames into a folder (*)</source>
         <translation>Vídeo MP4 (*.mp4);;GIF (*.gif);;Quadros PNG numa pasta (*)</translation>
+    </message>
+    <message>
+        <source>fps</source>
+        <translation>qps</translation>
+    </message>
+    <message>
+        <source>width</source>
+        <translation>largura</translation>
+    </message>
+    <message>
+        <source>height</source>
+        <translation>altura</translation>
+    </message>
+    <message>
+        <source>× real time</source>
+        <translation>× tempo real</translation>
     </message>
 </context>
 <context>
@@ -1524,6 +1532,10 @@ realimentação: %2</translation>
         <source>Make the chosen motion&apos;s knife track the path: the controlled body and the genuine vakonomic body then coincide</source>
         <translation>Tornar o rastro da lâmina do movimento escolhido o caminho: o corpo controlado e o corpo vakonômico genuíno então coincidem</translation>
     </message>
+    <message>
+        <source>Preset %1 loaded; Ctrl+Z goes back</source>
+        <translation>Predefinição %1 carregada; Ctrl+Z desfaz</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::MethodsPanel</name>
@@ -1636,6 +1648,33 @@ O que os estudantes devem observar…</translation>
     </message>
 </context>
 <context>
+    <name>chaplygin::ui::NumberField</name>
+    <message>
+        <source>%1 must be greater than %2</source>
+        <translation>%1 deve ser maior que %2</translation>
+    </message>
+    <message>
+        <source>%1 must be at least %2</source>
+        <translation>%1 deve ser no mínimo %2</translation>
+    </message>
+    <message>
+        <source>%1 must be less than %2</source>
+        <translation>%1 deve ser menor que %2</translation>
+    </message>
+    <message>
+        <source>%1 must be at most %2</source>
+        <translation>%1 deve ser no máximo %2</translation>
+    </message>
+    <message>
+        <source>%1 must be a whole number</source>
+        <translation>%1 deve ser um número inteiro</translation>
+    </message>
+    <message>
+        <source>invalid: %1</source>
+        <translation>inválido: %1</translation>
+    </message>
+</context>
+<context>
     <name>chaplygin::ui::ParametersPanel</name>
     <message>
         <source>Chaplygin sleigh</source>
@@ -1734,8 +1773,8 @@ O que os estudantes devem observar…</translation>
         <translation>inválido: %1</translation>
     </message>
     <message>
-        <source>%1 [%2]: %3; slider %4 … %5 %2</source>
-        <translation>%1 [%2]: %3; controle deslizante %4 … %5 %2</translation>
+        <source>%1 [%2]: %3; slider %4 … %5 %2; type any value or an expression such as 2*pi or 1e6</source>
+        <translation>%1 [%2]: %3; controle deslizante %4 … %5 %2; digite qualquer valor ou uma expressão como 2*pi ou 1e6</translation>
     </message>
 </context>
 <context>
@@ -1817,10 +1856,6 @@ O que os estudantes devem observar…</translation>
         <translation>suave (spline pelos pontos)</translation>
     </message>
     <message>
-        <source>pivot (turn in place where the stroke turns by more than 35°, smooth between)</source>
-        <translation>pivô (giro no lugar onde o traço vira mais de 35°, suave entre eles)</translation>
-    </message>
-    <message>
         <source>How a drawn path&apos;s corners are followed</source>
         <translation>Como os cantos de um caminho desenhado são seguidos</translation>
     </message>
@@ -1849,16 +1884,44 @@ O que os estudantes devem observar…</translation>
         <translation>suaves</translation>
     </message>
     <message>
-        <source>The range of x [m] (graph) or of u (parametric), traversed from the first to the second; Enter applies the path</source>
-        <translation>O intervalo de x [m] (gráfico) ou de u (paramétrico), percorrido do primeiro ao segundo valor; Enter aplica o caminho</translation>
-    </message>
-    <message>
         <source>smooth (spline)</source>
         <translation>suave (spline)</translation>
     </message>
     <message>
         <source>pivot (turn in place)</source>
         <translation>pivô (giro no lugar)</translation>
+    </message>
+    <message>
+        <source>x from</source>
+        <translation>x de</translation>
+    </message>
+    <message>
+        <source>x to</source>
+        <translation>x até</translation>
+    </message>
+    <message>
+        <source>The range of x [m] (graph) or of u (parametric), traversed from the first to the second; a number or an expression such as 2*pi; Enter applies the path</source>
+        <translation>O intervalo de x [m] (gráfico) ou de u (paramétrico), percorrido do primeiro ao segundo; um número ou uma expressão como 2*pi; Enter aplica o caminho</translation>
+    </message>
+    <message>
+        <source>pivot (turn in place where the stroke turns by more than the corner angle, smooth between)</source>
+        <translation>pivô (gira no lugar onde o traço vira mais que o ângulo de canto, suave entre os cantos)</translation>
+    </message>
+    <message>
+        <source>Corner angle</source>
+        <translation>Ângulo de canto</translation>
+    </message>
+    <message>
+        <source>Pivot corners: the stroke pivots where it turns by more than this angle between its neighbouring points; smaller turns are smoothed (docs/user-guide.md, Drawing a path)</source>
+        <translation>Cantos com pivô: o traço pivota onde vira mais que este ângulo entre seus pontos vizinhos; viradas menores são suavizadas (docs/user-guide.md, Drawing a path)</translation>
+    </message>
+    <message>
+        <source>u from</source>
+        <translation>u de</translation>
+    </message>
+    <message>
+        <source>u to</source>
+        <translation>u até</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,6 @@
-// libFuzzer target: the expression front end, the path tabulation behind it and the cusp search.
-// Any input must end in a compiled expression or an InputError: never a crash, a hang or UB.
+// libFuzzer target: the expression front end (and the number fields' evaluateNumber), the path
+// tabulation behind it and the cusp search. Any input must end in a compiled expression or an
+// InputError: never a crash, a hang or UB.
 #include "common/input_error.h"
 #include "paths/cusp_finder.h"
 #include "paths/expression.h"
@@ -19,6 +20,12 @@ constexpr std::size_t kHalvingBudget = chaplygin::PathTable::kHalvingBudget / 10
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     std::string text(reinterpret_cast<const char*>(data), size);
+    try {
+        // the number fields' reading of the same text: a finite double or an InputError
+        if (!std::isfinite(chaplygin::evaluateNumber(text, "m")))
+            __builtin_trap();
+    } catch (const chaplygin::InputError&) {
+    }
     try {
         chaplygin::Expression e = chaplygin::Expression::compile(text, "x", "y(x)");
         for (double x : {-1.5, 0.0, 0.25, 2.0}) {

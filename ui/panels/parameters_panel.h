@@ -9,16 +9,18 @@
 #include <string>
 
 class QComboBox;
-class QDoubleSpinBox;
 class QFormLayout;
 class QLabel;
 class QSlider;
 
 namespace chaplygin::ui {
 
-/// The parameters dock: the system, a spin box and a slider per parameter (units in the
-/// tooltips), the derived m_eff, a, b and I, the speed mode and v_T or v_s. Every edit emits
-/// sceneEdited with the whole new scene; the owner validates it and pushes an undo step.
+class NumberField;
+
+/// The parameters dock: the system, a number field (widgets/number_field) and a slider per
+/// parameter (units in the tooltips), the derived m_eff, a, b and I, the speed mode and v_T or v_s.
+/// Every edit emits sceneEdited with the whole new scene; the owner validates it and pushes an undo
+/// step.
 class ParametersPanel : public QWidget {
     Q_OBJECT
   public:
@@ -35,8 +37,8 @@ class ParametersPanel : public QWidget {
     /// Whether the parameter's spin box is marked invalid (its value was refused).
     bool isMarkedInvalid(const QString& name) const;
 
-    /// The spin box of a parameter ("m", "a", "b", ..., or "speed"), or null.
-    QDoubleSpinBox* spinBox(const QString& name) const;
+    /// The number field of a parameter ("m", "a", "b", ..., or "speed"), or null.
+    NumberField* spinBox(const QString& name) const;
     QSlider* slider(const QString& name) const;
 
   signals:
@@ -45,7 +47,7 @@ class ParametersPanel : public QWidget {
 
   private:
     struct Row {
-        QDoubleSpinBox* spin = nullptr;
+        NumberField* spin = nullptr;
         QSlider* slider = nullptr;
     };
     void rebuildRows();

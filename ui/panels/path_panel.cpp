@@ -1,10 +1,10 @@
 #include "panels/path_panel.h"
 
 #include "scene/presets.h"
+#include "widgets/number_field.h"
 
 #include <QButtonGroup>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
@@ -26,7 +26,8 @@ constexpr double kTurn = 6.283185307179586;
 
 PathPanel::PathPanel(QWidget* parent)
     : QWidget(parent), m_newCorners(CornerMode::Smooth), m_newSmoothing(kDrawnSmoothing),
-      m_graphRange(PathSource().from, PathSource().to), m_uRange(0.0, kTurn) {
+      m_newCornerAngle(kDefaultCornerAngleDeg), m_graphRange(PathSource().from, PathSource().to),
+      m_uRange(0.0, kTurn) {
     auto* layout = new QVBoxLayout(this);
 
     auto* presetBox = new QGroupBox(tr("Preset (the paper's examples)"));
@@ -65,14 +66,13 @@ PathPanel::PathPanel(QWidget* parent)
     m_yu->setToolTip(tr("y as a function of u [m], e.g. 2*sin(u)"));
     form->addRow(tr("y(u) ="), m_yu);
     auto* range = new QHBoxLayout;
-    m_from = new QDoubleSpinBox;
-    m_to = new QDoubleSpinBox;
-    for (QDoubleSpinBox* s : {m_from, m_to}) {
-        s->setRange(-1e4, 1e4);
-        s->setDecimals(4);
-        s->setKeyboardTracking(false);
+    m_from = new NumberField(tr("x from"));
+    m_to = new NumberField(tr("x to"));
+    for (NumberField* s : {m_from, m_to}) {
         s->setToolTip(tr("The range of x [m] (graph) or of u (parametric), traversed from the "
-                         "first to the second; Enter applies the path"));
+                         "first to the second; a number or an expression such as 2*pi; Enter "
+                         "applies the path"));
+        connect(s, &NumberField::messageChanged, this, &PathPanel::showError);
         range->addWidget(s);
     }
     m_rangeLabel = new QLabel(tr("x from, to"));
@@ -101,24 +101,48 @@ PathPanel::PathPanel(QWidget* parent)
     m_corners->setItemData(0, tr("smooth (spline through the points)"), Qt::ToolTipRole);
     m_corners->addItem(tr("pivot (turn in place)"), int(CornerMode::Pivot));
     m_corners->setItemData(
-        1, tr("pivot (turn in place where the stroke turns by more than 35\u00b0, smooth between)"),
+        1,
+        tr("pivot (turn in place where the stroke turns by more than the corner angle, smooth "
+           "between)"),
         Qt::ToolTipRole);
     m_corners->setToolTip(tr("How a drawn path's corners are followed"));
     auto* drawRow = new QHBoxLayout; // one row: the dock fits a 1280 x 800 screen unscrolled
     drawRow->addWidget(m_draw);
     drawRow->addWidget(m_corners, 1);
     dv->addRow(drawRow);
-    m_smoothing = new QDoubleSpinBox;
-    m_smoothing->setRange(0, 20);
-    m_smoothing->setDecimals(1);
-    m_smoothing->setSingleStep(0.5);
+    m_smoothing = new NumberField(tr("Smoothing"));
+    m_smoothing->setObjectName(QStringLiteral("drawSmoothing"));
+    m_smoothing->setMinimum(0);
+    m_smoothing->setZeroStep(1);
     m_smoothing->setValue(kDrawnSmoothing);
-    m_smoothing->setKeyboardTracking(false);
     m_smoothing->setToolTip(
         tr("Smooth corners: spline bandwidth in point spacings (0 passes through every point)"));
-    dv->addRow(tr("Smoothing"), m_smoothing);
+    m_cornerAngle = new NumberField(tr("Corner angle"));
+    m_cornerAngle->setObjectName(QStringLiteral("drawCornerAngle"));
+    m_cornerAngle->setMinimum(0);
+    m_cornerAngle->setMaximum(180);
+    m_cornerAngle->setZeroStep(1);
+    m_cornerAngle->setUnit(QStringLiteral("\u00b0"));
+    m_cornerAngle->setValue(kDefaultCornerAngleDeg);
+    m_cornerAngle->setToolTip(
+        tr("Pivot corners: the stroke pivots where it turns by more than this angle between its "
+           "neighbouring points; smaller turns are smoothed (docs/user-guide.md, Drawing a path)"));
+    // one row for both: the dock fits a 1280 x 800 screen unscrolled
+    auto* shapeRow = new QHBoxLayout;
+    for (NumberField* field : {m_smoothing, m_cornerAngle}) {
+        auto* label = new QLabel(field->name());
+        label->setBuddy(field);
+        label->setToolTip(field->toolTip());
+        shapeRow->addWidget(label);
+        shapeRow->addWidget(field, 1);
+    }
+    dv->addRow(shapeRow);
+    for (NumberField* field : {m_smoothing, m_cornerAngle})
+        connect(field, &NumberField::messageChanged, this, &PathPanel::showError);
     m_polylineInfo = new QLabel;
     dv->addRow(m_polylineInfo);
+    dv->setRowVisible(m_polylineInfo, false); // no empty line under a path that is not drawn
+    m_drawnForm = dv;
     layout->addWidget(drawn);
     layout->addStretch(1);
     for (QComboBox* combo : findChildren<QComboBox*>()) {
@@ -147,13 +171,17 @@ PathPanel::PathPanel(QWidget* parent)
             return;
         m_newCorners = static_cast<CornerMode>(m_corners->currentData().toInt());
         m_newSmoothing = m_smoothing->value();
+        m_newCornerAngle = m_cornerAngle->value();
+        m_cornerAngle->setEnabled(m_newCorners == CornerMode::Pivot);
         const PathSource& p = m_scene.path;
         if ((!m_drawing || m_strokeDrawn) && p.kind == PathKind::Polyline &&
-            (m_newCorners != p.corners || m_newSmoothing != p.smoothing))
-            emit drawOptionsChanged(m_newCorners, m_newSmoothing);
+            (m_newCorners != p.corners || m_newSmoothing != p.smoothing ||
+             m_newCornerAngle != p.cornerAngle))
+            emit drawOptionsChanged(m_newCorners, m_newSmoothing, m_newCornerAngle);
     };
     connect(m_corners, &QComboBox::currentIndexChanged, this, optionsChanged);
-    connect(m_smoothing, &QDoubleSpinBox::valueChanged, this, optionsChanged);
+    connect(m_smoothing, &NumberField::valueChanged, this, optionsChanged);
+    connect(m_cornerAngle, &NumberField::valueChanged, this, optionsChanged);
     m_graph->setChecked(true);
     m_from->setValue(m_graphRange.first);
     m_to->setValue(m_graphRange.second);
@@ -166,6 +194,8 @@ void PathPanel::showDrawSettings() {
     m_showing = true;
     m_corners->setCurrentIndex(m_corners->findData(int(shown ? p.corners : m_newCorners)));
     m_smoothing->setValue(shown ? p.smoothing : m_newSmoothing);
+    m_cornerAngle->setValue(shown ? p.cornerAngle : m_newCornerAngle);
+    m_cornerAngle->setEnabled(m_corners->currentData().toInt() == int(CornerMode::Pivot));
     m_showing = false;
 }
 
@@ -193,6 +223,8 @@ void PathPanel::updateKind() {
     m_xu->setEnabled(!graph);
     m_yu->setEnabled(!graph);
     m_rangeLabel->setText(graph ? tr("x from, to") : tr("u from, to"));
+    m_from->setName(graph ? tr("x from") : tr("u from"));
+    m_to->setName(graph ? tr("x to") : tr("u to"));
 }
 
 void PathPanel::setScene(const Scene& scene) {
@@ -222,6 +254,7 @@ void PathPanel::setScene(const Scene& scene) {
                 .arg(p.points.size())
                 .arg(p.corners == CornerMode::Pivot ? tr("pivot") : tr("smooth")));
     }
+    m_drawnForm->setRowVisible(m_polylineInfo, p.kind == PathKind::Polyline);
     updateKind();
 }
 

@@ -6,13 +6,15 @@
 #include <utility>
 
 class QComboBox;
-class QDoubleSpinBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QPushButton;
 class QRadioButton;
 
 namespace chaplygin::ui {
+
+class NumberField;
 
 /// The path editor: the paper's presets, a typed graph y(x) or parametric x(u), y(u) with its
 /// range (errors inline; the last valid path stays), and freehand drawing on the canvas with
@@ -33,13 +35,16 @@ class PathPanel : public QWidget {
     CornerMode drawCorners() const { return m_newCorners; }
     /// Spline bandwidth for a new smooth drawing, in point spacings (0 interpolates).
     double drawSmoothing() const { return m_newSmoothing; }
-    QDoubleSpinBox* smoothingSpin() const { return m_smoothing; }
+    /// The least turn [degrees] that is a pivot corner in a new drawing.
+    double drawCornerAngle() const { return m_newCornerAngle; }
+    NumberField* smoothingSpin() const { return m_smoothing; }
+    NumberField* cornerAngleField() const { return m_cornerAngle; }
 
     QLineEdit* graphEdit() const { return m_y; }
     QLineEdit* xOfUEdit() const { return m_xu; }
     QLineEdit* yOfUEdit() const { return m_yu; }
-    QDoubleSpinBox* fromSpin() const { return m_from; }
-    QDoubleSpinBox* toSpin() const { return m_to; }
+    NumberField* fromSpin() const { return m_from; }
+    NumberField* toSpin() const { return m_to; }
     QRadioButton* parametricButton() const { return m_parametric; }
     QRadioButton* graphButton() const { return m_graph; }
     QPushButton* applyButton() const { return m_apply; }
@@ -52,8 +57,9 @@ class PathPanel : public QWidget {
     /// The user applied a typed path (Enter or Apply).
     void pathTyped(const PathSource& source);
     void drawModeToggled(bool on);
-    /// The corner mode or the smoothing changed while the current path is a polyline.
-    void drawOptionsChanged(CornerMode mode, double smoothing);
+    /// The corner mode, the smoothing or the corner angle changed while the current path is a
+    /// polyline.
+    void drawOptionsChanged(CornerMode mode, double smoothing, double cornerAngle);
 
   protected:
     void keyPressEvent(QKeyEvent* e) override;
@@ -74,21 +80,24 @@ class PathPanel : public QWidget {
     QLineEdit* m_y;
     QLineEdit* m_xu;
     QLineEdit* m_yu;
-    QDoubleSpinBox* m_from;
-    QDoubleSpinBox* m_to;
+    NumberField* m_from;
+    NumberField* m_to;
     QLabel* m_rangeLabel;
     QPushButton* m_apply;
     QLabel* m_error;
     QPushButton* m_draw;
     QComboBox* m_corners;
-    QDoubleSpinBox* m_smoothing;
+    NumberField* m_smoothing;
+    NumberField* m_cornerAngle;
     QLabel* m_polylineInfo;
+    QFormLayout* m_drawnForm;
     bool m_drawing = false;
     // a stroke was drawn since draw mode began: the corners and smoothing shown are its own
     bool m_strokeDrawn = false;
     bool m_showing = false; // the widgets are being set to show settings, not changed by the user
     CornerMode m_newCorners;
     double m_newSmoothing;
+    double m_newCornerAngle;
     bool m_rangeIsGraph = true; // which kind's range the spin boxes show
     std::pair<double, double> m_graphRange, m_uRange;
 };

@@ -1,7 +1,10 @@
 #include "panels/perturbation_panel.h"
 
+#include "common/input_error.h"
+#include "scene/perturbation.h"
+#include "widgets/number_field.h"
+
 #include <QCheckBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -33,37 +36,32 @@ PerturbationPanel::PerturbationPanel(QWidget* parent) : QWidget(parent) {
     layout->addWidget(m_fields);
 
     auto row = [form](const QString& label, QWidget* w) { form->addRow(label, w); };
-    row(tr("offset dy (left)"), addSpin(QStringLiteral("dy"), -2, 2, 0.01, 3, QStringLiteral("m")));
-    row(tr("heading offset d\u03c6"),
-        addSpin(QStringLiteral("dphi"), -1.5, 1.5, 0.01, 3, QStringLiteral("rad")));
+    row(tr("offset dy (left)"), addSpin(QStringLiteral("dy"), 0.01, QStringLiteral("m")));
+    row(tr("heading offset d\u03c6"), addSpin(QStringLiteral("dphi"), 0.01, QStringLiteral("rad")));
     row(tr("control angle offset d\u03a8"),
-        addSpin(QStringLiteral("dpsi"), -3, 3, 0.01, 3, QStringLiteral("rad")));
+        addSpin(QStringLiteral("dpsi"), 0.01, QStringLiteral("rad")));
     m_push = new QCheckBox(tr("push at t"));
     m_push->setObjectName(QStringLiteral("perturbationPush"));
-    form->addRow(m_push, addSpin(QStringLiteral("t_push"), 0, 1e4, 0.1, 2, QStringLiteral("s")));
+    form->addRow(m_push, addSpin(QStringLiteral("t_push"), 0.1, QStringLiteral("s")));
     row(tr("push: \u03a8 jumps by"),
-        addSpin(QStringLiteral("push_psi"), -3, 3, 0.01, 3, QStringLiteral("rad")));
-    row(tr("push: P moves left by"),
-        addSpin(QStringLiteral("push_dy"), -5, 5, 0.01, 3, QStringLiteral("m")));
+        addSpin(QStringLiteral("push_psi"), 0.01, QStringLiteral("rad")));
+    row(tr("push: P moves left by"), addSpin(QStringLiteral("push_dy"), 0.01, QStringLiteral("m")));
 
     m_rateSlider = new QSlider(Qt::Horizontal);
     m_rateSlider->setObjectName(QStringLiteral("feedbackRateSlider"));
     m_rateSlider->setRange(0, int(std::lround((kRateHi - kRateLo) / kRateStep)));
-    QDoubleSpinBox* rate =
-        addSpin(QStringLiteral("feedback_rate"), 0.01, 100, 0.1, 2, QStringLiteral("1/m"));
+    NumberField* rate = addSpin(QStringLiteral("feedback_rate"), 0.1, QStringLiteral("1/m"));
     auto* rateRow = new QHBoxLayout;
     rateRow->addWidget(m_rateSlider, 1);
     rateRow->addWidget(rate);
     form->addRow(tr("feedback rate P"), rateRow);
     m_limit = new QCheckBox(tr("limit |\u03a8\u0307| to"));
     m_limit->setObjectName(QStringLiteral("perturbationLimit"));
-    form->addRow(m_limit,
-                 addSpin(QStringLiteral("feedback_limit"), 0.01, 100, 0.1, 2, tr("rad/s")));
+    form->addRow(m_limit, addSpin(QStringLiteral("feedback_limit"), 0.1, tr("rad/s")));
     m_controllerB = new QCheckBox(tr("controller's b"));
     m_controllerB->setObjectName(QStringLiteral("perturbationControllerB"));
     m_controllerB->setToolTip(tr("The b the feedback assumes; unchecked, the plant's own"));
-    form->addRow(m_controllerB,
-                 addSpin(QStringLiteral("controller_b"), 0.01, 10, 0.01, 3, QStringLiteral("m")));
+    form->addRow(m_controllerB, addSpin(QStringLiteral("controller_b"), 0.01, QStringLiteral("m")));
     m_error = new QLabel;
     m_error->setObjectName(QStringLiteral("perturbationError"));
     m_error->setWordWrap(true);
@@ -89,7 +87,7 @@ PerturbationPanel::PerturbationPanel(QWidget* parent) : QWidget(parent) {
         m_updating = false;
         emitEdit(tr("Change the feedback rate"), QStringLiteral("perturbation/feedback_rate"));
     });
-    connect(rate, &QDoubleSpinBox::valueChanged, this, [this](double v) {
+    connect(rate, &NumberField::valueChanged, this, [this](double v) {
         if (m_updating)
             return;
         m_updating = true;
@@ -100,17 +98,25 @@ PerturbationPanel::PerturbationPanel(QWidget* parent) : QWidget(parent) {
     setScene(Scene());
 }
 
-QDoubleSpinBox* PerturbationPanel::addSpin(const QString& field, double lo, double hi, double step,
-                                           int decimals, const QString& unit) {
-    auto* spin = new QDoubleSpinBox;
+NumberField* PerturbationPanel::addSpin(const QString& field, double zeroStep,
+                                        const QString& unit) {
+    auto* spin = new NumberField(field);
     spin->setObjectName(QStringLiteral("perturbation_") + field);
-    spin->setRange(lo, hi);
-    spin->setSingleStep(step);
-    spin->setDecimals(decimals);
-    spin->setSuffix(QStringLiteral(" ") + unit);
-    spin->setAccessibleName(field);
+    spin->setZeroStep(zeroStep);
+    spin->setUnit(unit);
+    // the core's bound of the field (|d\u03c6| < \u03c0/2, P > 0, ...), said at once
+    spin->setCheck([field](double value) {
+        Perturbation scratch;
+        try {
+            setPerturbationField(scratch, field.toStdString(), value);
+        } catch (const InputError& e) {
+            return QString::fromStdString(e.what());
+        }
+        return QString();
+    });
+    connect(spin, &NumberField::messageChanged, this, &PerturbationPanel::showError);
     // spin arrows held down merge into one undo step, like the parameters' sliders
-    connect(spin, &QDoubleSpinBox::valueChanged, this, [this, field] {
+    connect(spin, &NumberField::valueChanged, this, [this, field] {
         if (!m_updating)
             emitEdit(tr("Change the perturbation: %1").arg(field),
                      QStringLiteral("perturbation/") + field);
@@ -119,7 +125,7 @@ QDoubleSpinBox* PerturbationPanel::addSpin(const QString& field, double lo, doub
     return spin;
 }
 
-QDoubleSpinBox* PerturbationPanel::spin(const QString& field) const {
+NumberField* PerturbationPanel::spin(const QString& field) const {
     for (const auto& [name, spin] : m_spins)
         if (name == field)
             return spin;

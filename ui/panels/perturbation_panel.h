@@ -4,11 +4,12 @@
 #include <QWidget>
 
 class QCheckBox;
-class QDoubleSpinBox;
 class QLabel;
 class QSlider;
 
 namespace chaplygin::ui {
+
+class NumberField;
 
 /// The Perturbation dock (docs/physics.md §9): whether the scene has perturbed bodies, their
 /// offsets, the push, the feedback rate P, the optional |Psidot| limit and the controller's b.
@@ -24,7 +25,7 @@ class PerturbationPanel : public QWidget {
     void showError(const QString& message);
 
     QCheckBox* enabledBox() const { return m_enabled; }
-    QDoubleSpinBox* spin(const QString& field) const;
+    NumberField* spin(const QString& field) const;
     QSlider* rateSlider() const { return m_rateSlider; }
     QCheckBox* pushBox() const { return m_push; }
     QCheckBox* limitBox() const { return m_limit; }
@@ -34,8 +35,8 @@ class PerturbationPanel : public QWidget {
     void sceneEdited(const Scene& scene, const QString& description, const QString& mergeKey);
 
   private:
-    QDoubleSpinBox* addSpin(const QString& field, double lo, double hi, double step, int decimals,
-                            const QString& unit);
+    /// A field named as the core names it; its domain is the core's (setPerturbationField).
+    NumberField* addSpin(const QString& field, double zeroStep, const QString& unit);
     /// The perturbation as the widgets show it.
     Perturbation fromWidgets() const;
     void emitEdit(const QString& description, const QString& mergeKey = {});
@@ -50,7 +51,7 @@ class PerturbationPanel : public QWidget {
     QSlider* m_rateSlider;
     QLabel* m_error;
     QWidget* m_fields;
-    std::vector<std::pair<QString, QDoubleSpinBox*>> m_spins;
+    std::vector<std::pair<QString, NumberField*>> m_spins;
 };
 
 } // namespace chaplygin::ui

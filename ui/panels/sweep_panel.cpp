@@ -4,17 +4,16 @@
 #include "document/job_runner.h"
 #include "document/scene_document.h"
 #include "plots/sweep_plot.h"
+#include "widgets/number_field.h"
 
 #include <qcustomplot.h>
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QSpinBox>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -22,27 +21,23 @@
 
 namespace chaplygin::ui {
 
-namespace {
-
-QDoubleSpinBox* valueBox() {
-    auto* box = new QDoubleSpinBox;
-    box->setDecimals(4);
-    box->setRange(-1e6, 1e6);
-    box->setSingleStep(0.1);
-    return box;
-}
-
-} // namespace
-
 SweepPanel::SweepPanel(SceneDocument* document, QWidget* parent)
     : QWidget(parent), m_document(document), m_runner(new JobRunner(this)) {
     m_parameter = new QComboBox;
     m_parameter->setToolTip(tr("The parameter to vary; the others keep the scene's values"));
-    m_from = valueBox();
-    m_to = valueBox();
-    m_count = new QSpinBox;
-    m_count->setRange(2, 1000);
+    m_from = new NumberField(tr("from"));
+    m_to = new NumberField(tr("to"));
+    m_count = new NumberField(tr("values"));
+    m_count->setIntegers(true);
+    m_count->setMinimum(2);
+    m_count->setMaximum(1000);
     m_count->setValue(12);
+    for (NumberField* field : {m_from, m_to, m_count})
+        connect(field, &NumberField::messageChanged, this, [this](const QString& message) {
+            if (!message.isEmpty())
+                m_status->setText(QStringLiteral("<span style='color:#b00'>%1</span>")
+                                      .arg(message.toHtmlEscaped()));
+        });
     m_quantity = new QComboBox;
     for (int q = 0; q < kSweepQuantityCount; ++q)
         m_quantity->addItem(
@@ -149,7 +144,7 @@ void SweepPanel::start() {
         return;
     m_runScene = m_document->solution()->scene();
     SweepSpec spec{m_parameter->currentText().toStdString(), m_from->value(), m_to->value(),
-                   m_count->value()};
+                   int(m_count->value())};
     try {
         validateSweep(m_runScene, spec);
     } catch (const InputError& e) {

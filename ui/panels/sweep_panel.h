@@ -10,13 +10,13 @@
 
 class QComboBox;
 class QCustomPlot;
-class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
-class QSpinBox;
 
 namespace chaplygin::ui {
+
+class NumberField;
 
 class JobRunner;
 class SceneDocument;
@@ -33,9 +33,9 @@ class SweepPanel : public QWidget {
     ~SweepPanel() override;
 
     QComboBox* parameterBox() const { return m_parameter; }
-    QDoubleSpinBox* fromBox() const { return m_from; }
-    QDoubleSpinBox* toBox() const { return m_to; }
-    QSpinBox* countBox() const { return m_count; }
+    NumberField* fromBox() const { return m_from; }
+    NumberField* toBox() const { return m_to; }
+    NumberField* countBox() const { return m_count; }
     QComboBox* quantityBox() const { return m_quantity; }
     QPushButton* runButton() const { return m_run; }
     QPushButton* cancelButton() const { return m_cancel; }
@@ -73,9 +73,9 @@ class SweepPanel : public QWidget {
     SceneDocument* m_document;
     JobRunner* m_runner;
     QComboBox* m_parameter;
-    QDoubleSpinBox* m_from;
-    QDoubleSpinBox* m_to;
-    QSpinBox* m_count;
+    NumberField* m_from;
+    NumberField* m_to;
+    NumberField* m_count;
     QComboBox* m_quantity;
     QPushButton* m_run;
     QPushButton* m_cancel;

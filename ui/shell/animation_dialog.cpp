@@ -3,11 +3,11 @@
 #include "common/atomic_file.h"
 #include "common/input_error.h"
 #include "document/file_dialogs.h"
+#include "widgets/number_field.h"
 
 #include <QCheckBox>
 #include <QCoreApplication>
 #include <QDialogButtonBox>
-#include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -15,7 +15,6 @@
 #include <QLineEdit>
 #include <QProgressDialog>
 #include <QPushButton>
-#include <QSpinBox>
 
 #include <exception>
 
@@ -30,27 +29,42 @@ AnimationDialog::AnimationDialog(const AnimationSettings& initial, QWidget* pare
     auto* fileRow = new QHBoxLayout;
     fileRow->addWidget(m_file, 1);
     fileRow->addWidget(browse);
-    m_fps = new QSpinBox;
-    m_fps->setRange(1, 120);
-    m_fps->setValue(initial.fps);
-    m_fps->setSuffix(tr(" fps"));
-    m_width = new QSpinBox;
-    m_width->setRange(64, 7680);
-    m_width->setValue(initial.size.width());
-    m_height = new QSpinBox;
-    m_height->setRange(64, 4320);
-    m_height->setValue(initial.size.height());
+    // whole numbers within what the exporter takes, each refused with its bound
+    auto wholeNumber = [](const QString& name, int lo, int hi, int value) {
+        auto* field = new NumberField(name);
+        field->setIntegers(true);
+        field->setMinimum(lo);
+        field->setMaximum(hi);
+        field->setZeroStep(1);
+        field->setValue(value);
+        return field;
+    };
+    m_fps = wholeNumber(tr("Frame rate"), 1, 120, initial.fps);
+    m_fps->setUnit(tr("fps"));
+    m_width = wholeNumber(tr("width"), 64, 7680, initial.size.width());
+    m_height = wholeNumber(tr("height"), 64, 4320, initial.size.height());
     auto* sizeRow = new QHBoxLayout;
     sizeRow->addWidget(m_width);
     sizeRow->addWidget(new QLabel(QStringLiteral("\u00d7")));
     sizeRow->addWidget(m_height);
     sizeRow->addWidget(new QLabel(tr("px")));
     sizeRow->addStretch();
-    m_speed = new QDoubleSpinBox;
-    m_speed->setRange(0.05, 100);
-    m_speed->setDecimals(2);
+    m_speed = new NumberField(tr("Speed"));
+    m_speed->setMinimum(0.05);
+    m_speed->setMaximum(100);
     m_speed->setValue(initial.speedFactor);
-    m_speed->setSuffix(tr(" \u00d7 real time"));
+    m_speed->setUnit(tr("\u00d7 real time"));
+    m_error = new QLabel;
+    m_error->setObjectName(QStringLiteral("animationError"));
+    m_error->setWordWrap(true);
+    m_error->setStyleSheet(QStringLiteral("color: #b00020;"));
+    m_error->hide();
+    for (NumberField* field : {m_fps, m_width, m_height, m_speed})
+        connect(field, &NumberField::messageChanged, this, [this](const QString& message) {
+            m_error->setText(message);
+            m_error->setVisible(!message.isEmpty());
+            adjustSize(); // the message's line, not a clipped note under it
+        });
     m_plots = new QCheckBox(tr("Plots beside the canvas"));
     m_plots->setChecked(initial.withPlots);
     auto* note = new QLabel(tr("GIF and MP4 need the ffmpeg program; a folder gets PNG frames."));
@@ -63,21 +77,29 @@ AnimationDialog::AnimationDialog(const AnimationSettings& initial, QWidget* pare
     form->addRow(tr("Size"), sizeRow);
     form->addRow(tr("Speed"), m_speed);
     form->addRow(QString(), m_plots);
+    form->addRow(m_error);
     form->addRow(note);
     form->addRow(buttons);
     connect(browse, &QPushButton::clicked, this, &AnimationDialog::browse);
-    connect(buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons, &QDialogButtonBox::accepted, this, [this] {
+        if (errorText().isEmpty()) // a refused value is not exported with the one before it
+            accept();
+    });
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
 }
 
 AnimationSettings AnimationDialog::settings() const {
     AnimationSettings s;
     s.file = m_file->text().trimmed();
-    s.fps = m_fps->value();
-    s.size = QSize(m_width->value(), m_height->value());
+    s.fps = int(m_fps->value());
+    s.size = QSize(int(m_width->value()), int(m_height->value()));
     s.speedFactor = m_speed->value();
     s.withPlots = m_plots->isChecked();
     return s;
+}
+
+QString AnimationDialog::errorText() const {
+    return m_error->isHidden() ? QString() : m_error->text();
 }
 
 void AnimationDialog::browse() {

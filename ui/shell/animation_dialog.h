@@ -4,12 +4,12 @@
 #include <QDialog>
 
 class QCheckBox;
-class QDoubleSpinBox;
 class QLineEdit;
-class QSpinBox;
+class QLabel;
 
 namespace chaplygin::ui {
 
+class NumberField;
 class SceneDocument;
 
 /// File > Export animation: the output (name.gif, name.mp4 or a folder for PNG frames), frame
@@ -21,20 +21,23 @@ class AnimationDialog : public QDialog {
     AnimationSettings settings() const;
 
     QLineEdit* fileEdit() const { return m_file; }
-    QSpinBox* fpsBox() const { return m_fps; }
-    QSpinBox* widthBox() const { return m_width; }
-    QSpinBox* heightBox() const { return m_height; }
-    QDoubleSpinBox* speedBox() const { return m_speed; }
+    NumberField* fpsBox() const { return m_fps; }
+    NumberField* widthBox() const { return m_width; }
+    NumberField* heightBox() const { return m_height; }
+    NumberField* speedBox() const { return m_speed; }
+    /// The refusal of a typed value, or empty.
+    QString errorText() const;
     QCheckBox* plotsBox() const { return m_plots; }
 
   private:
     void browse();
 
     QLineEdit* m_file;
-    QSpinBox* m_fps;
-    QSpinBox* m_width;
-    QSpinBox* m_height;
-    QDoubleSpinBox* m_speed;
+    NumberField* m_fps;
+    NumberField* m_width;
+    NumberField* m_height;
+    NumberField* m_speed;
+    QLabel* m_error;
     QCheckBox* m_plots;
 };
 

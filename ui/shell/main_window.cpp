@@ -23,6 +23,7 @@
 #include "shell/body_display_menu.h"
 #include "shell/dock_layout.h"
 #include "shell/elided_label.h"
+#include "shell/enter_to_canvas.h"
 #include "shell/export_report.h"
 #include "shell/gallery_menu.h"
 #include "shell/instruments.h"
@@ -81,6 +82,7 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
         {m_timeline});
     m_timeline->addAction(m_presentation->toggleAction());
     new SpaceToPlay(this, m_timeline->playAction());
+    new EnterToCanvas(this, m_canvas);
 
     buildMenus();
     setUserStyle(m_useSettings ? CanvasStyle::load(QSettings()) : CanvasStyle());
@@ -105,10 +107,11 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
             [this](const PathSource& s) { setPath(s, tr("Type a path"), PathChange::Typed); });
     connect(m_path, &PathPanel::drawModeToggled, m_canvas, &SceneCanvas::setDrawMode);
     connect(m_path, &PathPanel::drawOptionsChanged, this,
-            [this](CornerMode mode, double smoothing) {
+            [this](CornerMode mode, double smoothing, double cornerAngle) {
                 PathSource s = m_document->scene().path;
                 s.corners = mode;
                 s.smoothing = smoothing;
+                s.cornerAngle = cornerAngle;
                 setPath(s, tr("Change the corners"), PathChange::Edited);
             });
     connect(m_canvas, &SceneCanvas::pathDrawn, this,
@@ -118,6 +121,7 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
                 s.points = points;
                 s.corners = m_path->drawCorners();
                 s.smoothing = m_path->drawSmoothing();
+                s.cornerAngle = m_path->drawCornerAngle();
                 setPath(s, tr("Draw a path"), PathChange::Drawn);
             });
     connect(m_canvas, &SceneCanvas::pointsEdited, this,
@@ -262,9 +266,12 @@ void MainWindow::choosePreset(const QString& name) {
     m_document->load(next,
                      {.description = tr("Preset %1").arg(name),
                       .loaded =
-                          [this] {
+                          [this, name] {
                               startNewScene();
                               m_canvas->fitScene();
+                              // the keys 1 ... 4 replace the scene too: say what came, and how back
+                              statusBar()->showMessage(
+                                  tr("Preset %1 loaded; Ctrl+Z goes back").arg(name), 8000);
                           },
                       .refused = [this](const SceneError& e) { m_path->showError(e.message); }});
 }

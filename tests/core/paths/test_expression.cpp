@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -193,4 +195,34 @@ TEST(Expression, SignedExponentsBindToTheirOperandOnly) {
     EXPECT_NE(errorOf("2^+2^+2e0+221e8").find("chained powers"), std::string::npos)
         << errorOf("2^+2^+2e0+221e8");
     EXPECT_LT(double(std::clock() - start) / CLOCKS_PER_SEC, 0.1);
+}
+
+// A typed number: the field syntax evaluates to the double a reader computes independently.
+TEST(ExpressionNumber, EvaluatesToTheExactDouble) {
+    EXPECT_EQ(evaluateNumber("1e6", "v_T"), 1000000.0);
+    EXPECT_EQ(evaluateNumber("1000000", "v_T"), 1e6);
+    EXPECT_EQ(evaluateNumber("2*pi", "to"), 2 * std::numbers::pi);
+    EXPECT_EQ(evaluateNumber("sqrt(2)", "b"), std::numbers::sqrt2);
+    EXPECT_EQ(evaluateNumber("6.283185", "to"), std::strtod("6.283185", nullptr));
+    EXPECT_EQ(evaluateNumber("0.1", "m"), 0.1);
+    EXPECT_EQ(evaluateNumber("-2.5e-3", "dy"), -0.0025);
+    EXPECT_EQ(evaluateNumber(" 3 ", "m"), 3.0);
+}
+
+TEST(ExpressionNumber, RefusesWhatIsNotAFiniteNumber) {
+    auto errorOfNumber = [](const std::string& text) {
+        try {
+            evaluateNumber(text, "m");
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    EXPECT_NE(errorOfNumber("1/0").find("not a finite number"), std::string::npos);
+    EXPECT_NE(errorOfNumber("10^400").find("not a finite number"), std::string::npos);
+    EXPECT_NE(errorOfNumber("x").find("unknown name 'x'"), std::string::npos);
+    EXPECT_EQ(errorOfNumber("x").find("variable"), std::string::npos);
+    EXPECT_NE(errorOfNumber("1,5").find("','"), std::string::npos);
+    EXPECT_NE(errorOfNumber("").find("empty"), std::string::npos);
+    EXPECT_NE(errorOfNumber("2*").find("m"), std::string::npos);
 }

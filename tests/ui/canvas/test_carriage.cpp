@@ -7,9 +7,9 @@
 #include "gui_test_support.h"
 #include "panels/parameters_panel.h"
 #include "shell/main_window.h"
+#include "widgets/number_field.h"
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QImage>
 #include <QLabel>
 #include <QPainter>
@@ -45,7 +45,7 @@ void TestCarriage::carriageBelowHalfAxleThroughThePanel() {
     const std::pair<const char*, double> values[] = {
         {"R", 0.3}, {"a", 0.4}, {"m", 0.5}, {"I1", 0.02}, {"I2", 0.01}, {"M", 3.0}, {"I", 0.2}};
     for (const auto& [name, value] : values) {
-        QDoubleSpinBox* spin = panel->spinBox(QString::fromLatin1(name));
+        NumberField* spin = panel->spinBox(QString::fromLatin1(name));
         QVERIFY2(spin, name);
         spin->setValue(value);
     }

@@ -4,10 +4,10 @@
 #include "canvas/scene_canvas.h"
 #include "gui_test_support.h"
 #include "panels/path_panel.h"
+#include "widgets/number_field.h"
 #include "window_fixture.h"
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QUndoStack>

@@ -11,10 +11,10 @@
 #include "scene/presets.h"
 #include "scene/scene_json.h"
 #include "shell/main_window.h"
+#include "widgets/number_field.h"
 
 #include <QComboBox>
 #include <QDialog>
-#include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
 #include <QLineEdit>
@@ -76,7 +76,7 @@ class TestBadInputs : public QObject {
     void reversedRange();
     void badParameter_data();
     void badParameter();
-    void negativeInertiaClamps();
+    void negativeInertiaIsRefused();
     void diskZeroRadius();
     void speedModeAtPivotCorner();
     void openBadSceneFile_data();
@@ -264,7 +264,7 @@ void TestBadInputs::badParameter_data() {
     QTest::addColumn<QString>("expected");
     QTest::newRow("b below |a|") << "b" << 0.2 << "parameter b: must be >= |a| = 0.5";
     QTest::newRow("m = 0") << "m" << 0.0 << "parameter m: must be > 0";
-    QTest::newRow("m = -1 clamps to 0") << "m" << -1.0 << "parameter m: must be > 0";
+    QTest::newRow("m = -1") << "m" << -1.0 << "parameter m: must be > 0";
 }
 
 void TestBadInputs::badParameter() {
@@ -272,7 +272,7 @@ void TestBadInputs::badParameter() {
     QFETCH(double, value);
     QFETCH(QString, expected);
     Snapshot before = snapshot();
-    QDoubleSpinBox* spin = m_window->parametersPanel()->spinBox(name);
+    NumberField* spin = m_window->parametersPanel()->spinBox(name);
     QVERIFY(spin);
     spin->setValue(value);
     ParametersPanel* panel = m_window->parametersPanel();
@@ -281,18 +281,30 @@ void TestBadInputs::badParameter() {
     verifyKept(before);
 }
 
-void TestBadInputs::negativeInertiaClamps() {
+void TestBadInputs::negativeInertiaIsRefused() {
     ParametersPanel* panel = m_window->parametersPanel();
     QComboBox* gyration = panel->findChildren<QComboBox*>().at(1);
     gyration->setCurrentIndex(1);
     emit gyration->activated(1);
     m_window->document()->flush();
-    QDoubleSpinBox* inertia = panel->spinBox(QStringLiteral("I"));
+    NumberField* inertia = panel->spinBox(QStringLiteral("I"));
     QVERIFY(inertia);
-    // the spin box cannot express I < 0: it clamps to the allowed minimum, which solves (b = |a|)
-    QCOMPARE(inertia->minimum(), 0.0);
-    inertia->setValue(-0.1);
-    QCOMPARE(inertia->value(), 0.0);
+    const Scene before = m_window->document()->scene();
+    // typed, I < 0 is refused by the field with its bound, never clamped to it
+    auto type = [inertia](const char* text) {
+        inertia->setFocus();
+        inertia->selectAll();
+        QTest::keyClicks(inertia, QString::fromLatin1(text));
+        QTest::keyClick(inertia, Qt::Key_Return);
+    };
+    type("-0.1");
+    m_window->document()->flush();
+    QVERIFY2(panel->errorText().contains(QStringLiteral("I must be at least 0 kg m\u00b2")),
+             qPrintable(panel->errorText()));
+    QCOMPARE(m_window->document()->scene(), before);
+    QCOMPARE(inertia->value(), 0.75);
+    // the bound itself is allowed and solves (b = |a|)
+    type("0");
     m_window->document()->flush();
     QVERIFY2(panel->errorText().isEmpty(), qPrintable(panel->errorText()));
     QCOMPARE(m_window->document()->solution()->system().b, 0.5);

@@ -4,8 +4,8 @@
 #include "gui_test_support.h"
 #include "panels/path_panel.h"
 #include "shell/main_window.h"
+#include "widgets/number_field.h"
 
-#include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QStatusBar>
 #include <QTimer>

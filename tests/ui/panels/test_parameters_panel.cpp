@@ -4,9 +4,9 @@
 #include "common/input_error.h"
 #include "panels/parameters_panel.h"
 #include "scene/presets.h"
+#include "widgets/number_field.h"
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QSlider>
 #include <QTranslator>
 #include <QtTest>
@@ -70,9 +70,9 @@ void TestParametersPanel::rowsAreTheScenesParameters() {
     QCOMPARE(shownParameters(panel), (QStringList{"I", "I1", "I2", "M", "R", "a", "m"}));
     // each spin box shows its value with its SI unit
     QCOMPARE(panel.spinBox("R")->value(), 0.3);
-    QCOMPARE(panel.spinBox("R")->suffix(), QStringLiteral(" m"));
-    QCOMPARE(panel.spinBox("M")->suffix(), QStringLiteral(" kg"));
-    QCOMPARE(panel.spinBox("I")->suffix(), QStringLiteral(" kg m\u00b2"));
+    QCOMPARE(panel.spinBox("R")->unit(), QStringLiteral("m"));
+    QCOMPARE(panel.spinBox("M")->unit(), QStringLiteral("kg"));
+    QCOMPARE(panel.spinBox("I")->unit(), QStringLiteral("kg m\u00b2"));
     QVERIFY(panel.spinBox("speed"));
 }
 
@@ -137,7 +137,7 @@ void TestParametersPanel::speedRowFollowsTheMode() {
     s.speed = 1.7;
     panel.setScene(s);
     QCOMPARE(panel.spinBox("speed")->value(), 1.7);
-    QCOMPARE(panel.spinBox("speed")->suffix(), QStringLiteral(" m/s"));
+    QCOMPARE(panel.spinBox("speed")->unit(), QStringLiteral("m/s"));
     QVERIFY(panel.spinBox("speed")->toolTip().contains(QStringLiteral("v_T")));
     s.mode = SpeedMode::Speed;
     panel.setScene(s);

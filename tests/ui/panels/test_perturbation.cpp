@@ -12,11 +12,11 @@
 #include "shell/main_window.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
+#include "widgets/number_field.h"
 
 #include <QAction>
 #include <QCheckBox>
 #include <QDir>
-#include <QDoubleSpinBox>
 #include <QFile>
 #include <QFontMetricsF>
 #include <QImage>

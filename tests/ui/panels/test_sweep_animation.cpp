@@ -6,17 +6,16 @@
 #include "scene/presets.h"
 #include "shell/animation_dialog.h"
 #include "shell/main_window.h"
+#include "widgets/number_field.h"
 
 #include <QAction>
 #include <QComboBox>
 #include <QDir>
-#include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QProgressBar>
 #include <QProgressDialog>
 #include <QPushButton>
-#include <QSpinBox>
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>

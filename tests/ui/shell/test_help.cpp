@@ -5,9 +5,9 @@
 #include "shell/help_window.h"
 #include "shell/markdown_browser.h"
 #include "version.h"
+#include "widgets/number_field.h"
 #include "window_fixture.h"
 
-#include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
 #include <QPointer>
@@ -100,7 +100,7 @@ void TestHelp::documentsAreParsedApartAndReplaced() {
 
 void TestHelp::f1OpensSectionOfFocus() {
     m_window->showParametersDock();
-    QDoubleSpinBox* m = m_window->parametersPanel()->spinBox(QStringLiteral("m"));
+    NumberField* m = m_window->parametersPanel()->spinBox(QStringLiteral("m"));
     m->setFocus();
     QApplication::processEvents();
     QTest::keyClick(m, Qt::Key_F1);

@@ -1,5 +1,6 @@
 // Keyboard and accessibility: both redo shortcuts, Space plays outside text fields, Tab leaves
-// tables and reaches the parameters, Enter applies a range field, accessible names. Offscreen, real
+// tables and reaches the parameters, Enter applies a range field and hands the keyboard to the
+// canvas, a preset key says what it loaded and is one undo step, accessible names. Offscreen, real
 // widgets.
 #include "canvas/scene_canvas.h"
 #include "panels/methods_panel.h"
@@ -7,13 +8,15 @@
 #include "panels/path_panel.h"
 #include "shell/playback.h"
 #include "shell/timeline_bar.h"
+#include "widgets/number_field.h"
 #include "window_fixture.h"
 
-#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QSlider>
+#include <QStatusBar>
 #include <QTableWidget>
+#include <QUndoStack>
 #include <QtTest>
 
 using namespace chaplygin;
@@ -32,11 +35,13 @@ class TestKeyboard : public QObject, private test::WindowFixture {
     void tabLeavesTable();
     void tabReachesParameterSpinBoxes();
     void enterInRangeFieldApplies();
+    void enterHandsTheKeyboardToTheCanvas();
+    void presetKeySaysSoAndIsOneUndoStep();
     void accessibleNames();
 };
 
 void TestKeyboard::redoShortcuts() {
-    QDoubleSpinBox* m = m_window->parametersPanel()->spinBox(QStringLiteral("m"));
+    NumberField* m = m_window->parametersPanel()->spinBox(QStringLiteral("m"));
     const double before = m->value();
     for (QKeySequence redo :
          {QKeySequence(Qt::CTRL | Qt::Key_Y), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z)}) {
@@ -56,7 +61,7 @@ void TestKeyboard::redoShortcuts() {
 
 void TestKeyboard::spaceTogglesPlayInSpinBox() {
     m_window->showParametersDock();
-    QDoubleSpinBox* m = m_window->parametersPanel()->spinBox(QStringLiteral("m"));
+    NumberField* m = m_window->parametersPanel()->spinBox(QStringLiteral("m"));
     m->setFocus();
     QApplication::processEvents();
     const QString text = m->text();
@@ -105,7 +110,7 @@ void TestKeyboard::tabReachesParameterSpinBoxes() {
     }
     for (const QString& name :
          {QStringLiteral("m"), QStringLiteral("a"), QStringLiteral("speed")}) {
-        QDoubleSpinBox* spin = m_window->parametersPanel()->spinBox(name);
+        NumberField* spin = m_window->parametersPanel()->spinBox(name);
         QVERIFY(spin);
         QVERIFY2(reached.contains(spin), qPrintable(name));
     }
@@ -117,7 +122,7 @@ void TestKeyboard::enterInRangeFieldApplies() {
     PathPanel* panel = m_window->pathPanel();
     m_window->findChild<QDockWidget*>(QStringLiteral("pathDock"))->raise();
     panel->graphEdit()->setText(QStringLiteral("0.5*x"));
-    QDoubleSpinBox* to = panel->toSpin();
+    NumberField* to = panel->toSpin();
     to->setFocus();
     to->selectAll();
     QTest::keyClicks(to, QStringLiteral("2.5"));
@@ -125,13 +130,45 @@ void TestKeyboard::enterInRangeFieldApplies() {
     m_window->document()->flush();
     QTRY_COMPARE(m_window->document()->scene().path.to, 2.5);
     QCOMPARE(QString::fromStdString(m_window->document()->scene().path.y), QStringLiteral("0.5*x"));
-    QDoubleSpinBox* from = panel->fromSpin();
+    NumberField* from = panel->fromSpin();
     from->setFocus();
     from->selectAll();
     QTest::keyClicks(from, QStringLiteral("0.5"));
     QTest::keyClick(from, Qt::Key_Enter);
     m_window->document()->flush();
     QTRY_COMPARE(m_window->document()->scene().path.from, 0.5);
+}
+
+void TestKeyboard::enterHandsTheKeyboardToTheCanvas() {
+    PathPanel* panel = m_window->pathPanel();
+    m_window->findChild<QDockWidget*>(QStringLiteral("pathDock"))->raise();
+    QLineEdit* edit = panel->graphEdit();
+    edit->setFocus();
+    edit->selectAll();
+    QTest::keyClicks(edit, QStringLiteral("0.5*x"));
+    QTest::keyClick(edit, Qt::Key_Return);
+    QTRY_COMPARE(QApplication::focusWidget(), static_cast<QWidget*>(m_window->canvas()));
+    m_window->document()->flush();
+    QCOMPARE(QString::fromStdString(m_window->document()->scene().path.y), QStringLiteral("0.5*x"));
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Space);
+    QVERIFY(m_window->playback()->isPlaying());
+    QCOMPARE(edit->text(), QStringLiteral("0.5*x"));
+}
+
+void TestKeyboard::presetKeySaysSoAndIsOneUndoStep() {
+    const Scene before = m_window->document()->scene();
+    const int steps = m_window->undoStack()->count();
+    m_window->canvas()->setFocus();
+    QTest::keyClick(m_window->canvas(), Qt::Key_2);
+    m_window->document()->flush();
+    const QString name = QString::fromStdString(presetNames().at(1));
+    QCOMPARE(QString::fromStdString(m_window->document()->scene().preset), name);
+    QVERIFY2(m_window->statusBar()->currentMessage().contains(name),
+             qPrintable(m_window->statusBar()->currentMessage()));
+    QCOMPARE(m_window->undoStack()->count(), steps + 1);
+    m_window->undoStack()->undo();
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->scene(), before);
 }
 
 void TestKeyboard::accessibleNames() {

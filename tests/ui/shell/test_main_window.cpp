@@ -11,10 +11,10 @@
 #include "shell/main_window.h"
 #include "shell/playback.h"
 #include "shell/timeline_bar.h"
+#include "widgets/number_field.h"
 
 #include <QComboBox>
 #include <QDockWidget>
-#include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
@@ -219,7 +219,7 @@ void TestMainWindow::parameterChangeUpdatesPlots() {
     QCustomPlot* psi = m_window->plotsPanel()->plot(0);
     QVector<double> before = graphValues(psi);
     QVERIFY(before.size() > 10);
-    QDoubleSpinBox* b = m_window->parametersPanel()->spinBox(QStringLiteral("b"));
+    NumberField* b = m_window->parametersPanel()->spinBox(QStringLiteral("b"));
     QVERIFY(b);
     b->setValue(2.0);
     m_window->document()->flush();
@@ -287,9 +287,9 @@ void TestMainWindow::typedParametricPath() {
     QVERIFY2(panel->errorText().isEmpty(), qPrintable(panel->errorText()));
     const auto& solution = m_window->document()->solution();
     QCOMPARE(solution->scene().path.kind, PathKind::Parametric);
-    // half a circle of radius 3 (the range box keeps 4 decimals of pi)
-    QVERIFY(std::abs(solution->path()->length() - 3 * panel->toSpin()->value()) < 1e-9);
-    QVERIFY(std::abs(panel->toSpin()->value() - M_PI) < 1e-4);
+    // half a circle of radius 3 (the range box keeps the whole double of pi)
+    QCOMPARE(solution->scene().path.to, M_PI);
+    QVERIFY(std::abs(solution->path()->length() - 3 * M_PI) < 1e-9);
     // a typed error stays while a parameter changes; the path fields keep the user's text
     typeInto(panel->yOfUEdit(), QStringLiteral("3*sin(u"));
     panel->applyButton()->click();
@@ -298,7 +298,7 @@ void TestMainWindow::typedParametricPath() {
     m_window->document()->flush();
     QCOMPARE(panel->yOfUEdit()->text(), QStringLiteral("3*sin(u"));
     QCOMPARE(m_window->document()->solution()->system().mass, 2.0);
-    QVERIFY(std::abs(m_window->document()->solution()->path()->length() - 3 * 3.1416) < 1e-9);
+    QVERIFY(std::abs(m_window->document()->solution()->path()->length() - 3 * M_PI) < 1e-9);
 }
 
 void TestMainWindow::sliderDragCoalesces() {
@@ -315,7 +315,7 @@ void TestMainWindow::sliderDragCoalesces() {
 
 void TestMainWindow::invalidParameterKeepsSolution() {
     auto before = m_window->document()->solution();
-    QDoubleSpinBox* b = m_window->parametersPanel()->spinBox(QStringLiteral("b"));
+    NumberField* b = m_window->parametersPanel()->spinBox(QStringLiteral("b"));
     b->setValue(0.2); // below a = 0.5
     m_window->document()->flush();
     QVERIFY(m_window->parametersPanel()->errorText().contains(QStringLiteral("b")));

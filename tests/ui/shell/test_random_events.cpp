@@ -16,10 +16,10 @@
 #include "shell/presentation_mode.h"
 #include "shell/timeline_bar.h"
 #include "systems/system.h"
+#include "widgets/number_field.h"
 
 #include <QAction>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QLineEdit>
 #include <QMenu>
@@ -163,8 +163,8 @@ QString TestRandomEvents::randomEvent() {
         return QStringLiteral("slider %1 = %2").arg(s->objectName()).arg(v);
     }
     case 5: { // typed into a spin box
-        auto spins = m_window->findChildren<QDoubleSpinBox*>();
-        QDoubleSpinBox* s = spins[pick(int(spins.size()))];
+        auto spins = m_window->findChildren<NumberField*>();
+        NumberField* s = spins[pick(int(spins.size()))];
         if (!s->isVisible())
             return QStringLiteral("hidden spin box");
         s->setFocus();

@@ -14,12 +14,12 @@
 #include "shell/help_window.h"
 #include "shell/introduction_window.h"
 #include "shell/playback.h"
+#include "widgets/number_field.h"
 #include "window_fixture.h"
 
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
-#include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QLineEdit>
 #include <QMenuBar>

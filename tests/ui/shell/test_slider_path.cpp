@@ -7,9 +7,9 @@
 #include "panels/parameters_panel.h"
 #include "plots/plots_panel.h"
 #include "systems/system.h"
+#include "widgets/number_field.h"
 #include "window_fixture.h"
 
-#include <QDoubleSpinBox>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QtTest>
@@ -49,7 +49,7 @@ void TestSliderPath::oneSliderMoveDerivesOnceSolvesOnceAndPaintsEachViewOnce() {
     document->flush();
     settle();
     QSlider* slider = panel->slider(QStringLiteral("m"));
-    QDoubleSpinBox* spin = panel->spinBox(QStringLiteral("m"));
+    NumberField* spin = panel->spinBox(QStringLiteral("m"));
     QVERIFY(slider && spin);
 
     test::EventCounter canvasPaints(QEvent::Paint);
@@ -67,7 +67,7 @@ void TestSliderPath::oneSliderMoveDerivesOnceSolvesOnceAndPaintsEachViewOnce() {
 
     slider->setValue(slider->value() + 7);
     const double typed = spin->value(); // what the row shows for the slider's place
-    QSignalSpy spinAgain(spin, &QDoubleSpinBox::valueChanged);
+    QSignalSpy spinAgain(spin, &NumberField::valueChanged);
     document->flush();
     settle();
 
@@ -90,7 +90,7 @@ void TestSliderPath::undoOfASliderMoveShowsTheValueAgain() {
     ParametersPanel* panel = m_window->parametersPanel();
     document->flush();
     QSlider* slider = panel->slider(QStringLiteral("m"));
-    QDoubleSpinBox* spin = panel->spinBox(QStringLiteral("m"));
+    NumberField* spin = panel->spinBox(QStringLiteral("m"));
     const double before = spin->value();
     slider->setValue(slider->value() + 7);
     document->flush();

@@ -5,10 +5,10 @@
 #include "panels/path_panel.h"
 #include "shell/playback.h"
 #include "shell/timeline_bar.h"
+#include "widgets/number_field.h"
 #include "window_fixture.h"
 
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QLineEdit>
 #include <QRadioButton>
 #include <QtTest>
