@@ -254,7 +254,7 @@ QString forces(const At& at) {
                   "= \u2212\u03bb\u1e61: workless (S_c = I\u03c6\u0308, erratum to (66)\u2013(68))")
             : QCoreApplication::translate("EquationsPanel",
                                           "S_c = I\u03c6\u0308 (erratum to (66)\u2013(68))"));
-    h += row(QStringLiteral("power f_s\u1e61 + \u03c4\u03c6\u0307"),
+    h += row(QCoreApplication::translate("EquationsPanel", "power f_s\u1e61 + \u03c4\u03c6\u0307"),
              QStringLiteral("%1 \u00b7 %2 + %3 \u00b7 %4")
                  .arg(operand(c.forceAxial), operand(c.sdot), operand(c.controlCouple),
                       operand(c.phidot)),

@@ -161,6 +161,7 @@ bool languageFree(QString text) {
         QStringLiteral("English"),   QStringLiteral("Português"), QStringLiteral("Brasil"),
         QStringLiteral("max"),       QStringLiteral("min"),       QStringLiteral("Lab"),
         QStringLiteral("Hz")};
+    text.remove(QRegularExpression(QStringLiteral("\\S+\\.md\\b"))); // a file's name
     for (const QString& n : names)
         text.remove(QRegularExpression(QStringLiteral("\\b%1\\b").arg(n)));
     // no word of three letters or more is left
