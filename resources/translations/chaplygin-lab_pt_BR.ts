@@ -294,6 +294,73 @@ realimentação: %2</translation>
     </message>
 </context>
 <context>
+    <name>ModelReport</name>
+    <message>
+        <source>closed form (t = s/v_s)</source>
+        <translation>forma fechada (t = s/v_s)</translation>
+    </message>
+    <message>
+        <source>closed form</source>
+        <translation>forma fechada</translation>
+    </message>
+    <message>
+        <source>Newton on s(u)</source>
+        <translation>Newton em s(u)</translation>
+    </message>
+    <message>
+        <source>closed form (constant curvature: t = s sqrt(1 + b^2 kappa^2)/v_T)</source>
+        <translation>forma fechada (curvatura constante: t = s sqrt(1 + b^2 kappa^2)/v_T)</translation>
+    </message>
+    <message>
+        <source>quadrature (Gauss-Legendre of sqrt(1 + b^2 kappa^2)/v_T ds)</source>
+        <translation>quadratura (Gauss-Legendre de sqrt(1 + b^2 kappa^2)/v_T ds)</translation>
+    </message>
+    <message>
+        <source>Newton on t(s) with the exact dt/ds</source>
+        <translation>Newton em t(s) com o dt/ds exato</translation>
+    </message>
+    <message>
+        <source>quadrature (Gauss-Legendre of sqrt(1 + b^2 kappa^2)/v_T ds) at the panel ends; inside a panel the integral of the Chebyshev interpolant of dt/du at the panel&apos;s degree, certified to 1e-13 of the panel&apos;s time on first use (exact Gauss-Legendre where it fails)</source>
+        <translation>quadratura (Gauss-Legendre de sqrt(1 + b^2 kappa^2)/v_T ds) nas extremidades dos painéis; dentro de um painel, a integral do interpolante de Chebyshev de dt/du no grau do painel, certificada a 1e-13 do tempo do painel no primeiro uso (Gauss-Legendre exato onde falha)</translation>
+    </message>
+    <message>
+        <source>Newton on the interpolated t(u) from a quintic Hermite start</source>
+        <translation>Newton no t(u) interpolado, a partir de um chute inicial de Hermite quíntico</translation>
+    </message>
+    <message>
+        <source>closed form in kappa, dkappa/ds and phi (Psi = atan2(1, b kappa))</source>
+        <translation>forma fechada em kappa, dkappa/ds e phi (Psi = atan2(1, b kappa))</translation>
+    </message>
+    <message>
+        <source>closed form (at rest)</source>
+        <translation>forma fechada (em repouso)</translation>
+    </message>
+    <message>
+        <source>closed form (straight line, phidot0 = 0)</source>
+        <translation>forma fechada (reta, phidot0 = 0)</translation>
+    </message>
+    <message>
+        <source>closed form (uniform circle, a = 0)</source>
+        <translation>forma fechada (círculo uniforme, a = 0)</translation>
+    </message>
+    <message>
+        <source>closed form (sdot = V tanh, phidot = (V/b) sech); inside the tabulated horizon from degree-16 interpolants of it, certified to 1e-15 V and 1e-15 V/b</source>
+        <translation>forma fechada (sdot = V tanh, phidot = (V/b) sech); dentro do horizonte tabulado, por interpolantes de grau 16 dela, certificados a 1e-15 V e 1e-15 V/b</translation>
+    </message>
+    <message>
+        <source>quadrature: per panel the integral of the degree-16 interpolant of sdot e^(i phi), certified to 1e-15 of the panel&apos;s displacement (Gauss-Legendre where not); straight-line tail</source>
+        <translation>quadratura: em cada painel, a integral do interpolante de grau 16 de sdot e^(i phi), certificada a 1e-15 do deslocamento do painel (Gauss-Legendre onde não); cauda em linha reta</translation>
+    </message>
+    <message>
+        <source>closed form (straight line: Psi = pi/2, Psidot = 0, an unstable equilibrium)</source>
+        <translation>forma fechada (reta: Psi = pi/2, Psidot = 0, um equilíbrio instável)</translation>
+    </message>
+    <message>
+        <source>closed form (separatrix k = 1: Psi = gd(tau), position in tanh and sech)</source>
+        <translation>forma fechada (separatriz k = 1: Psi = gd(tau), posição em tanh e sech)</translation>
+    </message>
+</context>
+<context>
     <name>PlotFigures</name>
     <message>
         <source>controlled Ψ</source>
@@ -843,7 +910,7 @@ realimentação: %2</translation>
     </message>
     <message>
         <source>vs closed form</source>
-        <translation>vs forma fechada</translation>
+        <translation>distância à forma fechada</translation>
     </message>
     <message>
         <source>energy drift</source>
@@ -1633,6 +1700,28 @@ realimentação: %2</translation>
     <message>
         <source>The scene changed: press Compute for this scene&apos;s diagram.</source>
         <translation>A cena mudou: clique em Calcular para obter o diagrama desta cena.</translation>
+    </message>
+    <message>
+        <source>controlled</source>
+        <translation>controlado</translation>
+    </message>
+    <message>
+        <source>free</source>
+        <translation>livre</translation>
+    </message>
+    <message>
+        <source>%1, Gauss–Kronrod 61 at tolerance 1e-14 (the tightest method)</source>
+        <translation>%1, Gauss–Kronrod 61 com tolerância 1e-14 (o método mais rigoroso)</translation>
+    </message>
+    <message>
+        <source>%1 (no independent method for this path)</source>
+        <translation>%1 (não há método independente para este caminho)</translation>
+    </message>
+    <message>
+        <source>controlled: %1
+free: %2</source>
+        <translation>controlado: %1
+livre: %2</translation>
     </message>
 </context>
 <context>

@@ -50,16 +50,19 @@ QString plainModelSummary(const Solution& solution) {
     return summary;
 }
 
+QString technicalModel(const std::string& description) {
+    return QCoreApplication::translate("ModelReport", description.c_str());
+}
+
 QString technicalModels(const Solution& solution) {
     const ModelReport& m = solution.models();
-    QString text =
-        QCoreApplication::translate("MethodNames",
-                                    "path: %1\ntime law: %2\ns(t): %3\ncontrol: %4\n"
-                                    "free velocities: %5\nfree position: %6\nvakonomic body: %7")
-            .arg(QString::fromStdString(m.path), QString::fromStdString(m.timeLaw),
-                 QString::fromStdString(m.inversion), QString::fromStdString(m.control),
-                 QString::fromStdString(m.freeVelocity), QString::fromStdString(m.freePosition),
-                 QString::fromStdString(m.vakonomic));
+    QString text = QCoreApplication::translate(
+                       "MethodNames", "path: %1\ntime law: %2\ns(t): %3\ncontrol: %4\n"
+                                      "free velocities: %5\nfree position: %6\nvakonomic body: %7")
+                       .arg(QString::fromStdString(m.path), technicalModel(m.timeLaw),
+                            technicalModel(m.inversion), technicalModel(m.control),
+                            technicalModel(m.freeVelocity), technicalModel(m.freePosition),
+                            technicalModel(m.vakonomic));
     if (!m.perturbed.empty())
         text += QCoreApplication::translate("MethodNames", "\nopen loop: %1\nfeedback: %2")
                     .arg(QString::fromStdString(m.perturbed), QString::fromStdString(m.feedback));

@@ -18,6 +18,10 @@ QString plainMethodName(const std::string& id);
 /// exact formulas, the pushed bodies by an ODE integrator.
 QString plainModelSummary(const Solution& solution);
 
+/// One of the core's technical descriptions of a model (ModelReport) in the user's language; a
+/// description built with numbers in it stays as the core wrote it.
+QString technicalModel(const std::string& description);
+
 /// The solution's models in the core's own technical words, one line each.
 QString technicalModels(const Solution& solution);
 

@@ -1,5 +1,6 @@
 #include "panels/equations_html.h"
 
+#include "document/method_names.h"
 #include "scene/body_vectors.h"
 
 #include <QCoreApplication>
@@ -291,7 +292,7 @@ QString freeBody(const At& at) {
                 "c = atanh(\u1e61\u2080/V)"));
     } else {
         h += row(QStringLiteral("\u1e61"), {}, f.sdot, QStringLiteral("m/s"),
-                 QString::fromStdString(s.models().freeVelocity));
+                 technicalModel(s.models().freeVelocity));
         h += row(QStringLiteral("\u03c6\u0307"), {}, f.phidot, QStringLiteral("rad/s"), {});
     }
     h += row(
