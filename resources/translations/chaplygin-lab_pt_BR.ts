@@ -910,7 +910,7 @@ realimentação: %2</translation>
     </message>
     <message>
         <source>vs closed form</source>
-        <translation>distância à forma fechada</translation>
+        <translation>fora da forma fechada</translation>
     </message>
     <message>
         <source>energy drift</source>

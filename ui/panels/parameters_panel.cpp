@@ -73,6 +73,7 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     speedForm->addRow(tr("&Mode"), m_mode);
     layout->addLayout(speedForm);
     m_speedLabel = new QLabel;
+    m_speedLabel->setWordWrap(true); // a longer translation wraps instead of widening the dock
     layout->addWidget(m_speedLabel);
 
     m_error = new QLabel;

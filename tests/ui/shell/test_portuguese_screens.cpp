@@ -11,6 +11,7 @@
 #include "shell/help_window.h"
 #include "shell/introduction_window.h"
 #include "shell/main_window.h"
+#include "systems/system.h"
 #include "translations.h"
 
 #include <QAbstractButton>
@@ -227,13 +228,35 @@ QStringList clippedTexts(QWidget* window) {
             text = b->text();
         } else
             continue;
-        if (w->width() < needed)
+        // narrower than its text, or cut by a parent (a scroll area without a horizontal bar):
+        // a text scrolled out of sight vertically is not cut
+        const QRect seen = w->visibleRegion().boundingRect();
+        const int shown = seen.isEmpty() ? w->width() : std::min(w->width(), seen.width());
+        if (shown < needed)
             clipped << QStringLiteral("%1 \"%2\": %3 px of %4")
                            .arg(describe(w), plain(text))
-                           .arg(w->width())
+                           .arg(shown)
                            .arg(needed);
     }
     return clipped;
+}
+
+// the sinusoid with each system and in constant-speed mode, and the perturbed gallery scene: the
+// parameters, the mode's line and the perturbation dock as each of them shows them
+std::vector<Scene> variants() {
+    std::vector<Scene> scenes;
+    for (SystemKind kind : {SystemKind::Disk, SystemKind::Carriage}) {
+        Scene s = presetScene("sinusoid");
+        s.system.kind = kind;
+        s.system.params = defaultSystemParams(kind);
+        scenes.push_back(s);
+    }
+    Scene speed = presetScene("sinusoid");
+    speed.mode = SpeedMode::Speed;
+    speed.speed = 0.8;
+    scenes.push_back(speed);
+    scenes.push_back(galleryEntry("pushed-off-path").scene);
+    return scenes;
 }
 
 void removeTranslators() {
@@ -285,6 +308,11 @@ QList<Shown> TestPortugueseScreens::tour() {
     }
     for (const GalleryEntry& e : galleryEntries()) {
         window->loadGalleryEntry(QString::fromStdString(e.name));
+        window->document()->flush();
+        all += visibleTexts(window.get());
+    }
+    for (const Scene& s : variants()) {
+        window->loadScene(s);
         window->document()->flush();
         all += visibleTexts(window.get());
     }
@@ -427,6 +455,16 @@ void TestPortugueseScreens::nothingClipped() {
         d->show();
         d->raise();
         check();
+    }
+    // the other systems, the speed mode and a perturbation, with their docks in front
+    for (const Scene& s : variants()) {
+        window->loadScene(s);
+        window->document()->flush();
+        for (const char* name : {"parametersDock", "perturbationDock", "accuracyDock"})
+            if (auto* d = window->findChild<QDockWidget*>(QString::fromLatin1(name))) {
+                d->raise();
+                check();
+            }
     }
     QVERIFY2(clipped.isEmpty(), qPrintable(clipped.join(u'\n')));
 }
