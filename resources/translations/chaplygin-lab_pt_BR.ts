@@ -292,6 +292,58 @@ realimentação: %2</translation>
         <source>Runge–Kutta Prince–Dormand 8 (GSL)</source>
         <translation>Runge–Kutta Prince–Dormand 8 (GSL)</translation>
     </message>
+    <message>
+        <source>Exact formula</source>
+        <translation>Fórmula exata</translation>
+    </message>
+    <message>
+        <source>Path quadrature</source>
+        <translation>Quadratura no caminho</translation>
+    </message>
+    <message>
+        <source>QAG (GSL)</source>
+        <translation>QAG (GSL)</translation>
+    </message>
+    <message>
+        <source>RK4 (GSL)</source>
+        <translation>RK4 (GSL)</translation>
+    </message>
+    <message>
+        <source>RKF45 (GSL)</source>
+        <translation>RKF45 (GSL)</translation>
+    </message>
+    <message>
+        <source>Cash–Karp (GSL)</source>
+        <translation>Cash–Karp (GSL)</translation>
+    </message>
+    <message>
+        <source>RK8PD (GSL)</source>
+        <translation>RK8PD (GSL)</translation>
+    </message>
+    <message>
+        <source>Adams (GSL)</source>
+        <translation>Adams (GSL)</translation>
+    </message>
+    <message>
+        <source>BDF (GSL)</source>
+        <translation>BDF (GSL)</translation>
+    </message>
+    <message>
+        <source>RK4</source>
+        <translation>RK4</translation>
+    </message>
+    <message>
+        <source>RK4, energy kept</source>
+        <translation>RK4, energia mantida</translation>
+    </message>
+    <message>
+        <source>Open loop, RK8PD</source>
+        <translation>Malha aberta, RK8PD</translation>
+    </message>
+    <message>
+        <source>Open loop, RK4</source>
+        <translation>Malha aberta, RK4</translation>
+    </message>
 </context>
 <context>
     <name>ModelReport</name>

@@ -35,6 +35,28 @@ QString plainMethodName(const std::string& id) {
     return QString::fromStdString(id);
 }
 
+QString shortMethodName(const std::string& id) {
+    static const std::array<std::pair<const char*, const char*>, 13> names = {{
+        {"closed_form", QT_TRANSLATE_NOOP("MethodNames", "Exact formula")},
+        {"quadrature_gauss_newton", QT_TRANSLATE_NOOP("MethodNames", "Path quadrature")},
+        {"gsl_qag_newton", QT_TRANSLATE_NOOP("MethodNames", "QAG (GSL)")},
+        {"gsl_rk4", QT_TRANSLATE_NOOP("MethodNames", "RK4 (GSL)")},
+        {"gsl_rkf45", QT_TRANSLATE_NOOP("MethodNames", "RKF45 (GSL)")},
+        {"gsl_rkck", QT_TRANSLATE_NOOP("MethodNames", "Cash\u2013Karp (GSL)")},
+        {"gsl_rk8pd", QT_TRANSLATE_NOOP("MethodNames", "RK8PD (GSL)")},
+        {"gsl_msadams", QT_TRANSLATE_NOOP("MethodNames", "Adams (GSL)")},
+        {"gsl_msbdf", QT_TRANSLATE_NOOP("MethodNames", "BDF (GSL)")},
+        {"rk4_classical", QT_TRANSLATE_NOOP("MethodNames", "RK4")},
+        {"rk4_energy_projection", QT_TRANSLATE_NOOP("MethodNames", "RK4, energy kept")},
+        {"open_loop_gsl_rk8pd", QT_TRANSLATE_NOOP("MethodNames", "Open loop, RK8PD")},
+        {"open_loop_rk4_classical", QT_TRANSLATE_NOOP("MethodNames", "Open loop, RK4")},
+    }};
+    for (const auto& [key, name] : names)
+        if (id == key)
+            return QCoreApplication::translate("MethodNames", name);
+    return plainMethodName(id);
+}
+
 QString plainModelSummary(const Solution& solution) {
     const ModelReport& m = solution.models();
     const bool exactTime = m.timeLaw.rfind("closed form", 0) == 0;
