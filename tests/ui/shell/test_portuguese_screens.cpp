@@ -439,6 +439,14 @@ void TestPortugueseScreens::contextHelpFindsPortugueseSections() {
     QTextBlock block = help->browser()->textCursor().block();
     QVERIFY(block.blockFormat().headingLevel() > 0);
     QCOMPARE(block.text(), QStringLiteral("Animação"));
+    // every section F1 names has its heading in the Portuguese guide
+    for (const char* section : {"The system and its parameters", "Choosing a path",
+                                "Methods and accuracy", "Plots", "Animation"}) {
+        const QString name = QCoreApplication::translate("chaplygin::ui::MainWindow", section);
+        QVERIFY2(name != QLatin1String(section), section);
+        QVERIFY2(help->showTopic(QStringLiteral("user-guide.md"), name), qPrintable(name));
+        QCOMPARE(help->browser()->textCursor().block().text(), name);
+    }
 }
 
 void TestPortugueseScreens::nothingClipped_data() {
