@@ -123,17 +123,17 @@ std::string sweepQuantityColumn(SweepQuantity q) {
 std::string sweepQuantityLabel(SweepQuantity q) {
     switch (q) {
     case SweepQuantity::Duration:
-        return "duration [s]";
+        return TRANSLATABLE_TEXT("SweepQuantity", "duration [s]");
     case SweepQuantity::MaxAbsLambda:
-        return "max |λ| [kg m/s]";
+        return TRANSLATABLE_TEXT("SweepQuantity", "max |λ| [kg m/s]");
     case SweepQuantity::MaxAbsControlCouple:
-        return "max |τ| [N m]";
+        return TRANSLATABLE_TEXT("SweepQuantity", "max |τ| [N m]");
     case SweepQuantity::MaxAbsForceLateral:
-        return "max |N| [N]";
+        return TRANSLATABLE_TEXT("SweepQuantity", "max |N| [N]");
     case SweepQuantity::MaxAbsControlPower:
-        return "max |power| [W]";
+        return TRANSLATABLE_TEXT("SweepQuantity", "max |power| [W]");
     case SweepQuantity::FinalSeparation:
-        return "final separation from the free body [m]";
+        return TRANSLATABLE_TEXT("SweepQuantity", "final separation from the free body [m]");
     }
     return {};
 }

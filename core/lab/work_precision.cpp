@@ -93,11 +93,13 @@ WorkPrecisionReport runWorkPrecision(const Scene& scene, const WorkPrecisionOpti
         if (m.problem == MotionProblem::Free && m.appDefault) {
             refFree = m.solve(c, 0, tf);
             report.freeReference = "free " + m.name + " (" + m.description + ")";
+            report.freeReferenceMethod = m.name;
         }
         if (m.problem == MotionProblem::Controlled && m.appDefault &&
             c.plan->timeLaw().closedForm()) {
             refControlled = m.solve(c, 0, tc);
             report.controlledReference = "controlled " + m.name + " (" + m.description + ")";
+            report.controlledReferenceMethod = m.name;
         }
     }
     if (report.controlledReference.empty()) {
@@ -113,10 +115,14 @@ WorkPrecisionReport runWorkPrecision(const Scene& scene, const WorkPrecisionOpti
             refControlled = pointsOnCurve(*c.curve, law.invert(tc, work));
             report.controlledReference = "controlled GSL QAG (Gauss-Kronrod 61) + Newton at "
                                          "tolerance 1e-14 (the tightest method)";
+            report.controlledReferenceMethod = qag->name;
+            report.controlledReferenceTightest = true;
         } else {
             refControlled = app->solve(c, 0, tc);
             report.controlledReference =
                 "controlled " + app->name + " (no independent method for this path)";
+            report.controlledReferenceMethod = app->name;
+            report.controlledReferenceIndependent = false;
         }
     }
 

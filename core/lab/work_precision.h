@@ -39,6 +39,11 @@ struct WorkPrecisionReport {
     std::vector<WorkPrecisionRow> rows;
     /// which solution the errors are measured against
     std::string controlledReference, freeReference;
+    /// the registry ids of the reference methods, for a plain name on screen
+    std::string controlledReferenceMethod, freeReferenceMethod;
+    /// the controlled reference is the tightest method (a different quadrature rule at 1e-14),
+    /// or, with no closed form and no such method, the app's own method
+    bool controlledReferenceTightest = false, controlledReferenceIndependent = true;
     double controlledEnd = 0, freeEnd = 0; ///< horizons [s]
     /// stopped by options.cancel: rows holds what was done
     bool cancelled = false;

@@ -2,6 +2,7 @@
 
 #include "numerics/chebyshev.h"
 #include "numerics/gauss_legendre.h"
+#include "systems/system_parameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -311,24 +312,28 @@ double FreeMotion::totalTurn() const {
 std::string FreeMotion::velocityModel() const {
     switch (m_case) {
     case Case::Rest:
-        return "closed form (at rest)";
+        return TRANSLATABLE_TEXT("ModelReport", "closed form (at rest)");
     case Case::Line:
-        return "closed form (straight line, phidot0 = 0)";
+        return TRANSLATABLE_TEXT("ModelReport", "closed form (straight line, phidot0 = 0)");
     case Case::Circle:
-        return "closed form (uniform circle, a = 0)";
+        return TRANSLATABLE_TEXT("ModelReport", "closed form (uniform circle, a = 0)");
     case Case::General:
-        return "closed form (sdot = V tanh, phidot = (V/b) sech); inside the tabulated horizon "
-               "from degree-16 interpolants of it, certified to 1e-15 V and 1e-15 V/b";
+        return TRANSLATABLE_TEXT(
+            "ModelReport",
+            "closed form (sdot = V tanh, phidot = (V/b) sech); inside the tabulated horizon "
+            "from degree-16 interpolants of it, certified to 1e-15 V and 1e-15 V/b");
     }
     return "";
 }
 
 std::string FreeMotion::positionModel() const {
     return m_case == Case::General
-               ? "quadrature: per panel the integral of the degree-16 interpolant of sdot e^(i "
-                 "phi), certified to 1e-15 of the panel's displacement (Gauss-Legendre where "
-                 "not); straight-line tail"
-               : "closed form";
+               ? TRANSLATABLE_TEXT(
+                     "ModelReport",
+                     "quadrature: per panel the integral of the degree-16 interpolant of sdot e^(i "
+                     "phi), certified to 1e-15 of the panel's displacement (Gauss-Legendre where "
+                     "not); straight-line tail")
+               : TRANSLATABLE_TEXT("ModelReport", "closed form");
 }
 
 } // namespace chaplygin

@@ -1,6 +1,7 @@
 #include "motion/vakonomic_motion.h"
 
 #include "numerics/gsl_callback.h"
+#include "systems/system_parameters.h"
 
 #include <gsl/gsl_sf_ellint.h>
 #include <gsl/gsl_sf_elljac.h>
@@ -211,9 +212,11 @@ VakonomicState VakonomicMotion::at(double t) const {
 std::string VakonomicMotion::model() const {
     switch (m_case) {
     case Case::Rest:
-        return "closed form (at rest)";
+        return TRANSLATABLE_TEXT("ModelReport", "closed form (at rest)");
     case Case::Line:
-        return "closed form (straight line: Psi = pi/2, Psidot = 0, an unstable equilibrium)";
+        return TRANSLATABLE_TEXT(
+            "ModelReport",
+            "closed form (straight line: Psi = pi/2, Psidot = 0, an unstable equilibrium)");
     case Case::Libration:
         return "closed form (Jacobi elliptic, libration k = " + std::to_string(m_k) +
                ": Psi, phi = am, position through the elliptic integral D)";
@@ -221,7 +224,9 @@ std::string VakonomicMotion::model() const {
         return "closed form (Jacobi elliptic, rotation k = " + std::to_string(m_k) +
                ": Psi = am, phi = asin(sn/k), position through the elliptic integral D)";
     case Case::Separatrix:
-        return "closed form (separatrix k = 1: Psi = gd(tau), position in tanh and sech)";
+        return TRANSLATABLE_TEXT(
+            "ModelReport",
+            "closed form (separatrix k = 1: Psi = gd(tau), position in tanh and sech)");
     }
     return "";
 }

@@ -6,6 +6,7 @@
 #include "planning/scene_path.h"
 #include "scene/finite_results.h"
 #include "scene/perturbation.h"
+#include "systems/system_parameters.h"
 
 #include <algorithm>
 #include <cmath>
@@ -172,23 +173,31 @@ Solution::Solution(const Scene& scene, std::shared_ptr<const Path> path,
         m_models.path += ", " + std::to_string(pivots) + " pivot corner(s)";
     m_models.path += interpolationModel(*m_path);
     if (params.mode == SpeedMode::Speed) {
-        m_models.timeLaw = "closed form (t = s/v_s)";
-        m_models.inversion = m_timeLaw.closedForm() ? "closed form" : "Newton on s(u)";
+        m_models.timeLaw = TRANSLATABLE_TEXT("ModelReport", "closed form (t = s/v_s)");
+        m_models.inversion = m_timeLaw.closedForm()
+                                 ? TRANSLATABLE_TEXT("ModelReport", "closed form")
+                                 : TRANSLATABLE_TEXT("ModelReport", "Newton on s(u)");
     } else if (m_timeLaw.closedForm()) {
-        m_models.timeLaw = "closed form (constant curvature: t = s sqrt(1 + b^2 kappa^2)/v_T)";
-        m_models.inversion = "closed form";
+        m_models.timeLaw = TRANSLATABLE_TEXT(
+            "ModelReport", "closed form (constant curvature: t = s sqrt(1 + b^2 kappa^2)/v_T)");
+        m_models.inversion = TRANSLATABLE_TEXT("ModelReport", "closed form");
     } else {
-        m_models.timeLaw = "quadrature (Gauss-Legendre of sqrt(1 + b^2 kappa^2)/v_T ds)";
-        m_models.inversion = "Newton on t(s) with the exact dt/ds";
+        m_models.timeLaw = TRANSLATABLE_TEXT(
+            "ModelReport", "quadrature (Gauss-Legendre of sqrt(1 + b^2 kappa^2)/v_T ds)");
+        m_models.inversion =
+            TRANSLATABLE_TEXT("ModelReport", "Newton on t(s) with the exact dt/ds");
     }
     if (!m_timeLaw.closedForm() && m_timeLaw.interpolated(0) && m_path->pieces().size() == 1) {
-        m_models.timeLaw = "quadrature (Gauss-Legendre of sqrt(1 + b^2 kappa^2)/v_T ds) at the "
+        m_models.timeLaw = TRANSLATABLE_TEXT(
+            "ModelReport", "quadrature (Gauss-Legendre of sqrt(1 + b^2 kappa^2)/v_T ds) at the "
                            "panel ends; inside a panel the integral of the Chebyshev "
                            "interpolant of dt/du at the panel's degree, certified to 1e-13 of the "
-                           "panel's time on first use (exact Gauss-Legendre where it fails)";
-        m_models.inversion = "Newton on the interpolated t(u) from a quintic Hermite start";
+                           "panel's time on first use (exact Gauss-Legendre where it fails)");
+        m_models.inversion = TRANSLATABLE_TEXT(
+            "ModelReport", "Newton on the interpolated t(u) from a quintic Hermite start");
     }
-    m_models.control = "closed form in kappa, dkappa/ds and phi (Psi = atan2(1, b kappa))";
+    m_models.control = TRANSLATABLE_TEXT(
+        "ModelReport", "closed form in kappa, dkappa/ds and phi (Psi = atan2(1, b kappa))");
     int cusps = 0;
     for (const PathPiece& p : m_path->pieces())
         cusps += p.kind == PathPiece::Kind::Curve && p.table->cuspEnds().end ? 1 : 0;

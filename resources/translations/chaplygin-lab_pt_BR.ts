@@ -257,6 +257,10 @@
         <source>along the motion now</source>
         <translation>ao longo do movimento agora</translation>
     </message>
+    <message>
+        <source>power f_sṡ + τφ̇</source>
+        <translation>potência f_sṡ + τφ̇</translation>
+    </message>
 </context>
 <context>
     <name>MethodNames</name>
@@ -351,6 +355,125 @@ realimentação: %2</translation>
     <message>
         <source>Runge–Kutta Prince–Dormand 8 (GSL)</source>
         <translation>Runge–Kutta Prince–Dormand 8 (GSL)</translation>
+    </message>
+    <message>
+        <source>Exact formula</source>
+        <translation>Fórmula exata</translation>
+    </message>
+    <message>
+        <source>Path quadrature</source>
+        <translation>Quadratura no caminho</translation>
+    </message>
+    <message>
+        <source>QAG (GSL)</source>
+        <translation>QAG (GSL)</translation>
+    </message>
+    <message>
+        <source>RK4 (GSL)</source>
+        <translation>RK4 (GSL)</translation>
+    </message>
+    <message>
+        <source>RKF45 (GSL)</source>
+        <translation>RKF45 (GSL)</translation>
+    </message>
+    <message>
+        <source>Cash–Karp (GSL)</source>
+        <translation>Cash–Karp (GSL)</translation>
+    </message>
+    <message>
+        <source>RK8PD (GSL)</source>
+        <translation>RK8PD (GSL)</translation>
+    </message>
+    <message>
+        <source>Adams (GSL)</source>
+        <translation>Adams (GSL)</translation>
+    </message>
+    <message>
+        <source>BDF (GSL)</source>
+        <translation>BDF (GSL)</translation>
+    </message>
+    <message>
+        <source>RK4</source>
+        <translation>RK4</translation>
+    </message>
+    <message>
+        <source>RK4, energy kept</source>
+        <translation>RK4, energia mantida</translation>
+    </message>
+    <message>
+        <source>Open loop, RK8PD</source>
+        <translation>Malha aberta, RK8PD</translation>
+    </message>
+    <message>
+        <source>Open loop, RK4</source>
+        <translation>Malha aberta, RK4</translation>
+    </message>
+</context>
+<context>
+    <name>ModelReport</name>
+    <message>
+        <source>closed form (t = s/v_s)</source>
+        <translation>forma fechada (t = s/v_s)</translation>
+    </message>
+    <message>
+        <source>closed form</source>
+        <translation>forma fechada</translation>
+    </message>
+    <message>
+        <source>Newton on s(u)</source>
+        <translation>Newton em s(u)</translation>
+    </message>
+    <message>
+        <source>closed form (constant curvature: t = s sqrt(1 + b^2 kappa^2)/v_T)</source>
+        <translation>forma fechada (curvatura constante: t = s sqrt(1 + b^2 kappa^2)/v_T)</translation>
+    </message>
+    <message>
+        <source>quadrature (Gauss-Legendre of sqrt(1 + b^2 kappa^2)/v_T ds)</source>
+        <translation>quadratura (Gauss-Legendre de sqrt(1 + b^2 kappa^2)/v_T ds)</translation>
+    </message>
+    <message>
+        <source>Newton on t(s) with the exact dt/ds</source>
+        <translation>Newton em t(s) com o dt/ds exato</translation>
+    </message>
+    <message>
+        <source>quadrature (Gauss-Legendre of sqrt(1 + b^2 kappa^2)/v_T ds) at the panel ends; inside a panel the integral of the Chebyshev interpolant of dt/du at the panel&apos;s degree, certified to 1e-13 of the panel&apos;s time on first use (exact Gauss-Legendre where it fails)</source>
+        <translation>quadratura (Gauss-Legendre de sqrt(1 + b^2 kappa^2)/v_T ds) nas extremidades dos painéis; dentro de um painel, a integral do interpolante de Chebyshev de dt/du no grau do painel, certificada a 1e-13 do tempo do painel no primeiro uso (Gauss-Legendre exato onde falha)</translation>
+    </message>
+    <message>
+        <source>Newton on the interpolated t(u) from a quintic Hermite start</source>
+        <translation>Newton no t(u) interpolado, a partir de um chute inicial de Hermite quíntico</translation>
+    </message>
+    <message>
+        <source>closed form in kappa, dkappa/ds and phi (Psi = atan2(1, b kappa))</source>
+        <translation>forma fechada em kappa, dkappa/ds e phi (Psi = atan2(1, b kappa))</translation>
+    </message>
+    <message>
+        <source>closed form (at rest)</source>
+        <translation>forma fechada (em repouso)</translation>
+    </message>
+    <message>
+        <source>closed form (straight line, phidot0 = 0)</source>
+        <translation>forma fechada (reta, phidot0 = 0)</translation>
+    </message>
+    <message>
+        <source>closed form (uniform circle, a = 0)</source>
+        <translation>forma fechada (círculo uniforme, a = 0)</translation>
+    </message>
+    <message>
+        <source>closed form (sdot = V tanh, phidot = (V/b) sech); inside the tabulated horizon from degree-16 interpolants of it, certified to 1e-15 V and 1e-15 V/b</source>
+        <translation>forma fechada (sdot = V tanh, phidot = (V/b) sech); dentro do horizonte tabulado, por interpolantes de grau 16 dela, certificados a 1e-15 V e 1e-15 V/b</translation>
+    </message>
+    <message>
+        <source>quadrature: per panel the integral of the degree-16 interpolant of sdot e^(i phi), certified to 1e-15 of the panel&apos;s displacement (Gauss-Legendre where not); straight-line tail</source>
+        <translation>quadratura: em cada painel, a integral do interpolante de grau 16 de sdot e^(i phi), certificada a 1e-15 do deslocamento do painel (Gauss-Legendre onde não); cauda em linha reta</translation>
+    </message>
+    <message>
+        <source>closed form (straight line: Psi = pi/2, Psidot = 0, an unstable equilibrium)</source>
+        <translation>forma fechada (reta: Psi = pi/2, Psidot = 0, um equilíbrio instável)</translation>
+    </message>
+    <message>
+        <source>closed form (separatrix k = 1: Psi = gd(tau), position in tanh and sech)</source>
+        <translation>forma fechada (separatriz k = 1: Psi = gd(tau), posição em tanh e sech)</translation>
     </message>
 </context>
 <context>
@@ -554,10 +677,160 @@ realimentação: %2</translation>
     </message>
 </context>
 <context>
+    <name>SceneTexts</name>
+    <message>
+        <source>Feedback too aggressive for its actuator</source>
+        <translation>Realimentação agressiva demais para o seu atuador</translation>
+    </message>
+    <message>
+        <source>The feedback asks for a triple pole at P = 2.5 per metre, but the actuator turns the control angle at most 0.4 rad/s (|Ψ̇| ≤ 0.4). The law saturates while the body is far off, arrives at the line too fast and overshoots it by 0.2 m before settling; the same law without the bound approaches from one side and never crosses. At P = 3 with the same bound the overshoot grows until the heading error reaches π/2 and the chained form no longer exists: the app refuses that scene and says when it happens (docs/physics.md §9).</source>
+        <translation>A realimentação pede um polo triplo em P = 2,5 por metro, mas o atuador gira o ângulo de controle a no máximo 0,4 rad/s (|Ψ̇| ≤ 0,4). A lei satura enquanto o corpo está longe, chega à reta rápido demais e a ultrapassa em 0,2 m antes de se acomodar; a mesma lei sem o limite se aproxima por um só lado e nunca cruza a reta. Com P = 3 e o mesmo limite, a ultrapassagem cresce até o erro de orientação chegar a π/2 e a forma encadeada deixar de existir: o programa recusa essa cena e diz quando isso acontece (docs/physics.md §9).</translation>
+    </message>
+    <message>
+        <source>A corner in constant-speed mode: cannot turn</source>
+        <translation>Um canto no modo de velocidade constante: não consegue girar</translation>
+    </message>
+    <message>
+        <source>With ṡ = v_s fixed (App. C) the kinetic energy is (m/2) v_s² (1 + b²κ²), which is infinite at a corner. No finite control turns the sleigh there; the app refuses the scene and names the corner. Smooth the corners or use constant energy.</source>
+        <translation>Com ṡ = v_s fixo (Apêndice C), a energia cinética é (m/2) v_s² (1 + b²κ²), infinita num canto. Nenhum controle finito faz o trenó girar ali; o programa recusa a cena e aponta o canto. Suavize os cantos ou use energia constante.</translation>
+    </message>
+    <message>
+        <source>A corner in constant-energy mode: pivot in place</source>
+        <translation>Um canto no modo de energia constante: pivô no lugar</translation>
+    </message>
+    <message>
+        <source>At a corner of a drawn polyline the curvature is a delta function: Ψ goes to 0 (left) or π (right), ṡ = 0 and |φ̇| = v_T/b. The sleigh stops and turns about the knife point for b |Δφ|/v_T seconds, driven by an impulsive but workless control.</source>
+        <translation>Num canto de uma poligonal desenhada, a curvatura é uma função delta: Ψ vai a 0 (à esquerda) ou a π (à direita), ṡ = 0 e |φ̇| = v_T/b. O trenó para e gira em torno do ponto da lâmina durante b |Δφ|/v_T segundos, movido por um controle impulsivo que não realiza trabalho.</translation>
+    </message>
+    <message>
+        <source>A cusp: the sleigh backs up</source>
+        <translation>Uma cúspide: o trenó anda de ré</translation>
+    </message>
+    <message>
+        <source>On x = u², y = u³ the velocity r′(u) vanishes at u = 0 and the direction of travel reverses, but the knife&apos;s heading, the tangent line, turns smoothly through the cusp. In constant-energy mode the sleigh slows to ṡ = 0 while it keeps turning at |φ̇| = v_T/b, then backs up: ṡ changes sign, Ψ = atan2(ṡ, b φ̇) leaves (0, π) continuously (here through 0 to negative values), and the time to pass, (1/v_T) ∫ √(ds² + b² dφ²), is finite although the curvature is infinite at the cusp. The paper&apos;s forward branch Ψ = atan2(1, bκ) cannot do this. Constant-speed mode refuses the path and names the cusp: ṡ would have to jump from +v_s to −v_s.</source>
+        <translation>Em x = u², y = u³ a velocidade r′(u) se anula em u = 0 e o sentido do percurso se inverte, mas a direção da lâmina, a reta tangente, gira suavemente ao passar pela cúspide. No modo de energia constante o trenó desacelera até ṡ = 0 enquanto continua girando com |φ̇| = v_T/b, e então anda de ré: ṡ troca de sinal, Ψ = atan2(ṡ, b φ̇) sai de (0, π) continuamente (aqui passando por 0 para valores negativos), e o tempo de passagem, (1/v_T) ∫ √(ds² + b² dφ²), é finito, embora a curvatura seja infinita na cúspide. O ramo progressivo do artigo, Ψ = atan2(1, bκ), não consegue fazer isso. O modo de velocidade constante recusa o caminho e aponta a cúspide: ṡ teria de saltar de +v_s para −v_s.</translation>
+    </message>
+    <message>
+        <source>Very high curvature, bκ = 1000</source>
+        <translation>Curvatura muito alta, bκ = 1000</translation>
+    </message>
+    <message>
+        <source>A sinusoid a thousand times smaller than the sleigh: bκ reaches 1000, the sleigh almost only turns, and √(1 + b²κ²) has a near-kink at every inflection. Explicit ODE steppers in t need steps a thousand times smaller than on the paper&apos;s sinusoid; the app&apos;s quadrature on the adaptive path table stays exact.</source>
+        <translation>Uma senoide mil vezes menor que o trenó: bκ chega a 1000, o trenó quase só gira, e √(1 + b²κ²) tem quase uma quina em cada inflexão. Integradores explícitos de EDO em t precisam de passos mil vezes menores que na senoide do artigo; a quadratura do programa sobre a tabela adaptativa do caminho continua exata.</translation>
+    </message>
+    <message>
+        <source>A long horizon: t = 5000 s</source>
+        <translation>Um horizonte longo: t = 5000 s</translation>
+    </message>
+    <message>
+        <source>Six hundred laps of a unit circle, 5000 s. The free sleigh&apos;s φ̇ decays like sech and would reach subnormal numbers, slowing an ODE solver several times; the closed form switches to a straight line once the heading is constant to 10⁻¹⁷, so every time costs the same.</source>
+        <translation>Seiscentas voltas num círculo unitário, 5000 s. O φ̇ do trenó livre decai como sech e chegaria a números subnormais, deixando um resolvedor de EDO várias vezes mais lento; a forma fechada passa a uma reta assim que a orientação fica constante a 10⁻¹⁷, de modo que todo instante custa o mesmo.</translation>
+    </message>
+    <message>
+        <source>Open-loop integration of (36)-(37) drifts off the path</source>
+        <translation>A integração em malha aberta de (36)-(37) se afasta do caminho</translation>
+    </message>
+    <message>
+        <source>The paper integrates ẋ = v_T sin Ψ cos φ, ẏ = v_T sin Ψ sin φ in time (Fig. 3). Nothing pulls the integrated body back to the path, so every error in φ accumulates and the body drifts away; the method lab shows it. The app integrates along the path instead and is on the path by construction.</source>
+        <translation>O artigo integra ẋ = v_T sin Ψ cos φ, ẏ = v_T sin Ψ sin φ no tempo (Fig. 3). Nada traz o corpo integrado de volta ao caminho, então todo erro em φ se acumula e o corpo se afasta; o laboratório de métodos mostra isso. O programa integra ao longo do caminho e, por construção, fica sobre ele.</translation>
+    </message>
+    <message>
+        <source>sinusoid</source>
+        <translation>senoide</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s printed branch reverses at inflections</source>
+        <translation>O ramo impresso no artigo se inverte nas inflexões</translation>
+    </message>
+    <message>
+        <source>The paper prints tan Ψ = ρ/b with Ψ in (−π/2, π/2). On y = −sin x the curvature changes sign at every multiple of π; with the printed branch Ψ jumps from +π/2 to −π/2 there, ṡ = v_T sin Ψ becomes negative and the sleigh would reverse along a path it is meant to follow forwards. Chaplygin Lab takes Ψ = atan2(1, bκ) in (0, π): Ψ passes π/2 smoothly and ṡ stays positive.</source>
+        <translation>O artigo imprime tan Ψ = ρ/b com Ψ em (−π/2, π/2). Em y = −sin x a curvatura troca de sinal em todo múltiplo de π; com o ramo impresso, Ψ salta de +π/2 para −π/2 ali, ṡ = v_T sin Ψ fica negativo e o trenó voltaria de ré por um caminho que deveria seguir para a frente. O Chaplygin Lab usa Ψ = atan2(1, bκ) em (0, π): Ψ passa suavemente por π/2 e ṡ continua positivo.</translation>
+    </message>
+    <message>
+        <source>Pushed off the path: open loop drifts, feedback returns</source>
+        <translation>Empurrado para fora do caminho: a malha aberta deriva, a realimentação volta</translation>
+    </message>
+    <message>
+        <source>At t = 3 s the sleigh is knocked sideways by 0.15 m and its control angle Ψ jumps by 0.4 rad. The open-loop body keeps applying the paper&apos;s λ(t), planned for the unperturbed motion: χ − χ_nominal stays at the push&apos;s 0.4 rad for ever (χ̇ = λ/(m b) does not see the state), so its heading settles off the path&apos;s and it drifts, 5.5 m away by the end. The feedback body gets the same push and the chained-form law (docs/physics.md §9) steers it back: its lateral error decays like e^(−Ps) with a triple pole at P = 1 per metre of path, below 10⁻⁴ m by the end. Both bodies keep the energy exactly: the correction is workless, it only turns the velocity.</source>
+        <translation>Em t = 3 s o trenó é empurrado 0,15 m para o lado e o seu ângulo de controle Ψ salta 0,4 rad. O corpo em malha aberta continua aplicando o λ(t) do artigo, planejado para o movimento sem perturbação: χ − χ_nominal fica para sempre nos 0,4 rad do empurrão (χ̇ = λ/(m b) não enxerga o estado), então a sua orientação se acomoda fora da do caminho e ele deriva, a 5,5 m de distância no final. O corpo com realimentação recebe o mesmo empurrão e a lei na forma encadeada (docs/physics.md §9) o traz de volta: o seu erro lateral decai como e^(−Ps), com um polo triplo em P = 1 por metro de caminho, abaixo de 10⁻⁴ m no final. Os dois corpos conservam exatamente a energia: a correção não realiza trabalho, só gira a velocidade.</translation>
+    </message>
+    <message>
+        <source>The genuine vakonomic system leaves the circle</source>
+        <translation>O sistema vakonômico genuíno deixa o círculo</translation>
+    </message>
+    <message>
+        <source>If λ obeys its own equation (21) instead of being an external control, only λ(0) is free. Started on the circle with the tracking λ, the genuine vakonomic sleigh leaves the circle within seconds: the paper&apos;s tracking is a control-input system, not the vakonomic one (docs/physics.md §2).</source>
+        <translation>Se λ obedece à sua própria equação (21) em vez de ser um controle externo, só λ(0) é livre. Partindo do círculo com o λ do rastreamento, o trenó vakonômico genuíno deixa o círculo em poucos segundos: o rastreamento do artigo é um sistema com entrada de controle, não o sistema vakonômico (docs/physics.md §2).</translation>
+    </message>
+    <message>
+        <source>circle</source>
+        <translation>círculo</translation>
+    </message>
+    <message>
+        <source>The controller&apos;s b is wrong</source>
+        <translation>O b do controlador está errado</translation>
+    </message>
+    <message>
+        <source>The plant&apos;s radius of gyration is b = 1 m, the controller believes 0.7 m. It measures the body&apos;s curvature φ̇/ṡ correctly but turns the curvature rate it wants into λ with its own b, so the body turns at a rate g = (b_c/b)² (1 + b²κ_b²)/(1 + b_c²κ_b²) times the one asked for, the feedforward included. On the sinusoid the lateral error never settles: it stays about 0.3 m. On a straight line the loop becomes s³ + 3gP s² + 3gP² s + gP³, stable only for g &gt; 1/9, that is b_c &gt; b/3 (docs/physics.md §9); a controller that overestimates b is only slower to converge.</source>
+        <translation>O raio de giração da planta é b = 1 m, mas o controlador acredita em 0,7 m. Ele mede corretamente a curvatura do corpo, φ̇/ṡ, mas converte em λ a taxa de curvatura que deseja usando o seu próprio b, de modo que o corpo gira a uma taxa g = (b_c/b)² (1 + b²κ_b²)/(1 + b_c²κ_b²) vezes a pedida, incluída a antecipação (feedforward). Na senoide o erro lateral nunca se acomoda: fica em torno de 0,3 m. Numa reta a malha se torna s³ + 3gP s² + 3gP² s + gP³, estável só para g &gt; 1/9, isto é, b_c &gt; b/3 (docs/physics.md §9); um controlador que superestima b apenas converge mais devagar.</translation>
+    </message>
+    <message>
+        <source>catenary</source>
+        <translation>catenária</translation>
+    </message>
+    <message>
+        <source>Catenary with x₀ = 1, arc length 0 to 5 (eqs. 97–107, Fig. 2): turns clockwise, Ψ in (π/2, π).</source>
+        <translation>Catenária com x₀ = 1, comprimento de arco de 0 a 5 (eqs. 97–107, Fig. 2): gira no sentido horário, Ψ em (π/2, π).</translation>
+    </message>
+    <message>
+        <source>Circle of radius 2 from (2, 0), counter-clockwise (eqs. 82–96): period 2π √(b² + R²)/v_T.</source>
+        <translation>Círculo de raio 2 a partir de (2, 0), no sentido anti-horário (eqs. 82–96): período 2π √(b² + R²)/v_T.</translation>
+    </message>
+    <message>
+        <source>line</source>
+        <translation>reta</translation>
+    </message>
+    <message>
+        <source>Straight line y = 0.5 x + 1 (paper eqs. 72–81): Ψ = π/2, χ constant, λ = 0.</source>
+        <translation>Reta y = 0,5 x + 1 (eqs. 72–81 do artigo): Ψ = π/2, χ constante, λ = 0.</translation>
+    </message>
+    <message>
+        <source>Sinusoid y = −sin x over two periods (eqs. 108–113, Fig. 3): Ψ passes π/2 at inflections.</source>
+        <translation>Senoide y = −sin x ao longo de dois períodos (eqs. 108–113, Fig. 3): Ψ passa por π/2 nas inflexões.</translation>
+    </message>
+</context>
+<context>
     <name>SweepPlot</name>
     <message>
         <source>Sweep of %1: %2</source>
         <translation>Varredura de %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>SweepQuantity</name>
+    <message>
+        <source>duration [s]</source>
+        <translation>duração [s]</translation>
+    </message>
+    <message>
+        <source>max |λ| [kg m/s]</source>
+        <translation>máx |λ| [kg m/s]</translation>
+    </message>
+    <message>
+        <source>max |τ| [N m]</source>
+        <translation>máx |τ| [N m]</translation>
+    </message>
+    <message>
+        <source>max |N| [N]</source>
+        <translation>máx |N| [N]</translation>
+    </message>
+    <message>
+        <source>max |power| [W]</source>
+        <translation>máx |potência| [W]</translation>
+    </message>
+    <message>
+        <source>final separation from the free body [m]</source>
+        <translation>separação final do corpo livre [m]</translation>
     </message>
 </context>
 <context>
@@ -753,7 +1026,7 @@ realimentação: %2</translation>
     </message>
     <message>
         <source>vs closed form</source>
-        <translation>vs forma fechada</translation>
+        <translation>fora da forma fechada</translation>
     </message>
     <message>
         <source>energy drift</source>
@@ -1099,6 +1372,11 @@ realimentação: %2</translation>
         <source>Help text</source>
         <translation>Texto de ajuda</translation>
     </message>
+    <message>
+        <source>en</source>
+        <comment>the language code of this catalogue, as in docs/user-guide.CODE.md</comment>
+        <translation>pt_BR</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::IntroductionWindow</name>
@@ -1108,7 +1386,7 @@ realimentação: %2</translation>
     </message>
     <message>
         <source>&lt;p&gt;A &lt;b&gt;body&lt;/b&gt; (a sleigh, a rolling disk or a two-wheeled carriage) rests on a knife edge at &lt;b&gt;P&lt;/b&gt;: P moves only along the body&apos;s heading φ, never sideways. A control inside the body steers it so that P follows the &lt;b&gt;path&lt;/b&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Ψ&lt;/b&gt;, the control angle, splits the body&apos;s energy between driving and turning: ṡ = v&lt;sub&gt;T&lt;/sub&gt; sin Ψ and bφ̇ = v&lt;sub&gt;T&lt;/sub&gt; cos Ψ (the triangle). On a straight path Ψ = π/2; the path&apos;s curvature κ fixes it, tan Ψ = 1/(bκ).&lt;/p&gt;&lt;p&gt;&lt;b&gt;χ&lt;/b&gt; = Ψ − (a/b)φ is the angle the control turns, and &lt;b&gt;λ&lt;/b&gt; = m b χ̇ is how hard it turns it: a push λφ̇ along the heading and a couple −λṡ, which at constant energy do no work.&lt;/p&gt;&lt;p&gt;The &lt;b&gt;ghost&lt;/b&gt; is the same body from the same start with no control (λ = 0): its turning dies away, the knife lets it go only straight on, and it leaves the path. The &lt;b&gt;vakonomic body&lt;/b&gt; obeys the other mechanics the paper discusses: its λ follows an equation of its own, only its start can be chosen, and it cannot keep to the path either.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;Um &lt;b&gt;corpo&lt;/b&gt; (um trenó, um disco que rola ou um carrinho de duas rodas) apoia-se numa lâmina em &lt;b&gt;P&lt;/b&gt;: P só se move na direção do corpo φ, nunca de lado. Um controle dentro do corpo o dirige de modo que P siga o &lt;b&gt;caminho&lt;/b&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Ψ&lt;/b&gt;, o ângulo de controle, reparte a energia do corpo entre avançar e girar: ṡ = v&lt;sub&gt;T&lt;/sub&gt; sen Ψ e bφ̇ = v&lt;sub&gt;T&lt;/sub&gt; cos Ψ (o triângulo). Num caminho reto Ψ = π/2; a curvatura κ do caminho o fixa, tan Ψ = 1/(bκ).&lt;/p&gt;&lt;p&gt;&lt;b&gt;χ&lt;/b&gt; = Ψ − (a/b)φ é o ângulo que o controle gira, e &lt;b&gt;λ&lt;/b&gt; = m b χ̇ é a força com que o gira: um empurrão λφ̇ na direção do corpo e um binário −λṡ, que a energia constante não realizam trabalho.&lt;/p&gt;&lt;p&gt;O &lt;b&gt;fantasma&lt;/b&gt; é o mesmo corpo, do mesmo início, sem controle (λ = 0): seu giro se extingue, a lâmina só o deixa seguir em frente, e ele sai do caminho. O &lt;b&gt;corpo vakonômico&lt;/b&gt; obedece à outra mecânica que o artigo discute: seu λ segue uma equação própria, só o seu início pode ser escolhido, e ele também não consegue se manter no caminho.&lt;/p&gt;</translation>
+        <translation>&lt;p&gt;Um &lt;b&gt;corpo&lt;/b&gt; (um trenó, um disco que rola ou um carrinho de duas rodas) apoia-se numa lâmina em &lt;b&gt;P&lt;/b&gt;: P só se move na direção do corpo φ, nunca de lado. Um controle dentro do corpo o dirige de modo que P siga o &lt;b&gt;caminho&lt;/b&gt;.&lt;/p&gt;&lt;p&gt;&lt;b&gt;Ψ&lt;/b&gt;, o ângulo de controle, reparte a energia do corpo entre avançar e girar: ṡ = v&lt;sub&gt;T&lt;/sub&gt; sen Ψ e bφ̇ = v&lt;sub&gt;T&lt;/sub&gt; cos Ψ (o triângulo). Num caminho reto Ψ = π/2; a curvatura κ do caminho o fixa, tan Ψ = 1/(bκ).&lt;/p&gt;&lt;p&gt;&lt;b&gt;χ&lt;/b&gt; = Ψ − (a/b)φ é o ângulo que o controle gira, e &lt;b&gt;λ&lt;/b&gt; = m b χ̇ é a força com que o gira: um empurrão λφ̇ na direção do corpo e um torque −λṡ, que, com energia constante, não realizam trabalho.&lt;/p&gt;&lt;p&gt;O &lt;b&gt;fantasma&lt;/b&gt; é o mesmo corpo, do mesmo início, sem controle (λ = 0): seu giro se extingue, a lâmina só o deixa seguir em frente, e ele sai do caminho. O &lt;b&gt;corpo vakonômico&lt;/b&gt; obedece à outra mecânica que o artigo discute: seu λ segue uma equação própria, só o seu início pode ser escolhido, e ele também não consegue se manter no caminho.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>Don&apos;t show this at start</source>
@@ -1536,6 +1814,26 @@ realimentação: %2</translation>
         <source>Preset %1 loaded; Ctrl+Z goes back</source>
         <translation>Predefinição %1 carregada; Ctrl+Z desfaz</translation>
     </message>
+    <message>
+        <source>The system and its parameters</source>
+        <translation>O sistema e seus parâmetros</translation>
+    </message>
+    <message>
+        <source>Choosing a path</source>
+        <translation>Escolhendo um caminho</translation>
+    </message>
+    <message>
+        <source>Methods and accuracy</source>
+        <translation>Métodos e precisão</translation>
+    </message>
+    <message>
+        <source>Plots</source>
+        <translation>Gráficos</translation>
+    </message>
+    <message>
+        <source>Animation</source>
+        <translation>Animação</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::MethodsPanel</name>
@@ -1622,6 +1920,28 @@ realimentação: %2</translation>
     <message>
         <source>The scene changed: press Compute for this scene&apos;s diagram.</source>
         <translation>A cena mudou: clique em Calcular para obter o diagrama desta cena.</translation>
+    </message>
+    <message>
+        <source>controlled</source>
+        <translation>controlado</translation>
+    </message>
+    <message>
+        <source>free</source>
+        <translation>livre</translation>
+    </message>
+    <message>
+        <source>%1, Gauss–Kronrod 61 at tolerance 1e-14 (the tightest method)</source>
+        <translation>%1, Gauss–Kronrod 61 com tolerância 1e-14 (o método mais rigoroso)</translation>
+    </message>
+    <message>
+        <source>%1 (no independent method for this path)</source>
+        <translation>%1 (não há método independente para este caminho)</translation>
+    </message>
+    <message>
+        <source>controlled: %1
+free: %2</source>
+        <translation>controlado: %1
+livre: %2</translation>
     </message>
 </context>
 <context>

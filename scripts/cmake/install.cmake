@@ -56,7 +56,7 @@ if(CHAPLYGIN_PYTHON)
   set(CPACK_DEBIAN_PACKAGE_DEPENDS "python3 (>= ${CHAPLYGIN_PYTHON_VERSION}~), \
 python3 (<< ${CHAPLYGIN_PYTHON_NEXT_VERSION}), python3-numpy")
 endif()
-# GIF and MP4 export run the ffmpeg program
-set(CPACK_DEBIAN_PACKAGE_RECOMMENDS ffmpeg)
+# GIF and MP4 export run the ffmpeg program; Qt's own catalogues translate the dialogs' buttons
+set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "ffmpeg, qt6-translations-l10n")
 set(CPACK_STRIP_FILES ON)
 include(CPack)

@@ -35,6 +35,28 @@ QString plainMethodName(const std::string& id) {
     return QString::fromStdString(id);
 }
 
+QString shortMethodName(const std::string& id) {
+    static const std::array<std::pair<const char*, const char*>, 13> names = {{
+        {"closed_form", QT_TRANSLATE_NOOP("MethodNames", "Exact formula")},
+        {"quadrature_gauss_newton", QT_TRANSLATE_NOOP("MethodNames", "Path quadrature")},
+        {"gsl_qag_newton", QT_TRANSLATE_NOOP("MethodNames", "QAG (GSL)")},
+        {"gsl_rk4", QT_TRANSLATE_NOOP("MethodNames", "RK4 (GSL)")},
+        {"gsl_rkf45", QT_TRANSLATE_NOOP("MethodNames", "RKF45 (GSL)")},
+        {"gsl_rkck", QT_TRANSLATE_NOOP("MethodNames", "Cash\u2013Karp (GSL)")},
+        {"gsl_rk8pd", QT_TRANSLATE_NOOP("MethodNames", "RK8PD (GSL)")},
+        {"gsl_msadams", QT_TRANSLATE_NOOP("MethodNames", "Adams (GSL)")},
+        {"gsl_msbdf", QT_TRANSLATE_NOOP("MethodNames", "BDF (GSL)")},
+        {"rk4_classical", QT_TRANSLATE_NOOP("MethodNames", "RK4")},
+        {"rk4_energy_projection", QT_TRANSLATE_NOOP("MethodNames", "RK4, energy kept")},
+        {"open_loop_gsl_rk8pd", QT_TRANSLATE_NOOP("MethodNames", "Open loop, RK8PD")},
+        {"open_loop_rk4_classical", QT_TRANSLATE_NOOP("MethodNames", "Open loop, RK4")},
+    }};
+    for (const auto& [key, name] : names)
+        if (id == key)
+            return QCoreApplication::translate("MethodNames", name);
+    return plainMethodName(id);
+}
+
 QString plainModelSummary(const Solution& solution) {
     const ModelReport& m = solution.models();
     const bool exactTime = m.timeLaw.rfind("closed form", 0) == 0;
@@ -50,16 +72,19 @@ QString plainModelSummary(const Solution& solution) {
     return summary;
 }
 
+QString technicalModel(const std::string& description) {
+    return QCoreApplication::translate("ModelReport", description.c_str());
+}
+
 QString technicalModels(const Solution& solution) {
     const ModelReport& m = solution.models();
-    QString text =
-        QCoreApplication::translate("MethodNames",
-                                    "path: %1\ntime law: %2\ns(t): %3\ncontrol: %4\n"
-                                    "free velocities: %5\nfree position: %6\nvakonomic body: %7")
-            .arg(QString::fromStdString(m.path), QString::fromStdString(m.timeLaw),
-                 QString::fromStdString(m.inversion), QString::fromStdString(m.control),
-                 QString::fromStdString(m.freeVelocity), QString::fromStdString(m.freePosition),
-                 QString::fromStdString(m.vakonomic));
+    QString text = QCoreApplication::translate(
+                       "MethodNames", "path: %1\ntime law: %2\ns(t): %3\ncontrol: %4\n"
+                                      "free velocities: %5\nfree position: %6\nvakonomic body: %7")
+                       .arg(QString::fromStdString(m.path), technicalModel(m.timeLaw),
+                            technicalModel(m.inversion), technicalModel(m.control),
+                            technicalModel(m.freeVelocity), technicalModel(m.freePosition),
+                            technicalModel(m.vakonomic));
     if (!m.perturbed.empty())
         text += QCoreApplication::translate("MethodNames", "\nopen loop: %1\nfeedback: %2")
                     .arg(QString::fromStdString(m.perturbed), QString::fromStdString(m.feedback));

@@ -241,17 +241,29 @@ void MethodsPanel::showReport(const WorkPrecisionReport& report) {
         int row = m_table->rowCount();
         m_table->insertRow(row);
         const bool front = onParetoFront(report.rows, i);
-        const QStringList cells = {QString::fromStdString(motionProblemName(r.problem)),
-                                   plainMethodName(r.method) + settingText(r), number(r.error),
-                                   number(r.seconds), front ? tr("yes") : tr("no")};
+        const QString problem =
+            r.problem == MotionProblem::Controlled ? tr("controlled") : tr("free");
+        const QStringList cells = {problem, plainMethodName(r.method) + settingText(r),
+                                   number(r.error), number(r.seconds),
+                                   front ? tr("yes") : tr("no")};
         for (int c = 0; c < cells.size(); ++c)
             m_table->setItem(row, c, new QTableWidgetItem(cells[c]));
         m_table->item(row, 1)->setToolTip(QString::fromStdString(r.method)); // the registry's id
     }
-    m_references->setText(
-        tr("<b>References</b><br>controlled: %1<br>free: %2")
-            .arg(QString::fromStdString(report.controlledReference).toHtmlEscaped(),
-                 QString::fromStdString(report.freeReference).toHtmlEscaped()));
+    // the references by their plain names; the registry's ids in the tooltip
+    QString controlled = plainMethodName(report.controlledReferenceMethod);
+    if (report.controlledReferenceTightest)
+        controlled = tr("%1, Gauss\u2013Kronrod 61 at tolerance 1e-14 (the tightest method)")
+                         .arg(controlled);
+    else if (!report.controlledReferenceIndependent)
+        controlled = tr("%1 (no independent method for this path)").arg(controlled);
+    m_references->setText(tr("<b>References</b><br>controlled: %1<br>free: %2")
+                              .arg(controlled.toHtmlEscaped(),
+                                   plainMethodName(report.freeReferenceMethod).toHtmlEscaped()));
+    m_references->setToolTip(
+        tr("controlled: %1\nfree: %2")
+            .arg(QString::fromStdString(report.controlledReferenceMethod),
+                 QString::fromStdString(report.freeReferenceMethod)));
     QString summary = tr("%1 configurations; horizons %2 s (controlled), %3 s (free).")
                           .arg(report.rows.size())
                           .arg(number(report.controlledEnd), number(report.freeEnd));

@@ -1,5 +1,6 @@
 #include "panels/path_panel.h"
 
+#include "document/scene_texts.h"
 #include "scene/presets.h"
 #include "widgets/number_field.h"
 
@@ -35,7 +36,7 @@ PathPanel::PathPanel(QWidget* parent)
     m_preset = new QComboBox;
     m_preset->addItem(tr("(choose a preset)"));
     for (const std::string& name : presetNames())
-        m_preset->addItem(QString::fromStdString(name));
+        m_preset->addItem(sceneText(name), QString::fromStdString(name));
     m_preset->setToolTip(tr("Load one of the paper's four examples with the paper's parameters"));
     m_presetInfo = new QLabel;
     m_presetInfo->setWordWrap(true);
@@ -152,7 +153,7 @@ PathPanel::PathPanel(QWidget* parent)
 
     connect(m_preset, &QComboBox::activated, this, [this](int index) {
         if (index > 0)
-            emit presetChosen(m_preset->itemText(index));
+            emit presetChosen(m_preset->itemData(index).toString());
     });
     connect(m_graph, &QRadioButton::toggled, this, &PathPanel::updateKind);
     for (QLineEdit* e : {m_y, m_xu, m_yu})
@@ -233,9 +234,9 @@ void PathPanel::setScene(const Scene& scene) {
         m_strokeDrawn = true;
     m_scene = scene;
     const PathSource& p = scene.path;
-    int preset = m_preset->findText(QString::fromStdString(scene.preset));
+    int preset = m_preset->findData(QString::fromStdString(scene.preset));
     m_preset->setCurrentIndex(preset > 0 ? preset : 0);
-    m_presetInfo->setText(QString::fromStdString(presetDescription(scene.preset)));
+    m_presetInfo->setText(sceneText(presetDescription(scene.preset)));
     m_presetInfo->setVisible(!m_presetInfo->text().isEmpty()); // no empty line under the box
     showDrawSettings();
     if (p.kind != PathKind::Polyline) {

@@ -40,8 +40,8 @@ SweepPanel::SweepPanel(SceneDocument* document, QWidget* parent)
         });
     m_quantity = new QComboBox;
     for (int q = 0; q < kSweepQuantityCount; ++q)
-        m_quantity->addItem(
-            QString::fromStdString(sweepQuantityLabel(static_cast<SweepQuantity>(q))));
+        m_quantity->addItem(QCoreApplication::translate(
+            "SweepQuantity", sweepQuantityLabel(static_cast<SweepQuantity>(q)).c_str()));
     m_quantity->setCurrentIndex(static_cast<int>(SweepQuantity::MaxAbsLambda));
     m_run = new QPushButton(tr("Run sweep"));
     m_cancel = new QPushButton(tr("Cancel"));

@@ -26,9 +26,11 @@ void drawSweep(QCustomPlot& plot, const SweepReport& report, SweepQuantity quant
     graph->setPen(QPen(QColor(0x1f, 0x77, 0xb4), 1.5));
     graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, QColor(0x1f, 0x77, 0xb4),
                                            QColor(0x1f, 0x77, 0xb4), 6));
-    graph->setName(QString::fromStdString(sweepQuantityLabel(quantity)));
+    graph->setName(
+        QCoreApplication::translate("SweepQuantity", sweepQuantityLabel(quantity).c_str()));
     plot.xAxis->setLabel(QString::fromStdString(report.spec.parameter));
-    plot.yAxis->setLabel(QString::fromStdString(sweepQuantityLabel(quantity)));
+    plot.yAxis->setLabel(
+        QCoreApplication::translate("SweepQuantity", sweepQuantityLabel(quantity).c_str()));
     if (!x.isEmpty()) {
         double lo = std::min(report.spec.from, report.spec.to),
                hi = std::max(report.spec.from, report.spec.to);
@@ -59,7 +61,8 @@ void exportSweep(const SweepReport& report, const QString& caption, const QStrin
             new QCPTextElement(&plot,
                                QCoreApplication::translate("SweepPlot", "Sweep of %1: %2")
                                    .arg(QString::fromStdString(report.spec.parameter),
-                                        QString::fromStdString(sweepQuantityLabel(quantity))),
+                                        QCoreApplication::translate(
+                                            "SweepQuantity", sweepQuantityLabel(quantity).c_str())),
                                QFont(plot.font().family(), 12, QFont::Bold)));
         for (const QString& format : formats) {
             QByteArray bytes = renderPlot(plot, format, 900, 600);

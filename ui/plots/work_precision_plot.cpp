@@ -3,6 +3,7 @@
 #include <QCoreApplication>
 
 #include "common/atomic_file.h"
+#include "document/method_names.h"
 #include "plots/plot_export.h"
 
 #include <qcustomplot.h>
@@ -62,7 +63,7 @@ void panel(QCustomPlot& plot, QCPAxisRect* rect, const WorkPrecisionReport& repo
         }
         auto* curve = new QCPCurve(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
         curve->setData(x, y);
-        curve->setName(QString::fromStdString(name));
+        curve->setName(shortMethodName(name)); // the table has the plain names
         QColor c = kPalette[colour++ % kPalette.size()];
         curve->setPen(QPen(c, 1.2));
         curve->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssCircle, c, 4));

@@ -37,6 +37,24 @@ constexpr Doc kDocs[] = {
     {"architecture.md", QT_TRANSLATE_NOOP("chaplygin::ui::HelpWindow", "Architecture")}};
 } // namespace
 
+// a document in the language of the window's catalogue when it has a translation: the
+// catalogue names its language ("pt_BR") and docs/user-guide.pt_BR.md is the guide in it
+static QString languageCode() {
+    return HelpWindow::tr("en",
+                          "the language code of this catalogue, as in docs/user-guide.CODE.md");
+}
+
+QString HelpWindow::resourcePath(const QString& document) {
+    const QString code = languageCode();
+    if (code != QLatin1String("en") && document.endsWith(QLatin1String(".md"))) {
+        QString translated = QStringLiteral(":/help/") + document;
+        translated.insert(translated.size() - 3, u'.' + code);
+        if (QFile::exists(translated))
+            return translated;
+    }
+    return QStringLiteral(":/help/") + document;
+}
+
 QStringList HelpWindow::documents() {
     QStringList names;
     for (const Doc& d : kDocs)
@@ -69,7 +87,12 @@ HelpWindow::HelpWindow(QWidget* parent) : QWidget(parent, Qt::Window) {
     // links between the documents ("physics.md#...") stay in the window
     connect(m_browser, &QTextBrowser::sourceChanged, this, [this](const QUrl& url) {
         setDottedSymbolFont(*m_browser->document()); // φ̇ with its dot on the φ
-        m_current = url.fileName();
+        // user-guide.pt_BR.md is the document user-guide.md
+        QString name = url.fileName();
+        const QString translated = u'.' + languageCode() + QStringLiteral(".md");
+        if (name.endsWith(translated))
+            name = name.left(name.size() - translated.size()) + QStringLiteral(".md");
+        m_current = name;
         int row = documents().indexOf(m_current);
         if (row >= 0 && m_list->currentRow() != row)
             m_list->setCurrentRow(row);
@@ -83,7 +106,7 @@ HelpWindow::HelpWindow(QWidget* parent) : QWidget(parent, Qt::Window) {
 }
 
 bool HelpWindow::showTopic(const QString& document, const QString& section) {
-    const QString path = QStringLiteral(":/help/") + document;
+    const QString path = resourcePath(document);
     if (!documents().contains(document) || !QFile::exists(path))
         return false;
     if (document != m_current || m_browser->document()->isEmpty()) {

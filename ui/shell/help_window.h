@@ -17,6 +17,9 @@ class HelpWindow : public QWidget {
 
     /// The documents, as resource file names ("user-guide.md", "physics.md", ...).
     static QStringList documents();
+    /// The resource that shows document: its translation into the catalogue's language
+    /// (":/help/user-guide.pt_BR.md") when there is one, else the English one.
+    static QString resourcePath(const QString& document);
     /// Shows document (a name from documents()) scrolled to the heading that contains section
     /// (case-insensitive; empty: the top). Returns false when either is not found (the document
     /// is shown from the top when it exists).

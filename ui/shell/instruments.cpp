@@ -4,6 +4,7 @@
 #include "canvas/vector_painter.h"
 #include "document/pin_set.h"
 #include "document/scene_document.h"
+#include "document/scene_texts.h"
 #include "panels/equations_panel.h"
 #include "panels/notes_panel.h"
 #include "scene/pinned_runs.h"
@@ -108,7 +109,7 @@ void installInstruments(MainWindow* window, QMenu& viewMenu, QDockWidget& accura
     window->tabifyDockWidget(notesDock, equationsDock);
     accuracyDock.raise();
     QObject::connect(doc, &SceneDocument::solutionChanged, notes,
-                     [doc, notes] { notes->setNote(QString::fromStdString(doc->scene().note)); });
+                     [doc, notes] { notes->setNote(sceneText(doc->scene().note)); });
     // presenting: the equations are not needed, the notes only when the scene has one
     PresentationMode* presentation = window->presentation();
     presentation->addHiddenDock(equationsDock);

@@ -9,6 +9,7 @@
 #include "document/scene_command.h"
 #include "document/scene_document.h"
 #include "document/scene_files.h"
+#include "document/scene_texts.h"
 #include "lab/gallery.h"
 #include "panels/accuracy_readout.h"
 #include "panels/methods_panel.h"
@@ -264,7 +265,7 @@ void MainWindow::choosePreset(const QString& name) {
         return;
     }
     m_document->load(next,
-                     {.description = tr("Preset %1").arg(name),
+                     {.description = tr("Preset %1").arg(sceneText(name.toStdString())),
                       .loaded =
                           [this, name] {
                               startNewScene();
@@ -326,8 +327,8 @@ bool MainWindow::loadGalleryEntry(const QString& name) {
     for (std::size_t i = 0; i < entries.size(); ++i)
         if (&entries[i] == &entry)
             m_galleryIndex = int(i);
-    const QString title = QString::fromStdString(entry.title);
-    const QString explanation = QString::fromStdString(entry.scene.note);
+    const QString title = sceneText(entry.title);
+    const QString explanation = sceneText(entry.scene.note);
     if (!m_presentation->isActive()) // presenting, the explanation is in the Notes dock
         bringDockForward(this, m_docks.accuracy);
     // vetted before this returns: a refused entry's refusal is its lesson

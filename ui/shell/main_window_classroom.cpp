@@ -41,20 +41,21 @@ HelpWindow* MainWindow::showHelp(const QString& document, const QString& section
 }
 
 void MainWindow::showContextHelp() {
-    // the section of the user guide about the part of the window that has the focus
+    // the section of the user guide about the part of the window that has the focus; the
+    // translation of a section's name is its heading in the translated guide
     QWidget* w = QApplication::focusWidget();
     auto inside = [w](QWidget* area) { return w && area && (w == area || area->isAncestorOf(w)); };
     QString section;
     if (inside(m_docks.parameters))
-        section = QStringLiteral("The system and its parameters");
+        section = tr("The system and its parameters");
     else if (inside(m_docks.path))
-        section = QStringLiteral("Choosing a path");
+        section = tr("Choosing a path");
     else if (inside(m_docks.methods) || inside(m_docks.accuracy))
-        section = QStringLiteral("Methods and accuracy");
+        section = tr("Methods and accuracy");
     else if (inside(m_docks.plots))
-        section = QStringLiteral("Plots");
+        section = tr("Plots");
     else if (inside(m_canvas) || inside(m_timeline))
-        section = QStringLiteral("Animation");
+        section = tr("Animation");
     showHelp(QStringLiteral("user-guide.md"), section);
 }
 

@@ -12,6 +12,7 @@
 #include "document/scene_command.h"
 #include "document/scene_document.h"
 #include "document/scene_files.h"
+#include "document/scene_texts.h"
 #include "lab/gallery.h"
 #include "panels/accuracy_readout.h"
 #include "panels/methods_panel.h"
@@ -184,7 +185,7 @@ void MainWindow::buildMenus() {
     // keyboard control of a demo: the paper's presets on 1 ... 4, the gallery on Page Up/Down
     const std::vector<std::string> presets = presetNames();
     for (int i = 0; i < int(presets.size()) && i < 9; ++i)
-        play->addAction(tr("Preset %1: %2").arg(i + 1).arg(QString::fromStdString(presets[i])),
+        play->addAction(tr("Preset %1: %2").arg(i + 1).arg(sceneText(presets[i])),
                         QKeySequence(Qt::Key_1 + i), this, [this, i] { choosePresetNumber(i); });
     play->addAction(tr("Ne&xt gallery scene"), QKeySequence(Qt::Key_PageDown), this,
                     [this] { stepGallery(1); });
