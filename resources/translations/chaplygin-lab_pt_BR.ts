@@ -194,70 +194,6 @@
         <translation>sem trabalho: a energia fica (m_eff/2)(ṡ² + b²φ̇²) = %1 J</translation>
     </message>
     <message>
-        <source>at rest (the target is the start)</source>
-        <translation>em repouso (o alvo é o início)</translation>
-    </message>
-    <message>
-        <source>pivoting about P (Ψ ≡ 0 or π)</source>
-        <translation>pivotando em torno de P (Ψ ≡ 0 ou π)</translation>
-    </message>
-    <message>
-        <source>the straight line (Ψ ≡ ±π/2)</source>
-        <translation>a linha reta (Ψ ≡ ±π/2)</translation>
-    </message>
-    <message>
-        <source>libration (k &amp;lt; 1)</source>
-        <translation>libração (k &amp;lt; 1)</translation>
-    </message>
-    <message>
-        <source>rotation (k &amp;gt; 1)</source>
-        <translation>rotação (k &amp;gt; 1)</translation>
-    </message>
-    <message>
-        <source>separatrix (k = 1)</source>
-        <translation>separatriz (k = 1)</translation>
-    </message>
-    <message>
-        <source>Plan: motion %1 of %2, %3</source>
-        <translation>Plano: movimento %1 de %2, %3</translation>
-    </message>
-    <message>
-        <source>the pendulum&apos;s modulus, docs/physics.md §10</source>
-        <translation>o módulo do pêndulo, docs/physics.md §10</translation>
-    </message>
-    <message>
-        <source>Ψ(0) = atan2(ṡ, bφ̇) at the start</source>
-        <translation>Ψ(0) = atan2(ṡ, bφ̇) no início</translation>
-    </message>
-    <message>
-        <source>the one free constant: the control</source>
-        <translation>a única constante livre: o controle</translation>
-    </message>
-    <message>
-        <source>arrival, the least time (certified by the cut time)</source>
-        <translation>chegada, o menor tempo (certificado pelo tempo de corte)</translation>
-    </message>
-    <message>
-        <source>arrival</source>
-        <translation>chegada</translation>
-    </message>
-    <message>
-        <source>cut time</source>
-        <translation>tempo de corte</translation>
-    </message>
-    <message>
-        <source>optimal up to here: the first Maxwell time</source>
-        <translation>ótimo até aqui: o primeiro tempo de Maxwell</translation>
-    </message>
-    <message>
-        <source>along the motion now, t clamped to it</source>
-        <translation>ao longo do movimento agora, t limitado a ele</translation>
-    </message>
-    <message>
-        <source>along the motion now</source>
-        <translation>ao longo do movimento agora</translation>
-    </message>
-    <message>
         <source>power f_sṡ + τφ̇</source>
         <translation>potência f_sṡ + τφ̇</translation>
     </message>
@@ -798,6 +734,30 @@ realimentação: %2</translation>
         <source>Sinusoid y = −sin x over two periods (eqs. 108–113, Fig. 3): Ψ passes π/2 at inflections.</source>
         <translation>Senoide y = −sin x ao longo de dois períodos (eqs. 108–113, Fig. 3): Ψ passa por π/2 nas inflexões.</translation>
     </message>
+    <message>
+        <source>Park sideways by b: two mirror optima</source>
+        <translation>Estacionar de lado por b: dois ótimos espelhados</translation>
+    </message>
+    <message>
+        <source>Pose to pose (docs/physics.md §10): the sleigh is moved sideways by b, from (0, 0, 0) to (0, 1, 0) with the same heading. The knife forbids the direct move, so the fastest manoeuvre drives forward, turns, backs up through a cusp and straightens again, in t = 3.3404 b/v_T. This scene tracks the forward-first optimum (Ψ0 = 2.0344, bΨ̇0/v_T = 1.4929); its mirror image, backing up first (Ψ0 = −1.1071), arrives at the same time: the target lies on the Maxwell set, where two minimisers tie and both arrive exactly at their cut time. The controlled body tracking this knife track and the genuine vakonomic body coincide: on a geodesic&apos;s track the paper&apos;s tracking is genuinely vakonomic. The Plan tool draws both optima.</source>
+        <translation>De pose a pose (docs/physics.md §10): o trenó é deslocado de lado por b, de (0, 0, 0) a (0, 1, 0) com a mesma orientação. A faca proíbe o movimento direto; a manobra mais rápida avança, vira, dá ré por uma cúspide e se endireita, em t = 3,3404 b/v_T. Esta cena segue o ótimo que começa para a frente (Ψ0 = 2,0344, bΨ̇0/v_T = 1,4929); sua imagem espelhada, que começa de ré (Ψ0 = −1,1071), chega no mesmo instante: o alvo está no conjunto de Maxwell, onde dois minimizadores empatam e ambos chegam exatamente no tempo de corte. O corpo controlado que segue este rastro e o corpo vakonômico genuíno coincidem: no rastro de uma geodésica o rastreamento do artigo é genuinamente vakonômico. A ferramenta Planejar desenha os dois ótimos.</translation>
+    </message>
+    <message>
+        <source>A geodesic past its cut time</source>
+        <translation>Uma geodésica além do seu tempo de corte</translation>
+    </message>
+    <message>
+        <source>Pose to pose (docs/physics.md §10): from (0, 0, 0) to (2, 0, 0), straight ahead. The straight line gets there in t = 2 b/v_T, and it is the optimum. This scene tracks another genuine vakonomic motion to the same target: a libration (k = 0.556, Ψ0 = 0.5896, Ψ̇0 = 0) that swings forward and back through two cusps and arrives at t = 6.8771 b/v_T, twice its cut time 3.4385 b/v_T. It does reach the target (the controlled body ends on it to 1e-14), and it is a geodesic, but past its cut time it is no longer a shortest way: the straight line, 3.4 times shorter, is. Its mirror image (Ψ0 = 2.5520) arrives at the same time. Shooting alone can return such a motion; the planner certifies the optimum with the cut time. The Plan tool draws the straight line beside it.</source>
+        <translation>De pose a pose (docs/physics.md §10): de (0, 0, 0) a (2, 0, 0), em linha reta. A reta chega em t = 2 b/v_T e é o ótimo. Esta cena segue outro movimento vakonômico genuíno para o mesmo alvo: uma libração (k = 0,556, Ψ0 = 0,5896, Ψ̇0 = 0) que oscila para a frente e para trás por duas cúspides e chega em t = 6,8771 b/v_T, o dobro do seu tempo de corte 3,4385 b/v_T. Ela alcança o alvo (o corpo controlado termina nele a menos de 1e-14) e é uma geodésica, mas depois do tempo de corte deixa de ser um caminho mais curto: a reta, 3,4 vezes mais curta, é. Sua imagem espelhada (Ψ0 = 2,5520) chega no mesmo instante. Um método de tiro sozinho pode devolver um movimento assim; o planejador certifica o ótimo pelo tempo de corte. A ferramenta Planejar desenha a reta ao lado.</translation>
+    </message>
+    <message>
+        <source>Pivot by π: the Maxwell point</source>
+        <translation>Girar de π: o ponto de Maxwell</translation>
+    </message>
+    <message>
+        <source>Pose to pose (docs/physics.md §10): the target is the start turned by π, (0, 0, π). The least time is π b/v_T, spent pivoting in place about the knife point with Ψ ≡ 0 (turning left), which is what this scene tracks. Turning right (Ψ ≡ π) takes exactly as long: the two pivots tie, the target lies on the Maxwell set, and π b/v_T is the pivot&apos;s cut time, so every turn by less than π is optimal and every turn by more is not (the other way round is shorter). The controlled body&apos;s λ here is that of the genuine vakonomic body: λ = −m a φ̇ while pivoting. The Plan tool draws both pivots.</source>
+        <translation>De pose a pose (docs/physics.md §10): o alvo é o início girado de π, (0, 0, π). O menor tempo é π b/v_T, girando no lugar em torno do ponto da faca com Ψ ≡ 0 (para a esquerda), que é o que esta cena segue. Girar para a direita (Ψ ≡ π) leva exatamente o mesmo tempo: os dois giros empatam, o alvo está no conjunto de Maxwell, e π b/v_T é o tempo de corte do giro, de modo que todo giro de menos de π é ótimo e todo giro de mais não é (pelo outro lado é mais curto). O λ do corpo controlado é aqui o do corpo vakonômico genuíno: λ = −m a φ̇ durante o giro. A ferramenta Planejar desenha os dois giros.</translation>
+    </message>
 </context>
 <context>
     <name>SweepPlot</name>
@@ -1292,50 +1252,6 @@ realimentação: %2</translation>
     <message>
         <source> (refused)</source>
         <translation> (recusado)</translation>
-    </message>
-    <message>
-        <source>A corner in constant-speed mode: cannot turn</source>
-        <translation>Um canto no modo de velocidade constante: não consegue girar</translation>
-    </message>
-    <message>
-        <source>A corner in constant-energy mode: pivot in place</source>
-        <translation>Um canto no modo de energia constante: pivô no lugar</translation>
-    </message>
-    <message>
-        <source>A cusp: the sleigh backs up</source>
-        <translation>Uma cúspide: o trenó anda de ré</translation>
-    </message>
-    <message>
-        <source>Very high curvature, bκ = 1000</source>
-        <translation>Curvatura muito alta, bκ = 1000</translation>
-    </message>
-    <message>
-        <source>A long horizon: t = 5000 s</source>
-        <translation>Um horizonte longo: t = 5000 s</translation>
-    </message>
-    <message>
-        <source>Open-loop integration of (36)-(37) drifts off the path</source>
-        <translation>A integração em malha aberta de (36)-(37) se afasta do caminho</translation>
-    </message>
-    <message>
-        <source>The paper&apos;s printed branch reverses at inflections</source>
-        <translation>O ramo impresso no artigo se inverte nas inflexões</translation>
-    </message>
-    <message>
-        <source>The genuine vakonomic system leaves the circle</source>
-        <translation>O sistema vakonômico genuíno deixa o círculo</translation>
-    </message>
-    <message>
-        <source>Park sideways by b: two mirror optima</source>
-        <translation>Estacionar de lado por b: dois ótimos espelhados</translation>
-    </message>
-    <message>
-        <source>Pivot by π: the Maxwell point</source>
-        <translation>Girar de π: o ponto de Maxwell</translation>
-    </message>
-    <message>
-        <source>A geodesic past its cut time</source>
-        <translation>Uma geodésica além do seu tempo de corte</translation>
     </message>
 </context>
 <context>
@@ -2093,8 +2009,8 @@ O que os estudantes devem observar…</translation>
         <translation>inválido: %1</translation>
     </message>
     <message>
-        <source>%1 [%2]: %3; slider %4 … %5 %2; type any value or an expression such as 2*pi or 1e6</source>
-        <translation>%1 [%2]: %3; controle deslizante %4 … %5 %2; digite qualquer valor ou uma expressão como 2*pi ou 1e6</translation>
+        <source>%1 [%2]: %3; slider %4 … %5 %2</source>
+        <translation>%1 [%2]: %3; controle deslizante %4 … %5 %2</translation>
     </message>
 </context>
 <context>
