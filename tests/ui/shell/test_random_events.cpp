@@ -2,7 +2,9 @@
 // canvas, slider moves, typed garbage, menu actions, undo and redo, playback) through QTest on
 // the offscreen platform. After each event: no crash, the document valid, nothing non-finite
 // about to be drawn. The seed is printed with every failure; CHAPLYGIN_GUI_SEED and
-// CHAPLYGIN_GUI_EVENTS replay or lengthen a run.
+// CHAPLYGIN_GUI_EVENTS replay or lengthen a run. A second stream mixes in the extremes: bursts
+// of wheel notches to both ends of the zoom range, the longest horizons, every slider at its ends,
+// fields typed with the extremes of a double, and strokes of every size.
 #include "canvas/scene_canvas.h"
 #include "document/file_dialogs.h"
 #include "document/scene_document.h"
@@ -47,9 +49,15 @@ constexpr unsigned kDefaultSeed = 20261130;
 // one in the release suite
 #if defined(__SANITIZE_ADDRESS__)
 constexpr int kDefaultEvents = 1500;
+constexpr int kDefaultExtremeEvents = 300;
 #else
 constexpr int kDefaultEvents = 5000;
+constexpr int kDefaultExtremeEvents = 1500;
 #endif
+
+// the longest an event of the extremes' stream may keep the UI thread in the release build [s]:
+// a zoom burst, a long horizon or a long stroke is work the program bounds, never a stall
+constexpr double kSlowestEventS = 5;
 
 // the program's documented bound on its resident memory under any sequence of events [MB]
 constexpr double kPeakMemoryMb = 1024;
@@ -72,16 +80,26 @@ class TestRandomEvents : public QObject {
   private slots:
     void initTestCase();
     void randomEventStream();
+    void extremeEventStream();
 
   private:
+    /// Sends `events` events from the seed's stream, checking the window after each; with
+    /// extremes, every other event is one of extremeEvent's. Keeps the slowest event's time.
+    void runStream(unsigned seed, int events, bool extremes);
     /// One random event; returns a short description for the failure message.
     QString randomEvent();
+    /// One event at the program's extremes (zoom range ends, longest horizons, slider ends,
+    /// extreme doubles typed, strokes of every size).
+    QString extremeEvent();
+    /// A stroke of n samples on the canvas in draw mode, starting at a.
+    void stroke(QPoint a, const QList<QPoint>& samples);
     /// Empty when the window is consistent, else what is wrong.
     QString check();
 
     std::unique_ptr<MainWindow> m_window;
     std::mt19937 m_rng;
     QList<QAction*> m_actions;
+    double m_slowestS = 0; ///< the UI thread's longest time for one event, its events and paint
 
     int pick(int n) { return std::uniform_int_distribution<int>(0, n - 1)(m_rng); }
     double uniform(double lo, double hi) {
@@ -251,6 +269,108 @@ QString TestRandomEvents::randomEvent() {
     }
 }
 
+void TestRandomEvents::stroke(QPoint a, const QList<QPoint>& samples) {
+    SceneCanvas* canvas = m_window->canvas();
+    if (!canvas->drawMode())
+        m_window->pathPanel()->drawButton()->toggle();
+    QTest::mousePress(canvas, Qt::LeftButton, {}, a);
+    for (QPoint b : samples) {
+        QMouseEvent move(QEvent::MouseMove, b, canvas->mapToGlobal(b), Qt::NoButton, Qt::LeftButton,
+                         Qt::NoModifier);
+        QApplication::sendEvent(canvas, &move);
+    }
+    QTest::mouseRelease(canvas, Qt::LeftButton, {}, samples.isEmpty() ? a : samples.back());
+}
+
+QString TestRandomEvents::extremeEvent() {
+    SceneCanvas* canvas = m_window->canvas();
+    switch (pick(5)) {
+    case 0: { // a burst of wheel notches towards one end of the zoom range
+        const int sign = pick(2) ? 1 : -1;
+        const int notches = 10 + pick(60);
+        const QPoint p = pointIn(canvas);
+        for (int i = 0; i < notches; ++i) {
+            QWheelEvent wheel(p, canvas->mapToGlobal(p), {}, QPoint(0, sign * 120), Qt::NoButton,
+                              Qt::NoModifier, Qt::NoScrollPhase, false);
+            QApplication::sendEvent(canvas, &wheel);
+        }
+        return QStringLiteral("zoom burst %1 x %2").arg(notches).arg(sign);
+    }
+    case 1: { // the longest horizons: the long-horizon gallery scene, or a long path range
+        if (pick(2)) {
+            auto* action = m_window->findChild<QAction*>(QStringLiteral("gallery-long-horizon"));
+            if (!action)
+                return QStringLiteral("no long-horizon scene");
+            action->trigger();
+            return QStringLiteral("gallery long horizon");
+        }
+        NumberField* to = m_window->pathPanel()->toSpin();
+        if (!to->isVisible() || !to->isEnabled())
+            return QStringLiteral("hidden range");
+        const QString text = QString::number(500 + pick(1501));
+        to->setFocus();
+        to->selectAll();
+        QTest::keyClicks(to, text);
+        QTest::keyClick(to, Qt::Key_Return);
+        return QStringLiteral("range to <- %1").arg(text);
+    }
+    case 2: { // a slider at either end of its range
+        auto sliders = m_window->parametersPanel()->findChildren<QSlider*>();
+        if (sliders.isEmpty())
+            return QStringLiteral("no slider");
+        QSlider* s = sliders[pick(int(sliders.size()))];
+        s->setValue(pick(2) ? s->minimum() : s->maximum());
+        return QStringLiteral("slider %1 = %2").arg(s->objectName()).arg(s->value());
+    }
+    case 3: { // a field typed with an extreme of a double (the range fields: a classroom's size)
+        static const char* const extremes[] = {"1e308", "-1e308", "1e-308", "5e-324", "0",
+                                               "-0",    "1e15",   "-1e15",  "1e6",    "-1",
+                                               "1e-12", "2*pi",   "1/3",    "-1e-300"};
+        auto fields = m_window->findChildren<NumberField*>();
+        NumberField* f = fields[pick(int(fields.size()))];
+        if (!f->isVisible())
+            return QStringLiteral("hidden field");
+        const bool range =
+            f == m_window->pathPanel()->fromSpin() || f == m_window->pathPanel()->toSpin();
+        const QString text = range ? QString::number(uniform(-20, 20), 'g', 6)
+                                   : QString::fromLatin1(extremes[pick(int(std::size(extremes)))]);
+        f->setFocus();
+        f->selectAll();
+        QTest::keyClicks(f, text);
+        QTest::keyClick(f, Qt::Key_Return);
+        return QStringLiteral("field %1 <- '%2'").arg(f->name(), text);
+    }
+    default: { // a stroke: a single click, a few pixels, wholly outside the view, or very long
+        QPoint a = pointIn(canvas);
+        QList<QPoint> samples;
+        switch (pick(4)) {
+        case 0:
+            break;
+        case 1:
+            samples << a + QPoint(1 + pick(3), pick(3));
+            break;
+        case 2: { // outside the widget, beyond one of its edges
+            const QPoint off(pick(2) ? -canvas->width() - 50 : 2 * canvas->width() + 50,
+                             pick(2) ? -canvas->height() - 50 : 2 * canvas->height() + 50);
+            a = off;
+            for (int i = 0, n = 2 + pick(20); i < n; ++i)
+                samples << off + QPoint(pick(200), pick(200));
+            break;
+        }
+        default: { // a long wandering stroke
+            QPoint p = a;
+            for (int i = 0, n = 100 + pick(400); i < n; ++i) {
+                p += QPoint(pick(21) - 10, pick(21) - 10);
+                samples << p;
+            }
+        }
+        }
+        stroke(a, samples);
+        return QStringLiteral("stroke of %1 samples").arg(samples.size());
+    }
+    }
+}
+
 QString TestRandomEvents::check() {
     SceneDocument* document = m_window->document();
     const auto& solution = document->solution();
@@ -308,7 +428,33 @@ void TestRandomEvents::randomEventStream() {
     const int events = int(envNumber("CHAPLYGIN_GUI_EVENTS", kDefaultEvents));
     std::printf("random GUI events: seed %u, %d events (CHAPLYGIN_GUI_SEED=%u replays)\n", seed,
                 events, seed);
+    runStream(seed, events, false);
+}
+
+void TestRandomEvents::extremeEventStream() {
+    const unsigned seed = envNumber("CHAPLYGIN_GUI_SEED", kDefaultSeed);
+    const int events = int(envNumber("CHAPLYGIN_GUI_EVENTS", kDefaultExtremeEvents));
+    std::printf("random GUI events with the extremes: seed %u, %d events "
+                "(CHAPLYGIN_GUI_SEED=%u replays)\n",
+                seed, events, seed);
+    runStream(seed, events, true);
+    if (QTest::currentTestFailed())
+        return;
+    const double slowest = m_slowestS;
+    std::printf("slowest event %.3f s\n", slowest);
+#if !defined(__SANITIZE_ADDRESS__)
+    QVERIFY2(slowest < kSlowestEventS,
+             qPrintable(QStringLiteral("seed %1: an event kept the UI thread %2 s, over %3 s")
+                            .arg(seed)
+                            .arg(slowest)
+                            .arg(kSlowestEventS)));
+#endif
+}
+
+void TestRandomEvents::runStream(unsigned seed, int events, bool extremes) {
     m_rng.seed(seed);
+    m_actions.clear();
+    m_slowestS = 0;
     m_window = test::showTestWindow();
     QVERIFY(m_window);
     m_window->presentation()->setFullScreen(false);
@@ -332,18 +478,25 @@ void TestRandomEvents::randomEventStream() {
             std::printf("  event %d\n", i);
         QElapsedTimer clock;
         clock.start();
-        QString what = randomEvent();
+        QString what = extremes && pick(2) ? extremeEvent() : randomEvent();
         const qint64 eventMs = clock.elapsed();
         recent << what;
         if (recent.size() > 8)
             recent.removeFirst();
         if (i % 8 == 0)
             QCoreApplication::processEvents();
+        // the UI thread's own time: the event, the events it queued and the paint, not the wait
+        // for the path worker in flush
+        qint64 uiMs = clock.elapsed();
         if (i % 50 == 0) {
             m_window->document()->flush();
+            QElapsedTimer paint;
+            paint.start();
             QImage shot = m_window->canvas()->grab().toImage(); // paint it
+            uiMs += paint.elapsed();
             QVERIFY2(!shot.isNull(), qPrintable(QStringLiteral("seed %1").arg(seed)));
         }
+        m_slowestS = std::max(m_slowestS, double(uiMs) / 1000);
         QString problem = check();
         // the event's own time, and with the events it left queued, the paint and the check
         if (qEnvironmentVariableIsSet("CHAPLYGIN_GUI_TRACE"))
