@@ -40,7 +40,7 @@ if [ "$python_module" = ON ]; then
     esac
   done
 fi
-[ "$(dpkg-deb -f "$deb" Recommends)" = ffmpeg ] || fail "Recommends: $(dpkg-deb -f "$deb" Recommends)"
+[ "$(dpkg-deb -f "$deb" Recommends)" = "ffmpeg, qt6-translations-l10n" ] || fail "Recommends: $(dpkg-deb -f "$deb" Recommends)"
 contents=$(dpkg-deb -c "$deb")
 for f in ./usr/bin/chaplygin-lab ./usr/share/applications/io.github.chaplyginlab.ChaplyginLab.desktop \
          ./usr/share/metainfo/io.github.chaplyginlab.ChaplyginLab.metainfo.xml \

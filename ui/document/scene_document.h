@@ -153,8 +153,9 @@ class SceneDocument : public QObject {
     /// before it stay a step back, and the document stays modified. Undo gives the scene and the
     /// file name back. A scene equal to the current one is no step.
     void loadKnown(const Scene& scene, const QString& description);
-    /// Sets the scene from an edit, an undo or a load; emits sceneApplied.
-    void apply(const Scene& scene);
+    /// Sets the scene from an edit, an undo or a load; emits sceneApplied, with pathChanged for
+    /// a new document (whole) as for a new path.
+    void apply(const Scene& scene, bool whole = false);
     /// The end of a load, its path built: vets the scene, installs it as a new document or as
     /// a known scene (description), solves it; throws InputError and changes nothing.
     void install(const Scene& scene, const QString& description);

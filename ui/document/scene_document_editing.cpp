@@ -12,10 +12,11 @@
 
 namespace chaplygin::ui {
 
-void SceneDocument::apply(const Scene& scene) {
-    // a parameter change leaves the path's views alone (with any unfinished typing in them)
+void SceneDocument::apply(const Scene& scene, bool whole) {
+    // a parameter change leaves the path's views alone (with any unfinished typing in them); a
+    // new document is new to every view, even with the path it had
     const bool pathChanged =
-        !m_applied || scene.path != m_scene.path || scene.preset != m_scene.preset;
+        whole || !m_applied || scene.path != m_scene.path || scene.preset != m_scene.preset;
     m_applied = true;
     setScene(scene);
     emit sceneApplied(scene, pathChanged);
@@ -28,7 +29,7 @@ void SceneDocument::install(const Scene& scene, const QString& description) {
     PinSet::check(*this, scene);
     if (description.isEmpty()) {
         m_undo->clear();
-        apply(scene);
+        apply(scene, true);
     } else {
         loadKnown(scene, description);
     }

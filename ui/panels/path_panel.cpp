@@ -54,6 +54,7 @@ PathPanel::PathPanel(QWidget* parent)
     auto* kinds = new QHBoxLayout;
     kinds->addWidget(m_graph);
     kinds->addWidget(m_parametric);
+    kinds->addStretch(1); // each button as wide as its text, the room left after them
     form->addRow(kinds);
     m_y = new QLineEdit;
     m_y->setObjectName(QStringLiteral("graphEdit"));
