@@ -395,17 +395,22 @@ QRectF PlanTool::worldBounds() const {
     const auto& solution = m_document->solution();
     if (!solution)
         return {};
-    updateTracks();
     const Pose from = planStart(m_plan, *solution);
     double x0 = std::min(from.x, m_plan.to.x), x1 = std::max(from.x, m_plan.to.x);
     double y0 = std::min(from.y, m_plan.to.y), y1 = std::max(from.y, m_plan.to.y);
-    for (const FlatCurve& c : m_tracks)
-        for (QPointF p : c.points) {
-            x0 = std::min(x0, p.x());
-            x1 = std::max(x1, p.x());
-            y0 = std::min(y0, p.y());
-            y1 = std::max(y1, p.y());
+    // each motion from its closed form, whatever the view: the drawn tracks are flattened only
+    // where the view sees them, so a fit from them would keep what it had
+    constexpr int kSamples = 256;
+    for (const PlannedGeodesic& g : m_planned.geodesics) {
+        const VakonomicMotion body(m_request.system, plannedStart(m_request, g));
+        for (int i = 0; i <= kSamples; ++i) {
+            const VakonomicState p = body.at(g.t * i / kSamples);
+            x0 = std::min(x0, p.x);
+            x1 = std::max(x1, p.x);
+            y0 = std::min(y0, p.y);
+            y1 = std::max(y1, p.y);
         }
+    }
     return QRectF(QPointF(x0, y0), QPointF(x1, y1));
 }
 

@@ -122,6 +122,7 @@ class TestPlanTool : public QObject {
     void thePlanIsSavedAndRestored();
     void aBadPlanInAFileIsRefusedNamingItsField();
     void fitsAt1024x768AndInPresentation();
+    void aSceneWithAPlanOpensFramingEveryMotion();
 
   private:
     /// The drawn track of motion i against the RK4 integration of its start: every drawn
@@ -494,6 +495,43 @@ void TestPlanTool::fitsAt1024x768AndInPresentation() {
                                           QStringLiteral(".png")));
     }
     m_window->presentation()->setActive(false);
+}
+
+void TestPlanTool::aSceneWithAPlanOpensFramingEveryMotion() {
+    // a target above the start, turned by pi: the motions loop far outside the path's box; the
+    // scene opened from a file must show all of them (each integrated here by RK4)
+    // opened in a small window grown afterwards, as the program opens a file given to it
+    m_canvas->setPlanMode(false);
+    m_window->resize(500, 400);
+    QApplication::processEvents();
+    Scene s = straightScene();
+    s.path.points = {{0, 0}, {3, 0}};
+    s.plan = ScenePlan{};
+    s.plan->to = {1.5, 2.0, std::numbers::pi};
+    QTemporaryDir dir;
+    const QString file = dir.filePath(QStringLiteral("plan.chaplygin.json"));
+    {
+        std::ofstream out(file.toStdString());
+        out << sceneToJson(s);
+    }
+    m_window->document()->open(file);
+    QApplication::processEvents();
+    m_window->resize(1200, 750);
+    QApplication::processEvents();
+    QVERIFY(m_canvas->planMode());
+    const auto& motions = m_tool->planned().geodesics;
+    QVERIFY(motions.size() >= 3);
+    const double b = m_window->document()->solution()->system().b;
+    const double v = m_window->document()->scene().speed;
+    const QRectF area = m_canvas->drawingArea().adjusted(-1, -1, 1, 1);
+    const QTransform world = m_canvas->worldToPixel();
+    for (const PlannedGeodesic& g : motions)
+        for (const Knife& k : integrateKnife({0, 0, 0, g.psi0, g.psidot0}, b, v, g.t, 2000))
+            QVERIFY2(area.contains(world.map(QPointF(k.x, k.y))),
+                     qPrintable(QStringLiteral("the motion of %1 s at (%2, %3) m is out of view")
+                                    .arg(g.t)
+                                    .arg(k.x)
+                                    .arg(k.y)));
 }
 
 QTEST_MAIN(TestPlanTool)
