@@ -18,13 +18,36 @@ const std::pair<QPainterPath, QPainterPath>& BodyClipShapes::of(const Solution& 
         QPainterPath shape = bodyShape(solution.scene().system, solution.system());
         QPainterPathStroker pen;
         pen.setWidth(penPx / scale);
-        QPainterPath ring = pen.createStroke(shape);
-        // united in pixels, where Qt flattens the curves to its tolerance, and brought back
+        const QPainterPath ring = pen.createStroke(shape);
+        // both flattened in pixels, once: the two fills of a first frame at this scale and the
+        // fill of their union cover the same pixels, and the union has no curves to flatten
         const QTransform toPixels = QTransform::fromScale(scale, scale);
-        m_covered = toPixels.inverted().map(toPixels.map(shape).united(toPixels.map(ring)));
-        m_shapes = {std::move(shape), std::move(ring)};
+        const QTransform toMetres = toPixels.inverted();
+        auto flattened = [&](const QPainterPath& path) {
+            QPainterPath polygons;
+            polygons.setFillRule(path.fillRule());
+            for (const QPolygonF& polygon : toPixels.map(path).toSubpathPolygons())
+                polygons.addPolygon(toMetres.map(polygon));
+            return polygons;
+        };
+        m_shapes = {flattened(shape), flattened(ring)};
+        m_covered.reset();
+        m_asked = 0;
     }
+    ++m_asked;
     return m_shapes;
+}
+
+const QPainterPath* BodyClipShapes::covered() {
+    if (m_asked < 2)
+        return nullptr;
+    if (!m_covered) {
+        // united in pixels and brought back
+        const QTransform toPixels = QTransform::fromScale(m_scale, m_scale);
+        m_covered = toPixels.inverted().map(
+            toPixels.map(m_shapes.first).united(toPixels.map(m_shapes.second)));
+    }
+    return &*m_covered;
 }
 
 } // namespace chaplygin::ui

@@ -356,8 +356,9 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     const QTransform world = worldTransform();
     const auto& [shape, ring] =
         m_bodyClips.of(*m_document->solution(), m_view.scale(), 3 * m_look.style.lineScale + 2);
-    const QPainterPath& covered = m_bodyClips.covered();
-    // each body's area and the ring its outline's pen covers, in pixels, and both as one
+    const QPainterPath* covered = m_bodyClips.covered();
+    // each body's area and the ring its outline's pen covers, in pixels, and both as one when
+    // the union is made
     struct Clip {
         QPainterPath area, outline, both;
     };
@@ -370,7 +371,8 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
         QPainterPath mapped = map.map(shape);
         if (!mapped.boundingRect().intersects(QRectF(rect())))
             return;
-        clips.push_back({std::move(mapped), map.map(ring), map.map(covered)});
+        clips.push_back(
+            {std::move(mapped), map.map(ring), covered ? map.map(*covered) : QPainterPath()});
     };
     forEachShownPose(now, m_look.vakonomic, drawsOpenLoop(), drawsClosedLoop(), add);
     if (clips.empty())
@@ -408,11 +410,15 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
         }
         // the layer's band within the box (or the band drawn there, at a view's first paint)
         // and the trail on it, in the body's area or under its outline
-        drawMaskedLayer(p, *layer, origin, box, {&both}, [&](QPainter& c) {
+        const auto over = [&](QPainter& c) {
             if (layer->isNull())
                 paintPath(c, world, QRectF(box));
             strokePolylineWithin(c, line, controlled.pen, QRegion(box));
-        });
+        };
+        if (covered)
+            drawMaskedLayer(p, *layer, origin, box, {&both}, over);
+        else
+            drawMaskedLayer(p, *layer, origin, box, {&area, &outline}, over);
     }
     p.save();
     const QPointF at = world.map(QPointF(now.x, now.y));
