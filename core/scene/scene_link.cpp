@@ -241,15 +241,16 @@ bool isSceneLink(std::string_view text) {
     return startsWithScheme(trimmed(text));
 }
 
-Scene loadSceneFileOrLink(const std::string& fileOrLink) {
+bool readsAsLink(const std::string& fileOrLink) {
     if (isSceneLink(fileOrLink))
-        return sceneFromLink(fileOrLink);
-    if (uriScheme(fileOrLink)) {
-        std::error_code ignored;
-        if (!std::filesystem::exists(fileOrLink, ignored))
-            return sceneFromLink(fileOrLink); // refused, naming the scheme
-    }
-    return loadSceneFile(fileOrLink);
+        return true;
+    std::error_code ignored;
+    return uriScheme(fileOrLink) && !std::filesystem::exists(fileOrLink, ignored);
+}
+
+Scene loadSceneFileOrLink(const std::string& fileOrLink) {
+    // another scheme is refused by sceneFromLink, which names it
+    return readsAsLink(fileOrLink) ? sceneFromLink(fileOrLink) : loadSceneFile(fileOrLink);
 }
 
 } // namespace chaplygin

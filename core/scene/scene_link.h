@@ -34,6 +34,10 @@ Scene sceneFromLink(std::string_view link);
 /// Whether text starts with the scene link's scheme (after any leading white space).
 bool isSceneLink(std::string_view text);
 
+/// Whether loadSceneFileOrLink reads the text as a link: a scene link, or text that starts with
+/// another URI scheme and names no file.
+bool readsAsLink(const std::string& fileOrLink);
+
 /// A scene file's path or a scene link, as --scene and the window's argument take them: a link is
 /// read with sceneFromLink; text that starts with another URI scheme (two or more letters and a
 /// colon, "https:") and names no file is refused, naming the scheme; anything else is a file.
