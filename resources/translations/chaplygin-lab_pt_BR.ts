@@ -1750,6 +1750,45 @@ realimentação: %2</translation>
         <source>Animation</source>
         <translation>Animação</translation>
     </message>
+    <message>
+        <source>Copy &amp;link</source>
+        <translation>Copiar &amp;link</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+C</source>
+        <translation>Ctrl+Shift+C</translation>
+    </message>
+    <message>
+        <source>Put a chaplygin-lab: link that holds this scene on the clipboard, to paste into a chat, a course page or an e-mail</source>
+        <translation>Coloca na área de transferência um link chaplygin-lab: que contém esta cena, para colar num chat, na página de um curso ou num e-mail</translation>
+    </message>
+    <message>
+        <source>Open lin&amp;k…</source>
+        <translation>Abrir lin&amp;k…</translation>
+    </message>
+    <message>
+        <source>Cannot open the link: %1</source>
+        <translation>Não foi possível abrir o link: %1</translation>
+    </message>
+    <message>
+        <source>The scene does not solve (%1); fix it or undo before copying its link</source>
+        <translation>A cena não tem solução (%1); corrija-a ou desfaça antes de copiar o link</translation>
+    </message>
+    <message numerus="yes">
+        <source>Link copied: %n character(s)</source>
+        <translation>
+            <numerusform>Link copiado: %n caractere</numerusform>
+            <numerusform>Link copiado: %n caracteres</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open link</source>
+        <translation>Abrir link</translation>
+    </message>
+    <message>
+        <source>A chaplygin-lab: link:</source>
+        <translation>Um link chaplygin-lab:</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::MethodsPanel</name>
