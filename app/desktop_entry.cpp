@@ -319,12 +319,12 @@ int runDesktop(int argc, char** argv) {
         window.loadScene(*options.scene);
     QString fileError;
     if (options.file) {
-        const QString argument = QString::fromStdString(*options.file);
-        if (readsAsLink(*options.file)) {
+        const QString name = localFile(QString::fromStdString(*options.file));
+        if (readsAsLink(name.toStdString())) {
             // the message names what is wrong with the link; the link itself may be long
-            if (!window.openLink(argument))
+            if (!window.openLink(name))
                 fileError = window.lastFileError();
-        } else if (const QString name = localFile(argument); !window.openFile(name)) {
+        } else if (!window.openFile(name)) {
             fileError = window.lastFileError();
             if (!fileError.contains(name))
                 fileError = QStringLiteral("%1: %2").arg(name, fileError);

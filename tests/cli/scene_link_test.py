@@ -5,7 +5,7 @@ scene_link_test.py EXE SOURCE_DIR. For every preset and gallery scene file: `--l
 link under 2,000 characters that Python's own base64 and zlib decode to a scene, and the scene
 read back through the link (`--scene LINK`) has the same summary as the file, or the same
 refusal; a link that Python encodes from the file itself reads the same. Then the screenshot mode
-opens a link, and a decompression bomb is refused within a second and without inflating it
+opens a link, the window's argument takes one (and a file: URL), and a decompression bomb is refused within a second and without inflating it
 (the peak memory of the run beside that of a plain one).
 """
 import base64
@@ -99,6 +99,22 @@ with tempfile.TemporaryDirectory() as work:
     status, _, err, _, _ = run("--screenshot", str(picture) + "2", "--scene", circle[:100])
     check(status == 2 and "scene link: truncated" in err, f"screenshot of a bad link: {status} {err}")
     check(not pathlib.Path(str(picture) + "2").exists(), "a bad link wrote a screenshot")
+
+# the window's argument, from a terminal (where a bad one exits 2 instead of a dialog): a bad
+# link is refused naming what is wrong, and a file: URL (the desktop entry's %u) is a file
+def window(argument):
+    done = subprocess.run(["script", "-qec", f"{exe} '{argument}'", "/dev/null"],
+                          capture_output=True, text=True, timeout=60)
+    return done.returncode, done.stdout
+
+
+status, said = window(circle[:150])
+check(status == 2 and "scene link: truncated" in said, f"the window's bad link: {status} {said}")
+status, said = window("mailto:someone@example.org")
+check(status == 2 and "'mailto:' is another scheme" in said, f"the window's mailto: {status} {said}")
+status, said = window("file:///nonexistent/my%20lesson.json")
+check(status == 2 and "cannot open '/nonexistent/my lesson.json'" in said,
+      f"the window's file: URL: {status} {said}")
 
 # a bomb: 256 MB of spaces in a 340 kB zlib stream would be too long an argument; 96 MB in
 # about 130,000 characters is not, and must cost no more memory than reading a small link
