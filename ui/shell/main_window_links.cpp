@@ -10,9 +10,9 @@
 #include <QClipboard>
 #include <QGuiApplication>
 #include <QInputDialog>
-#include <QLineEdit>
 #include <QStatusBar>
 
+#include <algorithm>
 #include <exception>
 
 namespace chaplygin::ui {
@@ -54,14 +54,18 @@ bool MainWindow::copyLink() {
 void MainWindow::openLinkDialog() {
     if (!maybeSave())
         return;
+    QInputDialog dialog(this);
+    dialog.setWindowTitle(tr("Open link"));
+    dialog.setLabelText(tr("A chaplygin-lab: link:"));
     // a link on the clipboard is offered
     const QString clipboard = QGuiApplication::clipboard()->text().trimmed();
-    bool accepted = false;
-    const QString link = QInputDialog::getText(
-        this, tr("Open link"), tr("A chaplygin-lab: link:"), QLineEdit::Normal,
-        isSceneLink(clipboard.toStdString()) ? clipboard : QString(), &accepted);
-    if (accepted && !link.trimmed().isEmpty())
-        openLink(link);
+    if (isSceneLink(clipboard.toStdString()))
+        dialog.setTextValue(clipboard);
+    // wide enough to show that it is a link and where it ends being one
+    dialog.resize(std::max(dialog.sizeHint().width(), fontMetrics().averageCharWidth() * 70),
+                  dialog.sizeHint().height());
+    if (dialog.exec() == QDialog::Accepted && !dialog.textValue().trimmed().isEmpty())
+        openLink(dialog.textValue());
 }
 
 } // namespace chaplygin::ui
