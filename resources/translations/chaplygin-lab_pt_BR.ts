@@ -2566,10 +2566,6 @@ O que os estudantes devem observar…</translation>
         <translation>Recomeçar ao chegar ao fim</translation>
     </message>
     <message>
-        <source>Playback speed: simulated seconds per real second</source>
-        <translation>Velocidade de reprodução: segundos simulados por segundo real</translation>
-    </message>
-    <message>
         <source>Scrub through time</source>
         <translation>Percorrer o tempo</translation>
     </message>
@@ -2616,6 +2612,26 @@ O que os estudantes devem observar…</translation>
     <message>
         <source>One second forward</source>
         <translation>Um segundo para a frente</translation>
+    </message>
+    <message>
+        <source>Playback speed: simulated seconds per real second ([ slower, ] faster)</source>
+        <translation>Velocidade de reprodução: segundos simulados por segundo real ([ mais lento, ] mais rápido)</translation>
+    </message>
+    <message>
+        <source>&amp;Faster</source>
+        <translation>&amp;Mais rápido</translation>
+    </message>
+    <message>
+        <source>&amp;Slower</source>
+        <translation>Mais &amp;lento</translation>
+    </message>
+    <message>
+        <source>&amp;Normal speed (×%1)</source>
+        <translation>Velocidade &amp;normal (×%1)</translation>
+    </message>
+    <message>
+        <source>Spee&amp;d</source>
+        <translation>&amp;Velocidade</translation>
     </message>
 </context>
 <context>

@@ -181,6 +181,7 @@ void MainWindow::buildMenus() {
     play->addAction(m_timeline->endAction());
     play->addAction(m_timeline->secondBackAction());
     play->addAction(m_timeline->secondForwardAction());
+    play->addMenu(m_timeline->makeSpeedMenu(play));
     m_playNewScenes = play->addAction(tr("Play &new scenes at once"));
     m_playNewScenes->setCheckable(true);
     if (m_useSettings)
