@@ -3,16 +3,15 @@
 #include "shell/main_window.h"
 
 #include "canvas/scene_canvas.h"
+#include "document/file_dialogs.h"
 #include "document/scene_document.h"
 #include "scene/scene_link.h"
 #include "shell/playback.h"
 
 #include <QClipboard>
 #include <QGuiApplication>
-#include <QInputDialog>
 #include <QStatusBar>
 
-#include <algorithm>
 #include <exception>
 
 namespace chaplygin::ui {
@@ -54,18 +53,12 @@ bool MainWindow::copyLink() {
 void MainWindow::openLinkDialog() {
     if (!maybeSave())
         return;
-    QInputDialog dialog(this);
-    dialog.setWindowTitle(tr("Open link"));
-    dialog.setLabelText(tr("A chaplygin-lab: link:"));
     // a link on the clipboard is offered
     const QString clipboard = QGuiApplication::clipboard()->text().trimmed();
-    if (isSceneLink(clipboard.toStdString()))
-        dialog.setTextValue(clipboard);
-    // wide enough to show that it is a link and where it ends being one
-    dialog.resize(std::max(dialog.sizeHint().width(), fontMetrics().averageCharWidth() * 70),
-                  dialog.sizeHint().height());
-    if (dialog.exec() == QDialog::Accepted && !dialog.textValue().trimmed().isEmpty())
-        openLink(dialog.textValue());
+    const QString link = askForText(this, tr("Open link"), tr("A chaplygin-lab: link:"),
+                                    isSceneLink(clipboard.toStdString()) ? clipboard : QString());
+    if (!link.trimmed().isEmpty())
+        openLink(link);
 }
 
 } // namespace chaplygin::ui
