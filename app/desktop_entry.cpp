@@ -11,6 +11,7 @@
 #include "panels/sweep_panel.h"
 #include "plots/plots_panel.h"
 #include "runtime_directory.h"
+#include "scene/scene_link.h"
 #include "shell/language_menu.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
@@ -33,6 +34,7 @@
 #include <QMessageBox>
 #include <QPixmap>
 #include <QTimer>
+#include <QUrl>
 
 #include <cstdio>
 #include <exception>
@@ -252,6 +254,12 @@ bool isQtOption(const std::string& arg, bool& takesValue) {
     return withValue.count(name) > 0 || flags.count(name) > 0;
 }
 
+// the desktop entry's %u passes a local file as a path or as a file: URL
+QString localFile(const QString& argument) {
+    const QUrl url(argument);
+    return url.isLocalFile() ? url.toLocalFile() : argument;
+}
+
 struct DesktopOptions {
     std::optional<std::string> file; ///< a scene file to open
     std::optional<Scene> scene;      ///< or a scene given by options
@@ -310,11 +318,17 @@ int runDesktop(int argc, char** argv) {
     if (options.scene)
         window.loadScene(*options.scene);
     QString fileError;
-    if (options.file && !window.openFile(QString::fromStdString(*options.file))) {
-        const QString name = QString::fromStdString(*options.file);
-        fileError = window.lastFileError();
-        if (!fileError.contains(name))
-            fileError = QStringLiteral("%1: %2").arg(name, fileError);
+    if (options.file) {
+        const QString name = localFile(QString::fromStdString(*options.file));
+        if (readsAsLink(name.toStdString())) {
+            // the message names what is wrong with the link; the link itself may be long
+            if (!window.openLink(name))
+                fileError = window.lastFileError();
+        } else if (!window.openFile(name)) {
+            fileError = window.lastFileError();
+            if (!fileError.contains(name))
+                fileError = QStringLiteral("%1: %2").arg(name, fileError);
+        }
     }
     if (!fileError.isEmpty()) {
         std::fprintf(stderr, "chaplygin-lab: %s\n", qPrintable(fileError));

@@ -5,7 +5,7 @@
 #include "option_table.h"
 #include "scene/perturbation.h"
 #include "scene/presets.h"
-#include "scene/scene_json.h"
+#include "scene/scene_link.h"
 #include "scene/speed_choice.h"
 #include "systems/system_parameters.h"
 
@@ -120,7 +120,7 @@ Scene baseScene(const OptionValues& given) {
     if (preset) {
         s = presetScene(*preset);
     } else if (scenePath) {
-        s = loadSceneFile(*scenePath);
+        s = loadSceneFileOrLink(*scenePath);
     } else if (pathExpr) {
         setPathExpressions(s.path, *pathExpr, "--path");
         if (s.path.kind == PathKind::Graph) {
@@ -306,6 +306,7 @@ void readOutputs(const OptionValues& given, HeadlessOptions& o) {
             throw InputError("--plan-horizon", "must be > 0 [s], not " + *horizon);
     }
     o.trackPlan = given.has("--track-plan");
+    o.link = given.has("--link");
     if (auto choice = given.value("--plan-choice"))
         o.planChoice = parseWholeNumber(*choice, "--plan-choice", 1, 1e6, "from 1 on");
     o.pathGiven = given.has("--preset") || given.has("--scene") || given.has("--path") ||
@@ -332,6 +333,10 @@ HeadlessOptions parseOptions(const std::vector<std::string>& args) {
     o.scene = sceneFromOptions(given);
     if (o.times && o.scene.tEnd)
         throw InputError("--times", "give --times or --t-end, not both");
+    if (o.link && (o.workPrecision || o.sweep || !o.animationPath.empty() || !o.csvPath.empty() ||
+                   !o.summaryPath.empty() || !o.plotsDir.empty() || o.planTo || o.times))
+        throw InputError("--link", "prints the scene's link alone; run the other outputs "
+                                   "separately");
     if (o.sweep && (o.workPrecision || !o.animationPath.empty()))
         throw InputError("--sweep", "give one of --sweep, --work-precision and --animation");
     if (o.sweep && (o.times || o.scene.tEnd))

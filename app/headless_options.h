@@ -34,6 +34,7 @@ struct HeadlessOptions {
     double planHorizon = 0;         ///< --plan-horizon T [s]; 0: the planner's default
     int planChoice = 0;             ///< --plan-choice N: the CSV's motion, 1 = first listed
     bool trackPlan = false;         ///< --track-plan: the chosen motion's track is the path
+    bool link = false;              ///< --link: print the scene's link and nothing else
     bool pathGiven = false;         ///< --preset, --scene, --path or --points was given
 };
 

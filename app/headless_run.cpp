@@ -13,6 +13,7 @@
 #include "program_usage.h"
 #include "runtime_directory.h"
 #include "scene/csv_writer.h"
+#include "scene/scene_link.h"
 #include "scene/solution.h"
 #include "scene/summary_json.h"
 #include "shell/animation_export.h"
@@ -208,6 +209,13 @@ int runAnimation(const HeadlessOptions& o, int argc, char** argv) {
     return 0;
 }
 
+// --link: the scene's link on standard output, its system checked as a run would check it
+int printLink(const HeadlessOptions& o) {
+    deriveSystem(o.scene.system);
+    writeFileAtomically("-", sceneToLink(o.scene) + "\n");
+    return 0;
+}
+
 } // namespace
 
 int runHeadless(int argc, char** argv) {
@@ -219,6 +227,8 @@ int runHeadless(int argc, char** argv) {
             return 0;
         }
         try {
+            if (o.link)
+                return printLink(o);
             if (o.sweep)
                 return runSweep(o, argc, argv);
             if (!o.animationPath.empty())

@@ -79,8 +79,9 @@ const std::array kOptions = {
                        "DEG degrees over 3 points either side (default 35); smaller\n"
                        "turns are smoothed",
                .modes = kAllModes, .section = S::Scene},
-    OptionSpec{.name = "--scene", .argument = "FILE",
-               .help = "a scene saved by the app (JSON)",
+    OptionSpec{.name = "--scene", .argument = "FILE|LINK",
+               .help = "a scene saved by the app (JSON), or a scene link\n"
+                       "chaplygin-lab:... (File > Copy link, --link)",
                .modes = kAllModes, .section = S::Scene},
     OptionSpec{.name = "--system", .argument = "sleigh|disk|carriage",
                .help = "default sleigh",
@@ -128,6 +129,10 @@ const std::array kOptions = {
     OptionSpec{.name = "--summary", .argument = "FILE|-",
                .help = "JSON: b, m_eff, path length, duration, models used\n"
                        "(printed on standard output when no output is given)",
+               .modes = Headless, .section = S::Output},
+    OptionSpec{.name = "--link", .argument = "",
+               .help = "print the scene's link, chaplygin-lab: and the scene compressed\n"
+                       "(what File > Copy link copies), alone",
                .modes = Headless, .section = S::Output},
     OptionSpec{.name = "--plan-to", .argument = "X,Y,PHI",
                .help = "plan the genuine vakonomic motions to this pose [m, m, rad]\n"

@@ -80,7 +80,7 @@ std::string optionLines(const OptionSpec& spec) {
 
 std::string programUsage() {
     std::string usage =
-        "Usage: chaplygin-lab [FILE | scene options] [--presentation]\n"
+        "Usage: chaplygin-lab [FILE | LINK | scene options] [--presentation]\n"
         "       chaplygin-lab --screenshot FILE.png [screenshot options] [scene options]\n"
         "       chaplygin-lab --headless [scene options] [output options]\n"
         "       chaplygin-lab --help | --version\n";

@@ -1814,6 +1814,45 @@ realimentação: %2</translation>
         <source>Animation</source>
         <translation>Animação</translation>
     </message>
+    <message>
+        <source>Copy &amp;link</source>
+        <translation>Copiar &amp;link</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+C</source>
+        <translation>Ctrl+Shift+C</translation>
+    </message>
+    <message>
+        <source>Put a chaplygin-lab: link that holds this scene on the clipboard, to paste into a chat, a course page or an e-mail</source>
+        <translation>Coloca na área de transferência um link chaplygin-lab: que contém esta cena, para colar num chat, na página de um curso ou num e-mail</translation>
+    </message>
+    <message>
+        <source>Open lin&amp;k…</source>
+        <translation>Abrir lin&amp;k…</translation>
+    </message>
+    <message>
+        <source>Cannot open the link: %1</source>
+        <translation>Não foi possível abrir o link: %1</translation>
+    </message>
+    <message>
+        <source>The scene does not solve (%1); fix it or undo before copying its link</source>
+        <translation>A cena não tem solução (%1); corrija-a ou desfaça antes de copiar o link</translation>
+    </message>
+    <message numerus="yes">
+        <source>Link copied: %n character(s)</source>
+        <translation>
+            <numerusform>Link copiado: %n caractere</numerusform>
+            <numerusform>Link copiado: %n caracteres</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Open link</source>
+        <translation>Abrir link</translation>
+    </message>
+    <message>
+        <source>A chaplygin-lab: link:</source>
+        <translation>Um link chaplygin-lab:</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::MethodsPanel</name>
@@ -2591,10 +2630,6 @@ O que os estudantes devem observar…</translation>
         <translation>Recomeçar ao chegar ao fim</translation>
     </message>
     <message>
-        <source>Playback speed: simulated seconds per real second</source>
-        <translation>Velocidade de reprodução: segundos simulados por segundo real</translation>
-    </message>
-    <message>
         <source>Scrub through time</source>
         <translation>Percorrer o tempo</translation>
     </message>
@@ -2641,6 +2676,26 @@ O que os estudantes devem observar…</translation>
     <message>
         <source>One second forward</source>
         <translation>Um segundo para a frente</translation>
+    </message>
+    <message>
+        <source>Playback speed: simulated seconds per real second ([ slower, ] faster)</source>
+        <translation>Velocidade de reprodução: segundos simulados por segundo real ([ mais lento, ] mais rápido)</translation>
+    </message>
+    <message>
+        <source>&amp;Faster</source>
+        <translation>&amp;Mais rápido</translation>
+    </message>
+    <message>
+        <source>&amp;Slower</source>
+        <translation>Mais &amp;lento</translation>
+    </message>
+    <message>
+        <source>&amp;Normal speed (×%1)</source>
+        <translation>Velocidade &amp;normal (×%1)</translation>
+    </message>
+    <message>
+        <source>Spee&amp;d</source>
+        <translation>&amp;Velocidade</translation>
     </message>
 </context>
 <context>

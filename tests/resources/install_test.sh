@@ -37,7 +37,7 @@ for size in 16 22 24 32 48 64 128 256 512; do
 done
 # the man page: every option of --help, and the installed (absolute) paths
 man=$(gzip -dc "$usr/share/man/man1/chaplygin-lab.1.gz")
-for option in preset screenshot presentation panel language at size headless version animation; do
+for option in preset screenshot presentation panel language at size headless version animation link; do
   grep -q -- "\\\\-\\\\-$option" <<<"$man" || fail "the man page lacks --$option"
 done
 grep -q '^\.I /usr/share/chaplygin\\-lab/scenes' <<<"$man" || fail "the man page's FILES are not /usr/share/..."

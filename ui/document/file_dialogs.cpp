@@ -3,9 +3,12 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QInputDialog>
 #include <QRegularExpression>
 #include <QSettings>
 #include <QStandardPaths>
+
+#include <algorithm>
 
 namespace chaplygin::ui {
 
@@ -139,6 +142,20 @@ QString chooseFolder(QWidget* parent, const QString& caption, const QString& pur
                          : QFileDialog::getExistingDirectory(parent, caption, lastFolder(purpose));
     rememberFolder(purpose, dir);
     return dir;
+}
+
+QString askForText(QWidget* parent, const QString& caption, const QString& label,
+                   const QString& proposed) {
+    if (hook())
+        return hook()(caption, proposed, {}).path;
+    QInputDialog dialog(parent);
+    dialog.setWindowTitle(caption);
+    dialog.setLabelText(label);
+    dialog.setTextValue(proposed);
+    // some seventy characters: enough to see that it is a link and where it ends being one
+    dialog.resize(std::max(dialog.sizeHint().width(), dialog.fontMetrics().averageCharWidth() * 70),
+                  dialog.sizeHint().height());
+    return dialog.exec() == QDialog::Accepted ? dialog.textValue() : QString();
 }
 
 } // namespace chaplygin::ui

@@ -45,5 +45,9 @@ QString chooseOpenFile(QWidget* parent, const QString& caption, const QString& p
                        const QString& filters);
 /// Folder dialog starting in lastFolder(purpose); remembers it.
 QString chooseFolder(QWidget* parent, const QString& caption, const QString& purpose);
+/// A line of text asked for (File > Open link), proposing `proposed`, in a dialog wide enough for
+/// a long link; the hook answers in its place when set. Empty when cancelled.
+QString askForText(QWidget* parent, const QString& caption, const QString& label,
+                   const QString& proposed);
 
 } // namespace chaplygin::ui

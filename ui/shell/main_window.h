@@ -56,6 +56,12 @@ class MainWindow : public QMainWindow {
 
     /// File operations without dialogs; each returns false and shows why on failure.
     bool openFile(const QString& path);
+    /// Opens a scene link (chaplygin-lab:..., File > Copy link) as a new untitled scene; a damaged
+    /// link, or one whose scene does not solve, keeps the current scene and shows why.
+    bool openLink(const QString& link);
+    /// File > Copy link: the scene's link on the clipboard; false, showing why, when the scene
+    /// does not solve or is too large for a link.
+    bool copyLink();
     bool saveFile(const QString& path);
     bool exportPlotsTo(const QString& dir, const QStringList& formats);
     bool exportCsvTo(const QString& path);
@@ -153,6 +159,7 @@ class MainWindow : public QMainWindow {
     bool maybeSave();
     void newScene();
     void openDialog();
+    void openLinkDialog();
     bool saveDialog(bool askName);
     void exportPlotsDialog();
     void exportCsvDialog();

@@ -69,6 +69,15 @@ void MainWindow::buildMenus() {
     file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { saveDialog(false); });
     file->addAction(tr("Save &As\u2026"), QKeySequence::SaveAs, this, [this] { saveDialog(true); });
     file->addSeparator();
+    QAction* copyLinkAction = file->addAction(tr("Copy &link"), QKeySequence(tr("Ctrl+Shift+C")),
+                                              this, [this] { copyLink(); });
+    copyLinkAction->setObjectName(QStringLiteral("copyLinkAction"));
+    copyLinkAction->setStatusTip(tr("Put a chaplygin-lab: link that holds this scene on the "
+                                    "clipboard, to paste into a chat, a course page or an e-mail"));
+    QAction* openLinkAction =
+        file->addAction(tr("Open lin&k\u2026"), this, &MainWindow::openLinkDialog);
+    openLinkAction->setObjectName(QStringLiteral("openLinkAction"));
+    file->addSeparator();
     file->addAction(tr("Export &plots\u2026"), QKeySequence(tr("Ctrl+E")), this,
                     &MainWindow::exportPlotsDialog);
     file->addAction(tr("Export &CSV\u2026"), QKeySequence(tr("Ctrl+Shift+E")), this,
@@ -172,6 +181,7 @@ void MainWindow::buildMenus() {
     play->addAction(m_timeline->endAction());
     play->addAction(m_timeline->secondBackAction());
     play->addAction(m_timeline->secondForwardAction());
+    play->addMenu(m_timeline->makeSpeedMenu(play));
     m_playNewScenes = play->addAction(tr("Play &new scenes at once"));
     m_playNewScenes->setCheckable(true);
     if (m_useSettings)

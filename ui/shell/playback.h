@@ -3,7 +3,14 @@
 #include <QObject>
 #include <QTimer>
 
+#include <array>
+
 namespace chaplygin::ui {
+
+/// The playback speeds offered, simulated seconds per real second: the powers of two from 1/16
+/// (a fast turn slowed down to be seen) to 64 (a long path, 2,700 s along y = sin x, in 43 s).
+constexpr std::array<double, 11> kPlaybackSpeeds = {1.0 / 16, 1.0 / 8, 1.0 / 4, 1.0 / 2, 1, 2,
+                                                    4,        8,       16,      32,      64};
 
 /// The animation clock: the shown time t in [0, tEnd], advanced in real time times a speed
 /// factor while playing, at most once per display frame.

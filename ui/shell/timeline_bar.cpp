@@ -3,9 +3,11 @@
 #include "shell/playback.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QComboBox>
 #include <QEvent>
 #include <QLabel>
+#include <QMenu>
 #include <QSlider>
 #include <QStyle>
 
@@ -16,7 +18,18 @@ namespace chaplygin::ui {
 
 namespace {
 constexpr int kSliderSteps = 2000;
+
+// x1/16 ... x1/2 as fractions, x1 ... x64 as whole numbers
+QString speedLabel(double factor) {
+    return factor < 1 ? QStringLiteral("\u00d71/%1").arg(std::lround(1 / factor))
+                      : QStringLiteral("\u00d7%1").arg(std::lround(factor));
 }
+
+int normalSpeedIndex() {
+    return int(std::find(kPlaybackSpeeds.begin(), kPlaybackSpeeds.end(), 1.0) -
+               kPlaybackSpeeds.begin());
+}
+} // namespace
 
 TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
     : QToolBar(tr("Timeline"), parent), m_playback(playback) {
@@ -35,11 +48,26 @@ TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
     m_loop->setCheckable(true);
     m_loop->setToolTip(tr("Start again at the end"));
     m_speed = new QComboBox;
-    for (double f : {0.25, 0.5, 1.0, 2.0, 4.0})
-        m_speed->addItem(QStringLiteral("\u00d7%1").arg(f), f);
-    m_speed->setCurrentIndex(2);
-    m_speed->setToolTip(tr("Playback speed: simulated seconds per real second"));
+    for (double f : kPlaybackSpeeds)
+        m_speed->addItem(speedLabel(f), f);
+    m_speed->setCurrentIndex(normalSpeedIndex());
+    m_speed->setMaxVisibleItems(int(kPlaybackSpeeds.size()));
+    m_speed->setToolTip(
+        tr("Playback speed: simulated seconds per real second ([ slower, ] faster)"));
     addWidget(m_speed);
+    m_faster = new QAction(tr("&Faster"), this);
+    m_faster->setShortcut(Qt::Key_BracketRight);
+    m_slower = new QAction(tr("&Slower"), this);
+    m_slower->setShortcut(Qt::Key_BracketLeft);
+    m_normalSpeed = new QAction(tr("&Normal speed (\u00d7%1)").arg(1), this);
+    m_normalSpeed->setShortcut(Qt::Key_Backspace);
+    connect(m_faster, &QAction::triggered, this, [this] {
+        m_speed->setCurrentIndex(std::min(m_speed->currentIndex() + 1, m_speed->count() - 1));
+    });
+    connect(m_slower, &QAction::triggered, this,
+            [this] { m_speed->setCurrentIndex(std::max(m_speed->currentIndex() - 1, 0)); });
+    connect(m_normalSpeed, &QAction::triggered, this,
+            [this] { m_speed->setCurrentIndex(normalSpeedIndex()); });
     m_slider = new QSlider(Qt::Horizontal);
     m_slider->setRange(0, kSliderSteps);
     m_slider->setToolTip(tr("Scrub through time"));
@@ -74,8 +102,11 @@ TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
     connect(m_stepBack, &QAction::triggered, playback, &Playback::stepBackward);
     connect(m_stepForward, &QAction::triggered, playback, &Playback::stepForward);
     connect(m_loop, &QAction::toggled, playback, &Playback::setLoop);
-    connect(m_speed, &QComboBox::currentIndexChanged, this,
-            [this](int i) { m_playback->setSpeedFactor(m_speed->itemData(i).toDouble()); });
+    connect(m_speed, &QComboBox::currentIndexChanged, this, [this](int i) {
+        m_playback->setSpeedFactor(m_speed->itemData(i).toDouble());
+        m_faster->setEnabled(i + 1 < m_speed->count());
+        m_slower->setEnabled(i > 0);
+    });
     connect(m_slider, &QSlider::valueChanged, this, [this](int v) {
         if (!m_syncing)
             m_playback->seek(m_playback->tEnd() * v / kSliderSteps);
@@ -87,6 +118,26 @@ TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
         m_play->setText(playing ? tr("&Pause") : tr("&Play"));
     });
     sync();
+}
+
+QMenu* TimelineBar::makeSpeedMenu(QWidget* parent) {
+    auto* menu = new QMenu(tr("Spee&d"), parent);
+    menu->setObjectName(QStringLiteral("speedMenu"));
+    menu->addAction(m_faster);
+    menu->addAction(m_slower);
+    menu->addAction(m_normalSpeed);
+    menu->addSeparator();
+    auto* group = new QActionGroup(menu);
+    for (int i = 0; i < m_speed->count(); ++i) {
+        QAction* speed = menu->addAction(m_speed->itemText(i));
+        speed->setCheckable(true);
+        speed->setChecked(i == m_speed->currentIndex());
+        group->addAction(speed);
+        connect(speed, &QAction::triggered, this, [this, i] { m_speed->setCurrentIndex(i); });
+    }
+    connect(m_speed, &QComboBox::currentIndexChanged, menu,
+            [group](int i) { group->actions().at(i)->setChecked(true); });
+    return menu;
 }
 
 void TimelineBar::changeEvent(QEvent* event) {

@@ -5,14 +5,16 @@
 class QAction;
 class QComboBox;
 class QLabel;
+class QMenu;
 class QSlider;
 
 namespace chaplygin::ui {
 
 class Playback;
 
-/// The timeline toolbar: play/pause (Space), single steps, speed x0.25 ... x4, loop, and a scrub
-/// slider with the time shown.
+/// The timeline toolbar: play/pause (Space), single steps, speed x1/16 ... x64 (the box, the
+/// Faster and Slower keys ] and [, and the Speed menu), loop, and a scrub slider with the time
+/// shown.
 class TimelineBar : public QToolBar {
     Q_OBJECT
   public:
@@ -29,6 +31,12 @@ class TimelineBar : public QToolBar {
     QAction* secondForwardAction() const { return m_secondForward; }
     QSlider* slider() const { return m_slider; }
     QComboBox* speedBox() const { return m_speed; }
+    /// ] and [: the next speed up or down (kPlaybackSpeeds); Backspace: x1.
+    QAction* fasterAction() const { return m_faster; }
+    QAction* slowerAction() const { return m_slower; }
+    QAction* normalSpeedAction() const { return m_normalSpeed; }
+    /// Animation > Speed: one checkable entry per speed, kept in step with the box.
+    QMenu* makeSpeedMenu(QWidget* parent);
     QLabel* timeLabel() const { return m_timeLabel; }
 
   public slots:
@@ -51,6 +59,9 @@ class TimelineBar : public QToolBar {
     QAction* m_secondBack = nullptr;
     QAction* m_secondForward = nullptr;
     QComboBox* m_speed;
+    QAction* m_faster;
+    QAction* m_slower;
+    QAction* m_normalSpeed;
     QSlider* m_slider;
     QLabel* m_timeLabel;
     bool m_syncing = false;

@@ -180,9 +180,9 @@ bool languageFree(QString text) {
         QStringLiteral("English"),   QStringLiteral("Português"), QStringLiteral("Brasil"),
         QStringLiteral("max"),       QStringLiteral("min"),       QStringLiteral("Lab"),
         QStringLiteral("Hz"),        QStringLiteral("Home"),      QStringLiteral("End"),
-        QStringLiteral("Page"),      QStringLiteral("Down"),      QStringLiteral("Zoom"),
-        QStringLiteral("magenta"),   QStringLiteral("QAG"),       QStringLiteral("RKF45"),
-        QStringLiteral("RK8PD")};
+        QStringLiteral("Backspace"), QStringLiteral("Page"),      QStringLiteral("Down"),
+        QStringLiteral("Zoom"),      QStringLiteral("magenta"),   QStringLiteral("QAG"),
+        QStringLiteral("RKF45"),     QStringLiteral("RK8PD")};
     if (text.startsWith(QLatin1String("chaplygin-lab "))) // a command line
         return true;
     text.remove(QRegularExpression(QStringLiteral("\\b[a-z0-9]+(_[a-z0-9]+)+\\b"))); // an id

@@ -3,6 +3,7 @@
 #include "canvas/scene_canvas.h"
 #include "panels/parameters_panel.h"
 #include "panels/path_panel.h"
+#include "scene/presets.h"
 #include "shell/playback.h"
 #include "shell/timeline_bar.h"
 #include "widgets/number_field.h"
@@ -10,6 +11,7 @@
 
 #include <QComboBox>
 #include <QLineEdit>
+#include <QMenu>
 #include <QRadioButton>
 #include <QtTest>
 
@@ -29,6 +31,7 @@ class TestTimeAndView : public QObject, private test::WindowFixture {
     void newSceneStartsAtZero();
     void homeAndEndKeys();
     void stepIsOneFrameAtCurrentSpeed();
+    void everySpeedFromTheMenuAndKeysStepsRight();
     void fitFramesEverythingThatMoves();
     void followKeepsBodyCentred();
 };
@@ -98,6 +101,71 @@ void TestTimeAndView::stepIsOneFrameAtCurrentSpeed() {
     QTest::keyClick(m_window.get(), Qt::Key_Comma, Qt::ShiftModifier);
     QTest::keyClick(m_window.get(), Qt::Key_Comma, Qt::ShiftModifier);
     QCOMPARE(playback->time(), 0.0);
+}
+
+void TestTimeAndView::everySpeedFromTheMenuAndKeysStepsRight() {
+    // a long path, so that even x64's steps stay inside the motion
+    Scene longSinusoid = presetScene("sinusoid");
+    longSinusoid.preset.clear();
+    longSinusoid.path.to = 60; // some 80 s along y = -sin x
+    m_window->loadScene(longSinusoid);
+    Playback* playback = m_window->playback();
+    TimelineBar* bar = m_window->timeline();
+    const double t0 = 3;
+    QVERIFY(playback->tEnd() > t0 + 2 * 64 * 0.5);
+    // the frame at x1, measured once: one step forward from t0
+    bar->normalSpeedAction()->trigger();
+    playback->seek(t0);
+    QTest::keyClick(m_window.get(), Qt::Key_Period);
+    const double frame = playback->time() - t0;
+    QVERIFY(frame > 0.01 && frame < 0.05);
+    auto* menu = m_window->findChild<QMenu*>(QStringLiteral("speedMenu"));
+    QVERIFY(menu);
+    QStringList labels;
+    int chosen = 0;
+    for (QAction* entry : menu->actions()) {
+        if (!entry->isCheckable())
+            continue;
+        entry->trigger();
+        QVERIFY(entry->isChecked());
+        labels << entry->text();
+        const double factor = std::ldexp(1.0, chosen - 4); // 1/16, 1/8, ..., 64
+        ++chosen;
+        QCOMPARE(playback->speedFactor(), factor);
+        QCOMPARE(bar->speedBox()->currentText(), entry->text());
+        // a step forward and back is one frame at this speed
+        playback->seek(t0);
+        QTest::keyClick(m_window.get(), Qt::Key_Period);
+        QVERIFY2(std::abs(playback->time() - t0 - factor * frame) < 1e-12 * factor,
+                 qPrintable(entry->text()));
+        QTest::keyClick(m_window.get(), Qt::Key_Comma);
+        QVERIFY(std::abs(playback->time() - t0) < 1e-12);
+        // half a second of play moves by half a second times the speed
+        playback->seek(t0);
+        playback->advance(0.5);
+        QVERIFY2(std::abs(playback->time() - t0 - 0.5 * factor) < 1e-12 * factor,
+                 qPrintable(entry->text()));
+    }
+    QCOMPARE(labels, QStringList({QStringLiteral("\u00d71/16"), QStringLiteral("\u00d71/8"),
+                                  QStringLiteral("\u00d71/4"), QStringLiteral("\u00d71/2"),
+                                  QStringLiteral("\u00d71"), QStringLiteral("\u00d72"),
+                                  QStringLiteral("\u00d74"), QStringLiteral("\u00d78"),
+                                  QStringLiteral("\u00d716"), QStringLiteral("\u00d732"),
+                                  QStringLiteral("\u00d764")}));
+    // the keys: Backspace is x1, ] goes up to x64 and stops there, [ down to x1/16
+    QTest::keyClick(m_window.get(), Qt::Key_Backspace);
+    QCOMPARE(playback->speedFactor(), 1.0);
+    for (int i = 0; i < 8; ++i)
+        QTest::keyClick(m_window.get(), Qt::Key_BracketRight);
+    QCOMPARE(playback->speedFactor(), 64.0);
+    QVERIFY(!bar->fasterAction()->isEnabled());
+    for (int i = 0; i < 12; ++i)
+        QTest::keyClick(m_window.get(), Qt::Key_BracketLeft);
+    QCOMPARE(playback->speedFactor(), 1.0 / 16);
+    QVERIFY(!bar->slowerAction()->isEnabled());
+    QTest::keyClick(m_window.get(), Qt::Key_BracketRight);
+    QCOMPARE(playback->speedFactor(), 1.0 / 8);
+    QVERIFY(bar->slowerAction()->isEnabled());
 }
 
 void TestTimeAndView::fitFramesEverythingThatMoves() {
