@@ -270,9 +270,10 @@ void SceneCanvas::setLegendVisible(bool visible) {
     update();
 }
 
-void SceneCanvas::frame(const QRectF& box, double margin, double minScale) {
+void SceneCanvas::frame(const QRectF& box, double margin, double minScale, double maxScale) {
     // the scene goes between the time line at the top and the legend at the bottom
-    m_view.frame(box, drawingArea().adjusted(0, planReadoutHeight(), 0, 0), margin, minScale);
+    m_view.frame(box, drawingArea().adjusted(0, planReadoutHeight(), 0, 0), margin, minScale,
+                 maxScale);
     m_view.setFittedPath(m_document->solution()->path());
     setFollowBody(false);
     update();
@@ -313,7 +314,8 @@ void SceneCanvas::fitScene() {
         QPointF(std::min(path.left(), bodies->left()), std::min(path.top(), bodies->top())),
         QPointF(std::max(path.right(), bodies->right()),
                 std::max(path.bottom(), bodies->bottom())));
-    frame(lesson, margin, 0);
+    // centred on them at the path's scale where they fit at it, else smaller
+    frame(lesson, margin, 0, m_view.scale());
 }
 
 void SceneCanvas::fitEverything() {

@@ -112,7 +112,7 @@ class SceneCanvas : public QWidget {
     /// Frames the lesson (F, the default): the path and the controlled body with a margin of
     /// 5 % on each side, the path filling at least 80 % of the drawing area in the direction
     /// that limits it, unless a body shown at the current time would then be cut: then the
-    /// path and those bodies.
+    /// path and those bodies, at that scale where they fit in it (the view pans), else smaller.
     void fitScene();
     /// Frames everything that moves (Shift+F): the path and every body drawn, over the whole
     /// horizon.
@@ -179,8 +179,10 @@ class SceneCanvas : public QWidget {
     /// Brings the world box [m] of a body out of view into the view with what the view shows.
     void frameBody(const QRectF& box);
     /// Frames box [m] in the drawing area with a margin of `margin` [px] on each side, at no
-    /// less than minScale; the view then refits to the path on a resize.
-    void frame(const QRectF& box, double margin, double minScale);
+    /// less than minScale and no more than maxScale; the view then refits to the path on a
+    /// resize.
+    void frame(const QRectF& box, double margin, double minScale,
+               double maxScale = CanvasView::kMaxScale);
     BodyLook bodyLook() const;
     /// The tools the mouse reaches in the current mode, in the order they are offered a press.
     std::vector<CanvasTool*> tools() const;
