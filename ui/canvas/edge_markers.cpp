@@ -45,32 +45,51 @@ QString distanceText(double metres) {
 QPolygonF arrowhead(const EdgeMarker& m, double lineScale) {
     const double length = kArrowPx * lineScale;
     const QPointF u = m.toward, n(-u.y(), u.x());
-    return QPolygonF{m.tip, m.tip - length * u + 0.5 * length * n,
-                     m.tip - length * u - 0.5 * length * n};
+    return QPolygonF{m.tip, m.tip - length * u + 0.3 * length * n,
+                     m.tip - length * u - 0.3 * length * n};
 }
 
-// the marker's text box and its whole box for its tip, behind the arrowhead and inside inner
-void placeText(EdgeMarker& m, const QRectF& inner, const QFontMetricsF& metrics, double lineScale) {
+// whether the tip lies on the left or right edge of inner (else on the top or bottom one)
+bool onSide(const EdgeMarker& m, const QRectF& inner) {
+    return std::abs(m.tip.x() - inner.left()) < 0.5 || std::abs(m.tip.x() - inner.right()) < 0.5;
+}
+
+// the marker's text box and its whole box for its tip: the text beside the arrowhead along the
+// edge, on the side of the edge's middle, and against the edge, so that the marker keeps to the
+// edge's strip (the margin a fit leaves) and hides little of the scene
+void placeText(EdgeMarker& m, const QRectF& inner, QPointF centre, const QFontMetricsF& metrics,
+               double lineScale) {
     const QRectF text = metrics.boundingRect(m.text).adjusted(-3, -1, 3, 1);
-    const QPointF u = m.toward;
-    // the text's half extent along the direction: its box lies wholly behind the arrowhead
-    const double half = 0.5 * (std::abs(u.x()) * text.width() + std::abs(u.y()) * text.height());
-    const QPointF centre = m.tip - u * (kArrowPx * lineScale + kGapPx * lineScale + half);
-    QRectF box(centre - QPointF(0.5 * text.width(), 0.5 * text.height()), text.size());
+    const QRectF head = arrowhead(m, lineScale).boundingRect();
+    const double gap = kGapPx * lineScale;
+    QRectF box(QPointF(), text.size());
+    if (onSide(m, inner)) {
+        box.moveLeft(m.tip.x() < centre.x() ? inner.left() : inner.right() - box.width());
+        if (m.tip.y() > centre.y())
+            box.moveBottom(head.top() - gap);
+        else
+            box.moveTop(head.bottom() + gap);
+    } else {
+        box.moveTop(m.tip.y() < centre.y() ? inner.top() : inner.bottom() - box.height());
+        if (m.tip.x() > centre.x())
+            box.moveRight(head.left() - gap);
+        else
+            box.moveLeft(head.right() + gap);
+    }
     // within the area, where a corner would push it out
     box.moveLeft(
         std::clamp(box.left(), inner.left(), std::max(inner.left(), inner.right() - box.width())));
     box.moveTop(
         std::clamp(box.top(), inner.top(), std::max(inner.top(), inner.bottom() - box.height())));
     m.textBox = box;
-    m.box = box.united(arrowhead(m, lineScale).boundingRect()).adjusted(-2, -2, 2, 2);
+    m.box = box.united(head).adjusted(-2, -2, 2, 2);
 }
 
 } // namespace
 
 std::vector<EdgeMarker> layoutEdgeMarkers(const std::vector<ShownBody>& bodies, const QRectF& area,
-                                          const QTransform& world, const QFont& font,
-                                          double lineScale) {
+                                          const QRectF& visible, const QTransform& world,
+                                          const QFont& font, double lineScale) {
     std::vector<EdgeMarker> out;
     const double s = lineScale;
     const QRectF inner = area.adjusted(kInsetPx * s, kInsetPx * s, -kInsetPx * s, -kInsetPx * s);
@@ -81,7 +100,7 @@ std::vector<EdgeMarker> layoutEdgeMarkers(const std::vector<ShownBody>& bodies, 
     const QPointF centre = area.center();
     for (const ShownBody& body : bodies) {
         const QPointF at = world.map(body.at);
-        if (!finite(at) || !finite(body.at) || body.bounds.intersects(area))
+        if (!finite(at) || !finite(body.at) || body.bounds.intersects(visible))
             continue;
         const QPointF d = at - centre;
         const double length = std::hypot(d.x(), d.y());
@@ -101,7 +120,7 @@ std::vector<EdgeMarker> layoutEdgeMarkers(const std::vector<ShownBody>& bodies, 
             m.distance = std::hypot(body.at.x() - toWorld.map(m.tip).x(),
                                     body.at.y() - toWorld.map(m.tip).y());
             m.text = distanceText(m.distance);
-            placeText(m, inner, metrics, s);
+            placeText(m, inner, centre, metrics, s);
         };
         place();
         for (int k = 0; k < kMostShifts; ++k) {

@@ -33,12 +33,13 @@ struct EdgeMarker {
     QRectF worldBox;     ///< [m] the body's box (ShownBody::worldBox)
 };
 
-/// The markers of the bodies whose box lies wholly outside area [px]; world maps metres to
-/// pixels. Markers that would overlap move along the edge, so that each stays readable and
-/// clickable. lineScale multiplies their size and type (presentation mode's).
+/// The markers, at the edge of area [px], of the bodies whose box lies wholly outside visible
+/// [px] (the area and what else of the widget shows the scene); world maps metres to pixels.
+/// Markers that would overlap move along the edge, so that each stays readable and clickable.
+/// lineScale multiplies their size and type (presentation mode's).
 std::vector<EdgeMarker> layoutEdgeMarkers(const std::vector<ShownBody>& bodies, const QRectF& area,
-                                          const QTransform& world, const QFont& font,
-                                          double lineScale);
+                                          const QRectF& visible, const QTransform& world,
+                                          const QFont& font, double lineScale);
 
 /// Draws the markers; font as given to layoutEdgeMarkers.
 void paintEdgeMarkers(QPainter& painter, const std::vector<EdgeMarker>& markers, const QFont& font,

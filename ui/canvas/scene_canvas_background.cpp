@@ -160,7 +160,7 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
         if (c != runColour || run.isEmpty()) {
             // a run of the next colour starts over the last `reach` px of the one before:
             // their antialiased flat ends would leave a light seam across the band where they
-            // meet (docs/architecture.md, Canvas)
+            // meet
             QPolygonF overlap;
             double back = 0;
             for (qsizetype k = run.size() - 1; k > 0 && back < reach; --k) {

@@ -237,7 +237,9 @@ std::vector<EdgeMarker> SceneCanvas::edgeMarkersAt(const MotionSample& now) cons
              BodySprites::pixelBounds(world, m_view.scale(), spec, solution->system(), pose, look),
              box});
     }
-    return layoutEdgeMarkers(shown, drawingArea(), world, edgeMarkerFont(), m_look.style.lineScale);
+    // a body in the time line's band is in view: the scene is drawn there too
+    return layoutEdgeMarkers(shown, drawingArea(), sceneArea(), world, edgeMarkerFont(),
+                             m_look.style.lineScale);
 }
 
 QPointF SceneCanvas::pinKeyOrigin() const {
