@@ -20,6 +20,13 @@
     </message>
 </context>
 <context>
+    <name>EdgeMarkers</name>
+    <message>
+        <source>%1 m away</source>
+        <translation>a %1 m</translation>
+    </message>
+</context>
+<context>
     <name>EquationsPanel</name>
     <message>
         <source>&lt;b&gt;Chaplygin sleigh&lt;/b&gt;: m = %1 kg, a = %2 m, b = %3 m (b² = a² + I/m, b is the radius of gyration about P)</source>

@@ -171,6 +171,26 @@ QPainterPath bodyShape(const SystemSpec& spec, const DerivedSystem& derived) {
     return shape;
 }
 
+QRectF bodyBounds(const SystemSpec& spec, const DerivedSystem& derived, const BodyPose& pose) {
+    // what paintBody draws beyond bodyShape: P, the sleigh's knife and strut, the disk's contact
+    // line and heading arrow
+    QPolygonF marks{QPointF(0, 0)};
+    if (spec.kind == SystemKind::Sleigh) {
+        const double knife = 0.22 * boardSemiAxis(derived);
+        marks << QPointF(-knife, 0) << QPointF(knife, 0);
+    } else if (spec.kind == SystemKind::Disk) {
+        const double r = param(spec, "R", 0.5), w = 0.12 * r;
+        marks << QPointF(0, -2 * w) << QPointF(0, 2 * w) << QPointF(1.4 * r, 0.1 * r)
+              << QPointF(1.4 * r, -0.1 * r);
+    }
+    QTransform place;
+    place.translate(pose.x, pose.y);
+    place.rotate(pose.phi * 180.0 / M_PI);
+    return place.map(bodyShape(spec, derived))
+        .boundingRect()
+        .united(place.map(marks).boundingRect());
+}
+
 BodyDisplay shownBodyDisplay(BodyDisplay chosen, const SystemSpec& spec,
                              const DerivedSystem& derived, const QRectF& pathBounds) {
     if (chosen != BodyDisplay::Automatic)

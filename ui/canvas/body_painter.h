@@ -35,6 +35,10 @@ constexpr double kMarkerRadiusPx = 9;
 /// The radius [m] of a circle around P that holds the whole body (for fitting the view).
 double bodyExtent(const SystemSpec& spec, const DerivedSystem& derived);
 
+/// The box [m] of the body drawn to scale or as an outline at pose: its area, the sleigh's knife
+/// and the disk's heading arrow (without the pens' widths, which are pixels).
+QRectF bodyBounds(const SystemSpec& spec, const DerivedSystem& derived, const BodyPose& pose);
+
 /// The area the body to scale covers, in its own frame [m] (P at the origin, s-hat along x):
 /// where it would hide the path under its fill.
 QPainterPath bodyShape(const SystemSpec& spec, const DerivedSystem& derived);

@@ -15,7 +15,8 @@ QTransform CanvasView::transformAt(QPointF centre) const {
     return t;
 }
 
-void CanvasView::frame(const QRectF& box, const QRectF& area, double margin, double minScale) {
+void CanvasView::frame(const QRectF& box, const QRectF& area, double margin, double minScale,
+                       double maxScale) {
     const double w = std::max(area.width(), 100.0), h = std::max(area.height(), 100.0);
     const double room = std::min(w, h) * 0.4; // a margin never takes more than this
     const double ww = w - 2 * std::min(margin, room), hh = h - 2 * std::min(margin, room);
@@ -23,7 +24,8 @@ void CanvasView::frame(const QRectF& box, const QRectF& area, double margin, dou
         std::min(ww / std::max(box.width(), 1e-9), hh / std::max(box.height(), 1e-9));
     // a view far from the origin (a path at 1e308 m) keeps scale times its centre finite
     const double far = std::max({std::abs(box.center().x()), std::abs(box.center().y()), 1.0});
-    m_scale = std::clamp(std::min(std::max(fit, minScale), 1e300 / far), kMinScale, kMaxScale);
+    m_scale = std::clamp(std::min({std::max(fit, minScale), maxScale, 1e300 / far}), kMinScale,
+                         kMaxScale);
     m_centre = box.center() + QPointF(0, (area.center().y() - m_widget->height() / 2.0) / m_scale);
     m_autoFit = true;
 }

@@ -34,8 +34,10 @@ class CanvasView {
     QPointF toWorld(QPointF pixel) const { return transform().inverted().map(pixel); }
 
     /// Frames box [m] in area [px] with a margin of `margin` [px] on each side (never more
-    /// than 40 % of the area), at no less than minScale; the view then refits on a resize.
-    void frame(const QRectF& box, const QRectF& area, double margin, double minScale);
+    /// than 40 % of the area), at no less than minScale and no more than maxScale; the view then
+    /// refits on a resize.
+    void frame(const QRectF& box, const QRectF& area, double margin, double minScale,
+               double maxScale = kMaxScale);
     /// Zooms by factor about the widget's centre, within the zoom range; the user's view from
     /// then on (no refit).
     void zoomBy(double factor);

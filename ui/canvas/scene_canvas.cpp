@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 namespace chaplygin::ui {
 
@@ -185,6 +186,40 @@ QRectF SceneCanvas::sceneBounds() const {
     return box.adjusted(-pad, -pad, pad, pad);
 }
 
+std::vector<SceneCanvas::DrawnBody> SceneCanvas::drawnBodies(const MotionSample& now) const {
+    std::vector<DrawnBody> out{{{now.x, now.y, now.phi}, m_look.style.controlled(), false},
+                               {{now.free.x, now.free.y, now.free.phi}, m_look.style.free(), true}};
+    if (m_look.vakonomic)
+        out.push_back({{now.vak.x, now.vak.y, now.vak.phi}, m_look.style.vakonomic(), true});
+    if (drawsOpenLoop())
+        out.push_back({{now.pert.x, now.pert.y, now.pert.phi}, m_look.style.openLoop(), true});
+    if (drawsClosedLoop())
+        out.push_back({{now.fb.x, now.fb.y, now.fb.phi}, m_look.style.closedLoop(), true});
+    return out;
+}
+
+std::optional<QRectF> SceneCanvas::bodiesBounds() const {
+    const auto& solution = m_document->solution();
+    if (!solution)
+        return {};
+    const MotionSample now = solution->at(std::clamp(m_time, 0.0, solution->tEnd()));
+    const bool marker = shownBodyDisplay() == BodyDisplay::Marker;
+    std::optional<QRectF> box;
+    for (const DrawnBody& body : drawnBodies(now)) {
+        const BodyPose& pose = body.pose;
+        if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.phi))
+            continue;
+        const QRectF r = marker ? QRectF(pose.x, pose.y, 0, 0)
+                                : bodyBounds(solution->scene().system, solution->system(), pose);
+        // by the corners: united() would drop a box of no size (a marker's point)
+        box = box ? QRectF(QPointF(std::min(box->left(), r.left()), std::min(box->top(), r.top())),
+                           QPointF(std::max(box->right(), r.right()),
+                                   std::max(box->bottom(), r.bottom())))
+                  : r;
+    }
+    return box;
+}
+
 int SceneCanvas::topBandPx() const {
     return int(std::lround(kTopPx * m_look.style.lineScale * (m_look.style.largeTime ? 1.7 : 1.0)));
 }
@@ -204,6 +239,10 @@ int SceneCanvas::legendBandPx() const {
 
 QRectF SceneCanvas::drawingArea() const {
     return QRectF(0, topBandPx(), width(), std::max(height() - topBandPx() - legendBandPx(), 0));
+}
+
+QRectF SceneCanvas::sceneArea() const {
+    return QRectF(0, 0, width(), std::max(height() - legendBandPx(), 0));
 }
 
 void SceneCanvas::setCanvasStyle(const CanvasStyle& style) {
@@ -231,9 +270,10 @@ void SceneCanvas::setLegendVisible(bool visible) {
     update();
 }
 
-void SceneCanvas::frame(const QRectF& box, double margin, double minScale) {
+void SceneCanvas::frame(const QRectF& box, double margin, double minScale, double maxScale) {
     // the scene goes between the time line at the top and the legend at the bottom
-    m_view.frame(box, drawingArea().adjusted(0, planReadoutHeight(), 0, 0), margin, minScale);
+    m_view.frame(box, drawingArea().adjusted(0, planReadoutHeight(), 0, 0), margin, minScale,
+                 maxScale);
     m_view.setFittedPath(m_document->solution()->path());
     setFollowBody(false);
     update();
@@ -260,6 +300,22 @@ void SceneCanvas::fitScene() {
     const double pathFill =
         std::min(w / std::max(path.width(), 1e-9), h / std::max(path.height(), 1e-9));
     frame(path.adjusted(-body, -body, body, body), margin, 0.8 * pathFill);
+    // but the bodies shown now are not cut: where one would be, the path and the bodies
+    const std::optional<QRectF> bodies = bodiesBounds();
+    if (!bodies)
+        return;
+    const QRectF room = drawingArea().adjusted(0, planReadoutHeight(), 0, 0);
+    const QRectF shown =
+        QRectF(toPixel(bodies->topLeft()), toPixel(bodies->bottomRight())).normalized();
+    if (room.contains(shown.adjusted(-markerPx, -markerPx, markerPx, markerPx)))
+        return;
+    // united() would drop a box of no size (the markers' points)
+    const QRectF lesson(
+        QPointF(std::min(path.left(), bodies->left()), std::min(path.top(), bodies->top())),
+        QPointF(std::max(path.right(), bodies->right()),
+                std::max(path.bottom(), bodies->bottom())));
+    // centred on them at the path's scale where they fit at it, else smaller
+    frame(lesson, margin, 0, m_view.scale());
 }
 
 void SceneCanvas::fitEverything() {
@@ -270,6 +326,21 @@ void SceneCanvas::fitEverything() {
     m_view.setFitsEverything(true);
     const QRectF area = drawingArea();
     frame(box, 0.025 * std::min(std::max(area.width(), 100.0), std::max(area.height(), 100.0)), 0);
+}
+
+void SceneCanvas::frameBody(const QRectF& box) {
+    // what the view shows now and the body: the view zooms out (and pans) to include it
+    const QRectF area = drawingArea();
+    const QRectF shown = m_view.transform().inverted().mapRect(area);
+    const QRectF both(
+        QPointF(std::min(shown.left(), box.left()), std::min(shown.top(), box.top())),
+        QPointF(std::max(shown.right(), box.right()), std::max(shown.bottom(), box.bottom())));
+    const double markerPx = shownBodyDisplay() == BodyDisplay::Marker
+                                ? 2.5 * kMarkerRadiusPx * m_look.style.lineScale
+                                : 0;
+    const double w = std::max(area.width(), 100.0), h = std::max(area.height(), 100.0);
+    frame(both, std::max(0.05 * std::min(w, h), markerPx), 0);
+    m_view.setAutoFit(false); // the user's view: a resize does not refit it
 }
 
 void SceneCanvas::refit() {
@@ -417,6 +488,14 @@ void SceneCanvas::wheelEvent(QWheelEvent* e) {
 }
 
 void SceneCanvas::mousePressEvent(QMouseEvent* e) {
+    // a click on a body's edge marker frames that body
+    if (e->button() == Qt::LeftButton)
+        for (const EdgeMarker& marker : m_edgeMarkers)
+            if (marker.box.contains(e->position())) {
+                frameBody(marker.worldBox);
+                e->accept();
+                return;
+            }
     for (CanvasTool* tool : tools())
         if (tool->press(*e))
             break;

@@ -5,6 +5,7 @@
 #include "canvas/canvas_style.h"
 #include "canvas/canvas_view.h"
 #include "canvas/curve_flattening.h"
+#include "canvas/edge_markers.h"
 #include "canvas/layer_cache.h"
 #include "canvas/push_tool.h"
 #include "canvas/vector_layer.h"
@@ -12,6 +13,7 @@
 #include "scene/solution.h"
 
 #include <QPixmap>
+#include <QRegion>
 
 #include <QImage>
 #include <QPainterPath>
@@ -21,6 +23,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -69,6 +72,9 @@ class SceneCanvas : public QWidget {
     const CanvasCurves& curves() const;
 
     QSize sizeHint() const override { return {800, 500}; }
+    /// The markers at the drawing area's edge of the bodies out of view, as last painted: a
+    /// click on one frames its body.
+    const std::vector<EdgeMarker>& edgeMarkers() const { return m_edgeMarkers; }
     /// The arrows of View > Vectors as last painted.
     const VectorLayer& vectorLayer() const { return m_vectors; }
     QSize minimumSizeHint() const override { return {240, 180}; }
@@ -105,7 +111,8 @@ class SceneCanvas : public QWidget {
     void setTime(double t);
     /// Frames the lesson (F, the default): the path and the controlled body with a margin of
     /// 5 % on each side, the path filling at least 80 % of the drawing area in the direction
-    /// that limits it.
+    /// that limits it, unless a body shown at the current time would then be cut: then the
+    /// path and those bodies, at that scale where they fit in it (the view pans), else smaller.
     void fitScene();
     /// Frames everything that moves (Shift+F): the path and every body drawn, over the whole
     /// horizon.
@@ -152,9 +159,30 @@ class SceneCanvas : public QWidget {
 
   private:
     void onSolutionChanged();
+    /// A body drawn at a time: its pose, its colour and whether it is a translucent ghost.
+    struct DrawnBody {
+        BodyPose pose;
+        QColor colour;
+        bool ghost;
+    };
+    /// The bodies shown at `now`: the controlled body first, then the free ghost, and the
+    /// vakonomic and pushed bodies where they are drawn.
+    std::vector<DrawnBody> drawnBodies(const MotionSample& now) const;
+    /// The box [m] of the bodies shown at the current time, as drawn (a marker: their points P).
+    std::optional<QRectF> bodiesBounds() const;
+    /// The part of the widget the moving scene (bodies, trails, ghosts, pins) is drawn in: the
+    /// drawing area and the time line's band above it, under the read-out; not the legend.
+    QRectF sceneArea() const;
+    /// The edge markers of the bodies out of view at `now` (paintEvent draws them).
+    std::vector<EdgeMarker> edgeMarkersAt(const MotionSample& now) const;
+    QFont edgeMarkerFont() const;
+    /// Brings the world box [m] of a body out of view into the view with what the view shows.
+    void frameBody(const QRectF& box);
     /// Frames box [m] in the drawing area with a margin of `margin` [px] on each side, at no
-    /// less than minScale; the view then refits to the path on a resize.
-    void frame(const QRectF& box, double margin, double minScale);
+    /// less than minScale and no more than maxScale; the view then refits to the path on a
+    /// resize.
+    void frame(const QRectF& box, double margin, double minScale,
+               double maxScale = CanvasView::kMaxScale);
     BodyLook bodyLook() const;
     /// The tools the mouse reaches in the current mode, in the order they are offered a press.
     std::vector<CanvasTool*> tools() const;
@@ -267,6 +295,8 @@ class SceneCanvas : public QWidget {
     BodySprites m_bodies;
     mutable CanvasCurves m_curves;
     BodyClipShapes m_bodyClips;
+    std::vector<EdgeMarker> m_edgeMarkers;
+    QRegion m_edgeMarkersPainted; // the markers' boxes as last painted
 };
 
 } // namespace chaplygin::ui

@@ -5,6 +5,7 @@
 #include "document/scene_document.h"
 
 #include <QFontMetricsF>
+#include <QLineF>
 #include <QPainter>
 
 #include <algorithm>
@@ -157,8 +158,18 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
         }
         const QRgb c = colourOf(i);
         if (c != runColour || run.isEmpty()) {
+            // a run of the next colour starts over the last `reach` px of the one before:
+            // their antialiased flat ends would leave a light seam across the band where they
+            // meet
+            QPolygonF overlap;
+            double back = 0;
+            for (qsizetype k = run.size() - 1; k > 0 && back < reach; --k) {
+                back += QLineF(run[k - 1], run[k]).length();
+                overlap.prepend(run[k - 1]);
+            }
             flush();
             runColour = c;
+            run = overlap;
             run << from;
         }
         run << to;
@@ -362,8 +373,8 @@ void SceneCanvas::dropLayers() {
 
 void SceneCanvas::paintStaticLayer(QPainter& p, const QRegion& region, const MotionSample* now) {
     const qreal dpr = devicePixelRatioF();
-    // the trails within the drawing area, the static layer around it
-    const QRegion inside = region & drawingArea().toAlignedRect();
+    // the trails within the scene's area (up to the canvas's top), the legend's strip under it
+    const QRegion inside = region & sceneArea().toAlignedRect();
     if (!followsWithWorldLayer()) {
         const QPixmap& base = background();
         if (now && dpr == std::round(dpr)) {
@@ -378,7 +389,7 @@ void SceneCanvas::paintStaticLayer(QPainter& p, const QRegion& region, const Mot
         if (now) {
             p.save();
             p.setRenderHint(QPainter::Antialiasing, true);
-            p.setClipRect(drawingArea());
+            p.setClipRect(sceneArea());
             paintTrails(p, *now, inside);
             p.restore();
         }

@@ -107,25 +107,6 @@ std::vector<QRectF> SceneCanvas::trailEndsBounds(const MotionSample& now, double
     return boxes;
 }
 
-namespace {
-
-// f(x, y, phi) for each body the canvas shows at `now`: the controlled and the free body, and the
-// vakonomic and pushed ones when they are drawn
-template <class F>
-void forEachShownPose(const MotionSample& now, bool vakonomic, bool openLoop, bool closedLoop,
-                      F&& f) {
-    f(now.x, now.y, now.phi);
-    f(now.free.x, now.free.y, now.free.phi);
-    if (vakonomic)
-        f(now.vak.x, now.vak.y, now.vak.phi);
-    if (openLoop)
-        f(now.pert.x, now.pert.y, now.pert.phi);
-    if (closedLoop)
-        f(now.fb.x, now.fb.y, now.fb.phi);
-}
-
-} // namespace
-
 QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& now,
                                 double from) const {
     const QTransform world = worldTransform();
@@ -135,11 +116,9 @@ QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& no
         add(r);
     const SystemSpec& spec = solution.scene().system;
     const BodyLook look = bodyLook();
-    auto body = [&](double x, double y, double phi) {
-        add(BodySprites::pixelBounds(world, m_view.scale(), spec, solution.system(), {x, y, phi},
+    for (const DrawnBody& body : drawnBodies(now))
+        add(BodySprites::pixelBounds(world, m_view.scale(), spec, solution.system(), body.pose,
                                      look));
-    };
-    forEachShownPose(now, m_look.vakonomic, drawsOpenLoop(), drawsClosedLoop(), body);
     add(m_vectors.bounds(m_document->solution(), m_document->scene().vectors, now, world));
     // only the widget is painted: a body far outside the view (a wild zoom) must not overflow int
     if (!std::isfinite(box.x()) || !std::isfinite(box.y()) || !std::isfinite(box.width()) ||
@@ -223,9 +202,44 @@ void SceneCanvas::updateMoving(double from, QPointF centre) {
         dirty += m_vectors.scaleBarsBounds(m_document->scene().vectors, drawingArea());
     }
     dirty += m_movingPainted;
-    dirty += movingBounds(*solution, solution->at(m_time), from);
+    const MotionSample now = solution->at(m_time);
+    dirty += movingBounds(*solution, now, from);
+    // the edge markers where they were (and where scrolling moved them) and where they go
+    dirty += m_edgeMarkersPainted;
+    dirty += m_edgeMarkersPainted.translated(shift);
+    for (const EdgeMarker& marker : edgeMarkersAt(now))
+        dirty += marker.box.toAlignedRect().adjusted(-2, -2, 2, 2);
     dirty += QRect(0, 0, width(), topBandPx()); // the time read-out
     update(dirty);
+}
+
+QFont SceneCanvas::edgeMarkerFont() const {
+    QFont f = font();
+    f.setPointSizeF(8.5 * m_look.style.lineScale);
+    return f;
+}
+
+std::vector<EdgeMarker> SceneCanvas::edgeMarkersAt(const MotionSample& now) const {
+    const auto& solution = m_document->solution();
+    if (!solution)
+        return {};
+    const SystemSpec& spec = solution->scene().system;
+    const QTransform world = worldTransform();
+    const BodyLook look = bodyLook();
+    std::vector<ShownBody> shown;
+    for (const DrawnBody& body : drawnBodies(now)) {
+        const BodyPose& pose = body.pose;
+        const QRectF box = look.display == BodyDisplay::Marker
+                               ? QRectF(pose.x, pose.y, 0, 0)
+                               : bodyBounds(spec, solution->system(), pose);
+        shown.push_back(
+            {body.colour, QPointF(pose.x, pose.y),
+             BodySprites::pixelBounds(world, m_view.scale(), spec, solution->system(), pose, look),
+             box});
+    }
+    // a body in the time line's band is in view: the scene is drawn there too
+    return layoutEdgeMarkers(shown, drawingArea(), sceneArea(), world, edgeMarkerFont(),
+                             m_look.style.lineScale);
 }
 
 QPointF SceneCanvas::pinKeyOrigin() const {
@@ -252,33 +266,35 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
     p.setRenderHint(QPainter::Antialiasing, true);
     if (solution) {
         p.save();
-        p.setClipRect(drawingArea());
+        // up to the canvas's top, under the read-out: only the legend's strip is not the scene's
+        p.setClipRect(sceneArea());
         curves(); // at this scale, for the pins too
         paintPinnedRuns(p, *m_document->pins(), m_curves, worldTransform(), m_time, pinKeyOrigin());
         const SystemSpec& spec = solution->scene().system;
         const QTransform world = worldTransform();
-        // the translucent ghost on top, so that both stay visible where they overlap
+        // the ghosts first and the controlled body, the lesson's, on top of them: its fill is
+        // nearly opaque, and where the translucent ghosts lay over it its colour was lost
         const BodyLook look = bodyLook();
-        auto body = [&](const BodyPose& pose, const QColor& color, bool ghost) {
-            m_bodies.paint(p, world, m_view.scale(), spec, solution->system(), pose, color, ghost,
-                           look);
-        };
-        body({now->x, now->y, now->phi}, m_look.style.controlled(), false);
-        body({now->free.x, now->free.y, now->free.phi}, m_look.style.free(), true);
-        if (m_look.vakonomic)
-            body({now->vak.x, now->vak.y, now->vak.phi}, m_look.style.vakonomic(), true);
-        if (drawsOpenLoop())
-            body({now->pert.x, now->pert.y, now->pert.phi}, m_look.style.openLoop(), true);
-        if (drawsClosedLoop())
-            body({now->fb.x, now->fb.y, now->fb.phi}, m_look.style.closedLoop(), true);
+        const std::vector<DrawnBody> bodies = drawnBodies(*now);
+        for (auto body = bodies.rbegin(); body != bodies.rend(); ++body)
+            m_bodies.paint(p, world, m_view.scale(), spec, solution->system(), body->pose,
+                           body->colour, body->ghost, look);
         paintPathOverBodies(p, *now);
         p.restore();
         m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform(),
                         m_view.scale(), drawingArea(), e->region());
+        // where the bodies out of view went
+        m_edgeMarkers = edgeMarkersAt(*now);
+        paintEdgeMarkers(p, m_edgeMarkers, edgeMarkerFont(), m_look.style.lineScale);
+        m_edgeMarkersPainted = {};
+        for (const EdgeMarker& marker : m_edgeMarkers)
+            m_edgeMarkersPainted += marker.box.toAlignedRect().adjusted(-2, -2, 2, 2);
         paintTimeReadout(p, solution->tEnd());
         m_movingPainted = movingBounds(*solution, *now, m_time);
     } else {
         m_movingPainted = {};
+        m_edgeMarkers.clear();
+        m_edgeMarkersPainted = {};
     }
     // what the gestures show: a push being dragged, the drawn path's points, a stroke
     m_pushTool->paint(p);
@@ -363,18 +379,17 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
         QPainterPath area, outline, both;
     };
     std::vector<Clip> clips;
-    auto add = [&](double x, double y, double phi) {
+    for (const DrawnBody& body : drawnBodies(now)) {
         QTransform pose;
-        pose.translate(x, y);
-        pose.rotate(phi * 180.0 / M_PI);
+        pose.translate(body.pose.x, body.pose.y);
+        pose.rotate(body.pose.phi * 180.0 / M_PI);
         const QTransform map = pose * world;
         QPainterPath mapped = map.map(shape);
         if (!mapped.boundingRect().intersects(QRectF(rect())))
-            return;
+            continue;
         clips.push_back(
             {std::move(mapped), map.map(ring), covered ? map.map(*covered) : QPainterPath()});
-    };
-    forEachShownPose(now, m_look.vakonomic, drawsOpenLoop(), drawsClosedLoop(), add);
+    }
     if (clips.empty())
         return;
     const Trail controlled = trails(now).back();
@@ -429,9 +444,23 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     p.restore();
 }
 
+namespace {
+
+// black text in a white halo: legible over the bodies and trails that pass under it
+void drawHaloText(QPainter& p, const QRectF& box, int flags, const QString& text, double width) {
+    p.setPen(QColor(255, 255, 255, 220));
+    for (QPointF d : {QPointF(-1, 0), QPointF(1, 0), QPointF(0, -1), QPointF(0, 1), QPointF(-1, -1),
+                      QPointF(1, 1), QPointF(-1, 1), QPointF(1, -1)})
+        p.drawText(box.translated(d * width), flags, text);
+    p.setPen(Qt::black);
+    p.drawText(box, flags, text);
+}
+
+} // namespace
+
 void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
     QFont f = font();
-    p.setPen(Qt::black);
+    const double halo = std::max(1.0, std::round(m_look.style.lineScale));
     if (m_look.style.largeTime) {
         // presentation: the time large enough for the back of the room
         f.setPointSizeF(9 * m_look.style.lineScale * 2);
@@ -439,14 +468,14 @@ void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
         p.setFont(f);
         const QString now = tr("t = %1 s").arg(m_time, 0, 'f', 2);
         QRectF band(10, 0, width() - 20, topBandPx());
-        p.drawText(band, Qt::AlignLeft | Qt::AlignVCenter, now);
+        drawHaloText(p, band, Qt::AlignLeft | Qt::AlignVCenter, now, halo);
         double after =
             10 + p.fontMetrics().horizontalAdvance(now) + p.fontMetrics().averageCharWidth();
         f.setPointSizeF(9 * m_look.style.lineScale);
         f.setBold(false);
         p.setFont(f);
-        p.drawText(band.adjusted(after - 10, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter,
-                   tr("of %1 s").arg(tEnd, 0, 'f', 2));
+        drawHaloText(p, band.adjusted(after - 10, 0, 0, 0), Qt::AlignLeft | Qt::AlignVCenter,
+                     tr("of %1 s").arg(tEnd, 0, 'f', 2), halo);
         return;
     }
     f.setPointSizeF(9 * m_look.style.lineScale);
@@ -458,7 +487,7 @@ void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
     // said, not hidden: a curve too dense for a frame at this zoom ends where its budget did
     if (m_curves.truncated())
         readout += QStringLiteral("    ") + tr("curves drawn in part at this zoom");
-    p.drawText(QRectF(8, 6, width() - 16, topBandPx()), Qt::AlignLeft, readout);
+    drawHaloText(p, QRectF(8, 6, width() - 16, topBandPx()), Qt::AlignLeft, readout, halo);
 }
 
 } // namespace chaplygin::ui

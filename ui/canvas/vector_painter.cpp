@@ -32,13 +32,20 @@ QColor inkOf(VectorKind kind, bool ghost) {
     return c;
 }
 
-void arrowHead(QPainter& p, QPointF tip, QPointF direction, const QColor& c, double headPx) {
+// the arrowhead's triangle at tip along direction; empty for no direction
+QPolygonF headTriangle(QPointF tip, QPointF direction, double headPx) {
     double len = std::hypot(direction.x(), direction.y());
-    if (len <= 0)
-        return;
+    if (!(len > 0))
+        return {};
     QPointF u = direction / len, n(-u.y(), u.x());
-    QPolygonF head;
-    head << tip << tip - headPx * u + 0.45 * headPx * n << tip - headPx * u - 0.45 * headPx * n;
+    return QPolygonF{tip, tip - headPx * u + 0.45 * headPx * n,
+                     tip - headPx * u - 0.45 * headPx * n};
+}
+
+void arrowHead(QPainter& p, QPointF tip, QPointF direction, const QColor& c, double headPx) {
+    const QPolygonF head = headTriangle(tip, direction, headPx);
+    if (head.isEmpty())
+        return;
     p.setBrush(c);
     p.setPen(Qt::NoPen);
     p.drawPolygon(head);
@@ -187,12 +194,28 @@ QString scaleBarText(VectorKind kind, double k, double pixelsPerMetre) {
     return vectorSymbol(kind) + QStringLiteral(": %1 %2").arg(value).arg(vectorUnit(kind));
 }
 
-// text at its natural place unless an earlier label holds it: then the first free place of
-// rings around it (a label's height apart), within the margin VectorLayer::bounds allows
-void placeLabel(QPainter& p, QPointF natural, const QString& text, std::vector<QRectF>& placed) {
+// text beyond the arrowhead's tip along its direction u, its box wholly ahead of the tip, unless
+// an earlier label or an arrowhead holds that place: then the first free place of rings around
+// it (a label's height apart), within the margin VectorLayer::bounds allows
+void placeLabel(QPainter& p, QPointF tip, QPointF u, const QString& text,
+                std::vector<QRectF>& placed, const std::vector<QPolygonF>& heads, double gap) {
     const QFontMetricsF metrics(p.font());
-    const QRectF box = metrics.boundingRect(text).translated(natural).adjusted(-1, -1, 1, 1);
+    const QRectF glyphs = metrics.boundingRect(text).adjusted(-1, -1, 1, 1); // from the baseline
+    const double length = std::hypot(u.x(), u.y());
+    u = length > 0 ? u / length : QPointF(1, 0);
+    // the box's half extent along u: its nearest side is gap beyond the tip
+    const double half =
+        0.5 * (std::abs(u.x()) * glyphs.width() + std::abs(u.y()) * glyphs.height());
+    const QPointF natural = tip + u * (gap + half) - glyphs.center();
+    const QRectF box = glyphs.translated(natural);
     const double step = metrics.height();
+    auto free = [&](const QRectF& at) {
+        const QPolygonF corners(at);
+        return std::none_of(placed.begin(), placed.end(),
+                            [&](const QRectF& r) { return r.intersects(at); }) &&
+               std::none_of(heads.begin(), heads.end(),
+                            [&](const QPolygonF& h) { return corners.intersects(h); });
+    };
     QPointF best;
     for (int ring = 0; ring <= 2; ++ring) {
         bool found = false;
@@ -200,9 +223,7 @@ void placeLabel(QPainter& p, QPointF natural, const QString& text, std::vector<Q
         for (int k = 0; k < tries && !found; ++k) {
             const double angle = k * std::numbers::pi / 4;
             const QPointF shift = ring * step * QPointF(std::cos(angle), std::sin(angle));
-            const QRectF at = box.translated(shift);
-            found = std::none_of(placed.begin(), placed.end(),
-                                 [&](const QRectF& r) { return r.intersects(at); });
+            found = free(box.translated(shift));
             if (found)
                 best = shift;
         }
@@ -234,6 +255,17 @@ void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels,
     std::vector<QRectF> own;
     std::vector<QRectF>& taken = placed ? *placed : own;
     const double s = lineScale, headPx = kHeadPx * s;
+    // every arrowhead, which no label may cover
+    std::vector<QPolygonF> heads;
+    for (const CoupleShape& c : shapes.couples) {
+        const double end = (c.startDeg + c.spanDeg) * std::numbers::pi / 180;
+        const QPointF tip = c.centre + c.radius * QPointF(std::cos(end), -std::sin(end));
+        const QPointF tangent = (c.spanDeg > 0 ? 1 : -1) * QPointF(-std::sin(end), -std::cos(end));
+        heads.push_back(headTriangle(tip + 0.5 * headPx * tangent, tangent, headPx));
+    }
+    for (const ArrowShape& a : shapes.arrows)
+        if (std::hypot(a.head.x() - a.tail.x(), a.head.y() - a.tail.y()) >= kMinArrowPx)
+            heads.push_back(headTriangle(a.head, a.head - a.tail, headPx));
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
     QFont f = p.font();
@@ -269,7 +301,8 @@ void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels,
         arrowHead(p, tip + 0.5 * headPx * tangent, tangent, ink, headPx);
         if (labels) {
             p.setPen(ink);
-            placeLabel(p, tip + s * QPointF(6, -6), vectorSymbol(VectorKind::ControlCouple), taken);
+            placeLabel(p, tip + 0.5 * headPx * tangent, tangent,
+                       vectorSymbol(VectorKind::ControlCouple), taken, heads, 4 * s);
         }
     }
     for (const ArrowShape& a : shapes.arrows) {
@@ -285,8 +318,7 @@ void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels,
         arrowHead(p, a.head, d, ink, headPx);
         if (labels) {
             p.setPen(ink);
-            placeLabel(p, a.head + d * (6 * s / len) + s * QPointF(-6, 5), vectorSymbol(a.kind),
-                       taken);
+            placeLabel(p, a.head, d, vectorSymbol(a.kind), taken, heads, 4 * s);
         }
     }
     p.restore();
