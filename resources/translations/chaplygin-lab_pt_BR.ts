@@ -197,6 +197,70 @@
         <source>power f_sṡ + τφ̇</source>
         <translation>potência f_sṡ + τφ̇</translation>
     </message>
+    <message>
+        <source>at rest (the target is the start)</source>
+        <translation>em repouso (o alvo é o início)</translation>
+    </message>
+    <message>
+        <source>pivoting about P (Ψ ≡ 0 or π)</source>
+        <translation>pivotando em torno de P (Ψ ≡ 0 ou π)</translation>
+    </message>
+    <message>
+        <source>the straight line (Ψ ≡ ±π/2)</source>
+        <translation>a linha reta (Ψ ≡ ±π/2)</translation>
+    </message>
+    <message>
+        <source>libration (k &amp;lt; 1)</source>
+        <translation>libração (k &amp;lt; 1)</translation>
+    </message>
+    <message>
+        <source>rotation (k &amp;gt; 1)</source>
+        <translation>rotação (k &amp;gt; 1)</translation>
+    </message>
+    <message>
+        <source>separatrix (k = 1)</source>
+        <translation>separatriz (k = 1)</translation>
+    </message>
+    <message>
+        <source>Plan: motion %1 of %2, %3</source>
+        <translation>Plano: movimento %1 de %2, %3</translation>
+    </message>
+    <message>
+        <source>the pendulum&apos;s modulus, docs/physics.md §10</source>
+        <translation>o módulo do pêndulo, docs/physics.md §10</translation>
+    </message>
+    <message>
+        <source>Ψ(0) = atan2(ṡ, bφ̇) at the start</source>
+        <translation>Ψ(0) = atan2(ṡ, bφ̇) no início</translation>
+    </message>
+    <message>
+        <source>the one free constant: the control</source>
+        <translation>a única constante livre: o controle</translation>
+    </message>
+    <message>
+        <source>arrival, the least time (certified by the cut time)</source>
+        <translation>chegada, o menor tempo (certificado pelo tempo de corte)</translation>
+    </message>
+    <message>
+        <source>arrival</source>
+        <translation>chegada</translation>
+    </message>
+    <message>
+        <source>cut time</source>
+        <translation>tempo de corte</translation>
+    </message>
+    <message>
+        <source>optimal up to here: the first Maxwell time</source>
+        <translation>ótimo até aqui: o primeiro tempo de Maxwell</translation>
+    </message>
+    <message>
+        <source>along the motion now, t clamped to it</source>
+        <translation>ao longo do movimento agora, t limitado a ele</translation>
+    </message>
+    <message>
+        <source>along the motion now</source>
+        <translation>ao longo do movimento agora</translation>
+    </message>
 </context>
 <context>
     <name>MethodNames</name>
@@ -2009,8 +2073,8 @@ O que os estudantes devem observar…</translation>
         <translation>inválido: %1</translation>
     </message>
     <message>
-        <source>%1 [%2]: %3; slider %4 … %5 %2</source>
-        <translation>%1 [%2]: %3; controle deslizante %4 … %5 %2</translation>
+        <source>%1 [%2]: %3; slider %4 … %5 %2; type any value or an expression such as 2*pi or 1e6</source>
+        <translation>%1 [%2]: %3; controle deslizante %4 … %5 %2; digite qualquer valor ou uma expressão como 2*pi ou 1e6</translation>
     </message>
 </context>
 <context>

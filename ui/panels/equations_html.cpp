@@ -398,6 +398,74 @@ QString feedbackLaw(const At& at) {
 
 } // namespace
 
+QString planHtml(const PlanRequest& request, const PlannedGeodesic& g, int index, int count,
+                 double t) {
+    QString family;
+    switch (g.family) {
+    case GeodesicFamily::Rest:
+        family = QCoreApplication::translate("EquationsPanel", "at rest (the target is the start)");
+        break;
+    case GeodesicFamily::Pivot:
+        family = QCoreApplication::translate("EquationsPanel",
+                                             "pivoting about P (\u03a8 \u2261 0 or \u03c0)");
+        break;
+    case GeodesicFamily::Line:
+        family = QCoreApplication::translate("EquationsPanel",
+                                             "the straight line (\u03a8 \u2261 \u00b1\u03c0/2)");
+        break;
+    case GeodesicFamily::Libration:
+        family = QCoreApplication::translate("EquationsPanel", "libration (k &lt; 1)");
+        break;
+    case GeodesicFamily::Rotation:
+        family = QCoreApplication::translate("EquationsPanel", "rotation (k &gt; 1)");
+        break;
+    case GeodesicFamily::Separatrix:
+        family = QCoreApplication::translate("EquationsPanel", "separatrix (k = 1)");
+        break;
+    }
+    const DerivedSystem& d = request.system;
+    const double v = request.vT;
+    const VakonomicState now =
+        VakonomicMotion(d, plannedStart(request, g)).at(std::clamp(t, 0.0, g.t));
+    QString h = section(QCoreApplication::translate("EquationsPanel", "Plan: motion %1 of %2, %3")
+                            .arg(index + 1)
+                            .arg(count)
+                            .arg(family));
+    h += row(QStringLiteral(
+                 "k\u00b2 = sin\u00b2\u03a8\u2080 + (b\u03a8\u0307\u2080/v<sub>T</sub>)\u00b2"),
+             QStringLiteral("sin\u00b2%1 + (%2 \u00b7 %3/%4)\u00b2")
+                 .arg(operand(g.psi0), operand(d.b), operand(g.psidot0), operand(v)),
+             g.modulus * g.modulus, QString(),
+             QCoreApplication::translate("EquationsPanel",
+                                         "the pendulum's modulus, docs/physics.md \u00a7"
+                                         "10"));
+    h += row(QStringLiteral("\u03a8\u2080"), QString(), g.psi0, QStringLiteral("rad"),
+             QCoreApplication::translate("EquationsPanel",
+                                         "\u03a8(0) = atan2(\u1e61, b\u03c6\u0307) at the start"));
+    h += row(QStringLiteral("\u03bb(0) = m(b\u03a8\u0307\u2080 \u2212 a v<sub>T</sub> cos "
+                            "\u03a8\u2080/b)"),
+             QStringLiteral("%1 \u00b7 (%2 \u00b7 %3 \u2212 %4 \u00b7 %5 \u00b7 cos %6/%2)")
+                 .arg(operand(d.mass), operand(d.b), operand(g.psidot0), operand(d.a), operand(v),
+                      operand(g.psi0)),
+             g.lambda0, QStringLiteral("kg m/s"),
+             QCoreApplication::translate("EquationsPanel", "the one free constant: the control"));
+    h +=
+        row(QStringLiteral("t"), QString(), g.t, QStringLiteral("s"),
+            g.optimal ? QCoreApplication::translate(
+                            "EquationsPanel", "arrival, the least time (certified by the cut time)")
+                      : QCoreApplication::translate("EquationsPanel", "arrival"));
+    h += row(QCoreApplication::translate("EquationsPanel", "cut time"), QString(), g.cutTime,
+             QStringLiteral("s"),
+             QCoreApplication::translate("EquationsPanel",
+                                         "optimal up to here: the first Maxwell time"));
+    h +=
+        row(QStringLiteral("\u03a8(t)"), QString(), now.psi, QStringLiteral("rad"),
+            QCoreApplication::translate("EquationsPanel", "along the motion now, t clamped to it"));
+    h += row(QStringLiteral("\u03bb(t)"), QString(), now.lambda, QStringLiteral("kg m/s"),
+             QCoreApplication::translate("EquationsPanel", "along the motion now"));
+    return h;
+}
+
 QString equationsHtml(const Solution& s, double t) {
     t = std::clamp(t, 0.0, s.tEnd());
     const MotionSample m = s.at(t);

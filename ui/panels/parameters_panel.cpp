@@ -3,10 +3,10 @@
 #include "common/input_error.h"
 #include "scene/speed_choice.h"
 #include "systems/system_parameters.h"
+#include "widgets/number_field.h"
 
 #include <QComboBox>
 #include <QCoreApplication>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -27,6 +27,7 @@ QString translated(const char* text) {
     return QCoreApplication::translate(kSystemParameterContext, text);
 }
 
+// a typed value beyond the slider's range puts the slider at its end
 int toSlider(double v, double lo, double hi) {
     return static_cast<int>(std::lround(std::clamp((v - lo) / (hi - lo), 0.0, 1.0) * kSliderSteps));
 }
@@ -73,7 +74,7 @@ ParametersPanel::ParametersPanel(QWidget* parent) : QWidget(parent) {
     speedForm->addRow(tr("&Mode"), m_mode);
     layout->addLayout(speedForm);
     m_speedLabel = new QLabel;
-    m_speedLabel->setWordWrap(true); // a longer translation wraps instead of widening the dock
+    m_speedLabel->setWordWrap(true); // a long translation wraps instead of widening the dock
     layout->addWidget(m_speedLabel);
 
     m_error = new QLabel;
@@ -99,19 +100,19 @@ ParametersPanel::Row ParametersPanel::addRow(const QString& name, const SystemPa
     const QString unit = QString::fromUtf8(parameter.unit);
     const QString caption = QString::fromUtf8(parameter.symbol);
     Row row;
-    row.spin = new QDoubleSpinBox;
+    row.spin = new NumberField(name == QStringLiteral("speed") ? caption : name);
     row.spin->setObjectName(QStringLiteral("spin_") + name);
-    row.spin->setDecimals(4);
-    row.spin->setRange(parameter.bound == ParameterBound::Any ? -1000 : 0, 1000);
-    row.spin->setSingleStep((hi - lo) / 100);
-    row.spin->setKeyboardTracking(false);
+    if (parameter.bound != ParameterBound::Any) // the bound deriveSystem checks, said at once
+        row.spin->setMinimum(0, parameter.bound == ParameterBound::Positive);
+    row.spin->setZeroStep(std::pow(10.0, std::floor(std::log10((hi - lo) / 100))));
+    row.spin->setUnit(unit);
     row.spin->setValue(value);
-    row.spin->setSuffix(QStringLiteral(" ") + unit);
     row.slider = new QSlider(Qt::Horizontal);
     row.slider->setObjectName(QStringLiteral("slider_") + name);
     row.slider->setRange(0, kSliderSteps);
     row.slider->setValue(toSlider(value, lo, hi));
-    QString tip = tr("%1 [%2]: %3; slider %4 \u2026 %5 %2")
+    QString tip = tr("%1 [%2]: %3; slider %4 \u2026 %5 %2; type any value or an expression such "
+                     "as 2*pi or 1e6")
                       .arg(translated(parameter.label), unit, translated(parameter.tooltip))
                       .arg(lo)
                       .arg(hi);
@@ -127,9 +128,13 @@ ParametersPanel::Row ParametersPanel::addRow(const QString& name, const SystemPa
     captionLabel->setBuddy(row.spin);
     m_form->addRow(captionLabel, line);
 
-    QDoubleSpinBox* spin = row.spin;
+    NumberField* spin = row.spin;
     QSlider* slider = row.slider;
-    connect(spin, &QDoubleSpinBox::valueChanged, this, [=, this](double v) {
+    connect(spin, &NumberField::messageChanged, this, [this](const QString& message) {
+        m_error->setText(message);
+        m_error->setVisible(!message.isEmpty());
+    });
+    connect(spin, &NumberField::valueChanged, this, [=, this](double v) {
         if (m_updating)
             return;
         m_updating = true;
@@ -226,11 +231,13 @@ void ParametersPanel::showError(const QString& message) {
     // the entry that was refused stays marked until a value is accepted: what is shown red is
     // not what is used
     for (auto& [name, row] : m_rows) {
-        bool invalid = !message.isEmpty() && name == m_lastEdited;
+        // a field's own refusal stays marked too
+        bool invalid =
+            (!message.isEmpty() && name == m_lastEdited) || !row.spin->message().isEmpty();
         if (row.spin->property("invalid").toBool() == invalid)
             continue;
         row.spin->setProperty("invalid", invalid);
-        row.spin->setStyleSheet(invalid ? QStringLiteral("QDoubleSpinBox { border: 2px solid "
+        row.spin->setStyleSheet(invalid ? QStringLiteral("QAbstractSpinBox { border: 2px solid "
                                                          "#b00020; background: #fdecee; }")
                                         : QString());
         row.spin->setAccessibleDescription(invalid ? tr("invalid: %1").arg(message) : QString());
@@ -246,7 +253,7 @@ QString ParametersPanel::errorText() const {
     return m_error->isVisible() ? m_error->text() : QString();
 }
 
-QDoubleSpinBox* ParametersPanel::spinBox(const QString& name) const {
+NumberField* ParametersPanel::spinBox(const QString& name) const {
     auto it = m_rows.find(name);
     return it == m_rows.end() ? nullptr : it->second.spin;
 }
