@@ -1571,10 +1571,6 @@ realimentação: %2</translation>
         <translation>Gráficos gravados em %1</translation>
     </message>
     <message>
-        <source>CSV written to %1</source>
-        <translation>CSV gravado em %1</translation>
-    </message>
-    <message>
         <source>Open scene</source>
         <translation>Abrir cena</translation>
     </message>
@@ -1813,6 +1809,10 @@ realimentação: %2</translation>
     <message>
         <source>Animation</source>
         <translation>Animação</translation>
+    </message>
+    <message>
+        <source>CSV written to %1, its parameters to %2</source>
+        <translation>CSV gravado em %1, seus parâmetros em %2</translation>
     </message>
 </context>
 <context>

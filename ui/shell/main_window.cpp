@@ -390,6 +390,7 @@ bool MainWindow::openFile(const QString& path) {
         showFileError(QString::fromStdString(e.what()));
         return false;
     }
+    rememberFolder(QStringLiteral("scene"), path); // opened from the recent list or a command line
     m_playback->seek(0);
     m_canvas->fitScene();
     return true;
@@ -426,8 +427,10 @@ bool MainWindow::exportCsvTo(const QString& path) {
         showFileError(QString::fromStdString(e.what()));
         return false;
     }
-    m_exportReport->report(tr("CSV written to %1").arg(QDir::toNativeSeparators(path)),
-                           QFileInfo(path).absolutePath());
+    m_exportReport->report(
+        tr("CSV written to %1, its parameters to %2")
+            .arg(QDir::toNativeSeparators(path), QFileInfo(csvSummaryPath(path)).fileName()),
+        QFileInfo(path).absolutePath());
     return true;
 }
 
