@@ -479,10 +479,11 @@ void MainWindow::exportAnimationDialog() {
         sceneFileStem(m_document->scene(), m_document->fileName()) +
         (findFfmpeg().isEmpty() ? QStringLiteral("-frames/") : QStringLiteral(".mp4"));
     initial.file = QDir(lastFolder(QStringLiteral("animation"))).filePath(clip);
-    AnimationDialog dialog(initial, this);
+    AnimationDialog dialog(AnimationDialog::remembered(initial), this);
     if (dialog.exec() != QDialog::Accepted)
         return;
     AnimationSettings chosen = dialog.settings();
+    AnimationDialog::remember(chosen);
     chosen.look = m_canvas->look();          // the clip shows what the screen shows
     if (QFileInfo(chosen.file).isRelative()) // a typed name goes beside the proposed one
         chosen.file = QDir(lastFolder(QStringLiteral("animation"))).filePath(chosen.file);

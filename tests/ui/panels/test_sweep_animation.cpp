@@ -17,6 +17,7 @@
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QUndoStack>
 #include <QtTest>
 #include <qcustomplot.h>
@@ -41,6 +42,7 @@ class TestSweepAnimation : public QObject {
     void exportWritesFramesRenderedOffscreen();
     void exportDialogPathWithCancelLeavesNoFiles();
     void exportGifAndMissingFfmpeg();
+    void exportDialogRemembersItsSettings();
 
   private:
     void load(const char* preset);
@@ -257,6 +259,73 @@ void TestSweepAnimation::exportGifAndMissingFfmpeg() {
     QCOMPARE(gif.read(6), QByteArray("GIF89a"));
     QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden),
              QStringList{QStringLiteral("circle.gif")});
+}
+
+// fps, size and "with plots" chosen once are what the dialog shows the next time, in this window
+// and in the next one (QSettings)
+void TestSweepAnimation::exportDialogRemembersItsSettings() {
+    load("circle");
+    QTemporaryDir dir;
+    const QString folder = dir.filePath(QStringLiteral("clip/"));
+    auto exportAction = [this] {
+        for (QAction* menu : m_window->menuBar()->actions())
+            if (menu->menu())
+                for (QAction* a : menu->menu()->actions())
+                    if (a->text().contains(QLatin1String("animation")))
+                        return a;
+        return static_cast<QAction*>(nullptr);
+    };
+    QVERIFY(exportAction());
+    int fps = 0, width = 0, height = 0;
+    bool plots = false, seen = false;
+    QTimer poll;
+    poll.setInterval(10);
+    // the first time: choose 12 fps, 640x360 with plots, export and cancel the rendering
+    connect(&poll, &QTimer::timeout, this, [&] {
+        if (auto* dialog = qobject_cast<AnimationDialog*>(QApplication::activeModalWidget())) {
+            seen = true;
+            QVERIFY(dialog->fpsBox()->value() != 12);
+            QVERIFY(!dialog->plotsBox()->isChecked());
+            dialog->fileEdit()->setText(folder);
+            dialog->fpsBox()->setValue(12);
+            dialog->widthBox()->setValue(640);
+            dialog->heightBox()->setValue(360);
+            dialog->plotsBox()->setChecked(true);
+            dialog->accept();
+        } else if (auto* progress =
+                       m_window->findChild<QProgressDialog*>(QStringLiteral("animationProgress")))
+            progress->cancel();
+    });
+    poll.start();
+    exportAction()->trigger();
+    poll.stop();
+    QVERIFY(seen);
+    // the next times, here and in a new window: what was chosen, read and then dismissed
+    poll.disconnect();
+    connect(&poll, &QTimer::timeout, this, [&] {
+        if (auto* dialog = qobject_cast<AnimationDialog*>(QApplication::activeModalWidget())) {
+            fps = int(dialog->fpsBox()->value());
+            width = int(dialog->widthBox()->value());
+            height = int(dialog->heightBox()->value());
+            plots = dialog->plotsBox()->isChecked();
+            dialog->reject();
+        }
+    });
+    for (int window = 0; window < 2; ++window) {
+        if (window == 1) {
+            m_window = test::showTestWindow();
+            QVERIFY(m_window);
+        }
+        fps = width = height = 0;
+        plots = false;
+        poll.start();
+        exportAction()->trigger();
+        poll.stop();
+        QCOMPARE(fps, 12);
+        QCOMPARE(width, 640);
+        QCOMPARE(height, 360);
+        QVERIFY(plots);
+    }
 }
 
 QTEST_MAIN(TestSweepAnimation)
