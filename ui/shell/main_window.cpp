@@ -146,6 +146,9 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
 
     if (!m_useSettings)
         resize(1280, 800);
+    // the path and the plots in front of their tabs (the docks installed since took the front)
+    m_docks.path->raise();
+    m_docks.plots->raise();
     const QByteArray defaultLayout = saveState();
     const bool firstStart = !m_useSettings || !restoreWindowLayout(this);
     if (firstStart)
@@ -178,6 +181,11 @@ Autosave* MainWindow::autosave() const {
 
 void MainWindow::balanceDocks() {
     chaplygin::ui::balanceDocks(this, m_docks);
+}
+
+void MainWindow::showPlotsInFront() {
+    if (m_docks.plots->toggleViewAction()->isChecked())
+        m_docks.plots->raise();
 }
 
 void MainWindow::showParametersDock() {
@@ -317,7 +325,7 @@ void MainWindow::onSolutionChanged() {
 
 void MainWindow::showMethodsDock() {
     // the diagram's legends need about half the height
-    bringDockForward(this, m_docks.methods, std::max(360, height() * 9 / 20));
+    bringDockForward(this, m_docks.methods, methodsDockHeight(height()));
 }
 
 bool MainWindow::loadGalleryEntry(const QString& name) {
@@ -391,6 +399,7 @@ bool MainWindow::openFile(const QString& path) {
         return false;
     }
     rememberFolder(QStringLiteral("scene"), path); // opened from the recent list or a command line
+    showPlotsInFront(); // the Sweep and Methods docks are empty for a scene just opened
     m_playback->seek(0);
     m_canvas->fitScene();
     return true;
@@ -468,7 +477,7 @@ void MainWindow::exportCsvDialog() {
 }
 
 void MainWindow::showSweepDock() {
-    bringDockForward(this, m_docks.sweep, std::max(300, height() * 2 / 5));
+    bringDockForward(this, m_docks.sweep, sweepDockHeight(height()));
 }
 
 void MainWindow::exportAnimationDialog() {
