@@ -193,9 +193,12 @@ void MainWindow::showParametersDock() {
 }
 
 IntroductionWindow* MainWindow::showIntroduction() {
-    if (!m_intro)
+    const bool first = !m_intro;
+    if (first)
         m_intro = new IntroductionWindow(m_useSettings, this);
     m_intro->show();
+    if (first) // shown, its frame is known
+        placeOnScreen(m_intro, m_intro->size(), this);
     m_intro->raise();
     m_intro->activateWindow();
     return m_intro;
