@@ -72,9 +72,15 @@ class PresentationMode : public QObject {
 
   private:
     void applyStyle();
-    /// The plots a quarter of the height (at least 240 px) and a dock beside the canvas (the
-    /// note) at most a quarter of the width, so that the canvas keeps most of the screen.
+    /// The plots a quarter of the height (at least 240 px) and a dock shown with the scene (the
+    /// note) beside them, as wide as lines of about 66 characters (at most a quarter of the
+    /// width up to 1280 px, two fifths from 1920 px) and the bottom as tall as the note (at
+    /// most a third of the height), so that the canvas keeps most of the screen.
     void fitDocks();
+    /// The width of a dock that shows prose in lines of about 66 characters [px].
+    static int readableWidth(const QWidget& dock);
+    /// The height a dock's text browser needs at this dock width, its title bar included [px].
+    static int textHeight(const QWidget& dock, int width);
     struct Conditional {
         QDockWidget* dock;
         std::function<bool()> needed;
