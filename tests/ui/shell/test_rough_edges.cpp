@@ -570,6 +570,19 @@ void TestRoughEdges::helpMenuOpensTheExplanationWithItsDrawing() {
          {QStringLiteral("\u03a8"), QStringLiteral("\u03c7"), QStringLiteral("\u03bb"),
           QStringLiteral("ghost"), QStringLiteral("vakonomic"), QStringLiteral("leaves the path")})
         QVERIFY2(text.contains(word), qPrintable(word));
+    // the screen first, in plain words (the four plots, the path's colours, the green line,
+    // how to play), then the physics
+    const qsizetype physics = text.indexOf(QStringLiteral("knife"));
+    QVERIFY(physics > 0);
+    for (const QString& word :
+         {QStringLiteral("canvas"), QStringLiteral("four plots"),
+          QStringLiteral("red where it "
+                         "turns right"),
+          QStringLiteral("blue where it turns left"), QStringLiteral("green line"),
+          QStringLiteral("Space"), QStringLiteral("To play")}) {
+        const qsizetype at = text.indexOf(word);
+        QVERIFY2(at >= 0 && at < physics, qPrintable(word));
+    }
     // the drawing is painted: a good part of it is ink of several colours
     auto* diagram = intro->findChild<BodyDiagram*>();
     QVERIFY(diagram && diagram->isVisible());
