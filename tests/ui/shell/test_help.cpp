@@ -36,6 +36,7 @@ class TestHelp : public QObject, private test::WindowFixture {
     void picturesFitTheWidth();
     void everyPictureOfTheHelpLoads();
     void helpWindowFitsTheScreen();
+    void userGuideStartsWithUsingTheProgram();
 };
 
 void TestHelp::aboutNamesVersionLicenceCreditsPaper() {
@@ -190,6 +191,23 @@ void TestHelp::helpWindowFitsTheScreen() {
                             .arg(available.height())));
     QVERIFY(help->width() >= available.width() / 2);
     QVERIFY(help->height() >= available.height() / 2);
+}
+
+// Help > User guide opens on how to use the program: its first screen names Space, the presets'
+// keys and What am I looking at?, and no build command or source folder (they come later)
+void TestHelp::userGuideStartsWithUsingTheProgram() {
+    HelpWindow* help = m_window->showHelp(QStringLiteral("user-guide.md"));
+    const QString text = help->browser()->document()->toPlainText();
+    const qsizetype window = text.indexOf(QStringLiteral("\nThe window\n"));
+    QVERIFY(window > 0);
+    const QString start = text.left(window);
+    for (const QString& word : {QStringLiteral("Space"), QStringLiteral("1 to 4"),
+                                QStringLiteral("What am I looking at?")})
+        QVERIFY2(start.contains(word), qPrintable(word));
+    for (const QString& word :
+         {QStringLiteral("scripts/"), QStringLiteral("build/"), QStringLiteral("cmake")})
+        QVERIFY2(!start.contains(word), qPrintable(word));
+    QVERIFY(text.indexOf(QStringLiteral("scripts/run")) > window); // still in the guide
 }
 
 QTEST_MAIN(TestHelp)
