@@ -25,6 +25,8 @@ namespace {
 const QString kScaleKey = QStringLiteral("presentation/scale");
 // a text dock's width or height beyond its text: the panel's and the view's margins and frames
 constexpr int kTextChrome = 40;
+// from this window width [px] the note goes under the canvas, beside the plots
+constexpr int kNoteBelowWidth = 1600;
 } // namespace
 
 PresentationMode::PresentationMode(QMainWindow* window, SceneCanvas* canvas, PlotsPanel* plots,
@@ -121,10 +123,20 @@ void PresentationMode::fitDocks() {
     if (auto* plots = qobject_cast<QDockWidget*>(m_plots->parentWidget());
         plots && plots->isVisible() && !plots->isFloating())
         shown << plots;
+    // below 1600 px the plots need the bottom's width: the note stays beside the canvas
+    const bool below = width >= kNoteBelowWidth;
     for (const Conditional& c : m_conditional) {
         if (c.dock->isFloating())
             continue;
-        if (m_window->dockWidgetArea(c.dock) != Qt::BottomDockWidgetArea)
+        const Qt::DockWidgetArea area = m_window->dockWidgetArea(c.dock);
+        if (!below) {
+            if (area == Qt::BottomDockWidgetArea)
+                m_window->addDockWidget(Qt::RightDockWidgetArea, c.dock);
+            c.dock->setMaximumWidth(width / 4);
+            c.dock->setMinimumWidth(0);
+            continue;
+        }
+        if (area != Qt::BottomDockWidgetArea)
             m_window->addDockWidget(Qt::BottomDockWidgetArea, c.dock, Qt::Horizontal);
         int w = std::min(most, readableWidth(*c.dock));
         while (w < most && textHeight(*c.dock, w) > tallest)
