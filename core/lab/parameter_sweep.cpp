@@ -96,7 +96,7 @@ void curveMaxima(const ControlParams& params, const PathPiece& piece, std::array
 
 std::string numberText(double v) {
     char buf[32];
-    auto res = std::to_chars(buf, buf + sizeof buf, v);
+    auto res = std::to_chars(buf, buf + sizeof buf, v + 0.0); // -0 is written 0
     return std::string(buf, res.ptr);
 }
 

@@ -22,7 +22,8 @@ std::string csvText(std::span<const CsvColumn> columns, const std::vector<Motion
     for (const MotionSample& m : rows) {
         requireFiniteSample(m); // an InputError naming the column and the time
         for (std::size_t i = 0; i < columns.size(); ++i) {
-            const double value = columns[i].value(m);
+            // -0 is written 0: a spreadsheet reads "-0" as text
+            const double value = columns[i].value(m) + 0.0;
             char buf[32];
             auto res = std::to_chars(buf, buf + sizeof buf, value);
             if (i)

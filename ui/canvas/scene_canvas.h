@@ -254,6 +254,10 @@ class SceneCanvas : public QWidget {
     /// The box [px] of everything that moves drawn at time t, with the trails' vertices
     /// after time `from`.
     QRect movingBounds(const Solution& solution, const MotionSample& now, double from) const;
+    /// The vectors' scale bars in the corner of the drawing area the shown bodies cross least
+    /// over the run (the bottom right when none is crossed less): chosen again when the motion,
+    /// the zoom, the area or the view's place changes.
+    void placeScaleBars(const Solution& solution);
     void centreOnBody();
     /// The vertices of the current drawn path (empty unless it is a polyline).
     std::vector<std::pair<double, double>> drawnPoints() const;
@@ -292,6 +296,16 @@ class SceneCanvas : public QWidget {
     LayerCache m_layers;
     bool m_pathOverBodiesFromLayer = false;
     VectorLayer m_vectors;
+    struct ScaleBarsKey {
+        const Solution* solution = nullptr;
+        double scale = 0;
+        QRectF area;
+        QPointF cell; // the view's place, to a quarter of the area
+        QSize box;
+        bool vakonomic = false, openLoop = false, closedLoop = false;
+        bool operator==(const ScaleBarsKey&) const = default;
+    };
+    ScaleBarsKey m_scaleBarsKey;
     BodySprites m_bodies;
     mutable CanvasCurves m_curves;
     BodyClipShapes m_bodyClips;

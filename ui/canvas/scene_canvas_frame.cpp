@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <optional>
 
 // the canvas's moving layer, painted every frame over the static one: trails, bodies, arrows
@@ -127,6 +128,54 @@ QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& no
     return box.intersected(QRectF(rect()).adjusted(-4, -4, 4, 4))
         .toAlignedRect()
         .adjusted(-2, -2, 2, 2);
+}
+
+void SceneCanvas::placeScaleBars(const Solution& solution) {
+    const VectorOverlay& overlay = m_document->scene().vectors;
+    const QRectF area = drawingArea();
+    const QRect here = m_vectors.scaleBarsBounds(overlay, area, Qt::BottomRightCorner);
+    if (here.isEmpty())
+        return;
+    const QTransform world = worldTransform();
+    const ScaleBarsKey key{&solution,
+                           m_view.scale(),
+                           area,
+                           QPointF(std::floor(world.dx() * 4 / std::max(1.0, area.width())),
+                                   std::floor(world.dy() * 4 / std::max(1.0, area.height()))),
+                           here.size(),
+                           m_look.vakonomic,
+                           drawsOpenLoop(),
+                           drawsClosedLoop()};
+    if (key == m_scaleBarsKey)
+        return;
+    m_scaleBarsKey = key;
+    // the bodies at 49 times of the run against each corner's box
+    constexpr int kSamples = 48;
+    constexpr Qt::Corner kCorners[] = {Qt::BottomRightCorner, Qt::BottomLeftCorner,
+                                       Qt::TopRightCorner};
+    QRect boxes[3];
+    for (int c = 0; c < 3; ++c)
+        boxes[c] = m_vectors.scaleBarsBounds(overlay, area, kCorners[c]);
+    int crossed[3] = {};
+    const SystemSpec& spec = solution.scene().system;
+    const BodyLook look = bodyLook();
+    for (int k = 0; k <= kSamples; ++k) {
+        const MotionSample at = solution.at(solution.tEnd() * k / kSamples);
+        forEachShownPose(at, m_look.vakonomic, drawsOpenLoop(), drawsClosedLoop(),
+                         [&](double x, double y, double phi) {
+                             const QRectF body = BodySprites::pixelBounds(
+                                 world, m_view.scale(), spec, solution.system(), {x, y, phi}, look);
+                             for (int c = 0; c < 3; ++c)
+                                 crossed[c] += body.intersects(QRectF(boxes[c])) ? 1 : 0;
+                         });
+    }
+    const int best = int(std::min_element(std::begin(crossed), std::end(crossed)) - crossed);
+    if (kCorners[best] != m_vectors.barsCorner()) {
+        const QRect left = m_vectors.scaleBarsBounds(overlay, area);
+        m_vectors.setBarsCorner(kCorners[best]);
+        // the corner they leave, and the one they take where this paint does not reach
+        update(QRegion(left) + m_vectors.scaleBarsBounds(overlay, area));
+    }
 }
 
 void SceneCanvas::updateTrailLayer(const MotionSample& now, const QPixmap& base, QPoint origin) {
@@ -280,9 +329,11 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
             m_bodies.paint(p, world, m_view.scale(), spec, solution->system(), body->pose,
                            body->colour, body->ghost, look);
         paintPathOverBodies(p, *now);
-        p.restore();
+        // the arrows end at the scene's edge, never over the legend under it
+        placeScaleBars(*solution);
         m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform(),
                         m_view.scale(), drawingArea(), e->region());
+        p.restore();
         // where the bodies out of view went
         m_edgeMarkers = edgeMarkersAt(*now);
         paintEdgeMarkers(p, m_edgeMarkers, edgeMarkerFont(), m_look.style.lineScale);

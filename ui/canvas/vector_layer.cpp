@@ -18,18 +18,44 @@ constexpr double kLargestTurn = 1.5 * std::numbers::pi; // the largest couple's 
 
 constexpr double kLabelPx = 48; // room for an arrowhead's label and its pen around a shape
 
-// the bottom right of the drawing area, clear of the legend under it
-QPointF scaleBarsCorner(const QRectF& area, double lineScale) {
-    return area.bottomRight() - lineScale * QPointF(14, 14);
+// the box's size around rows of scale bars: a row of 18 px each (times lineScale), its bar at
+// most 6 + 2 x 80 px left of the texts' column (paintScaleBars)
+QSizeF scaleBarsSize(int rows, int textWidth, double lineScale) {
+    const double s = lineScale;
+    return {textWidth + 212 * s, 18.0 * s * rows + 24 * s};
 }
 
-// a box around the scale bars stacked up from corner: a row of 18 px each (times lineScale),
-// its bar at most 6 + 2 x 80 px left of the texts' column (paintScaleBars)
+// the bottom right of the rows (paintScaleBars draws them up and left from it) in a corner of
+// the drawing area: clear of the legend under it, and at the top clear of the time read-out's
+// band and the canvas's own scale bar
+QPointF scaleBarsCorner(const QRectF& area, Qt::Corner corner, int rows, int textWidth,
+                        double lineScale) {
+    const double s = lineScale;
+    const QSizeF size = scaleBarsSize(rows, textWidth, s);
+    const double right = corner == Qt::TopLeftCorner || corner == Qt::BottomLeftCorner
+                             ? area.left() + 2 * s + size.width() - 12 * s
+                             : area.right() - 14 * s;
+    const double bottom = corner == Qt::TopLeftCorner || corner == Qt::TopRightCorner
+                              ? area.top() + 44 * s + size.height() - 12 * s
+                              : area.bottom() - 14 * s;
+    return {right, bottom};
+}
+
+// the box around the scale bars whose rows end at corner
 QRect scaleBarsBox(QPointF corner, int rows, int textWidth, double lineScale) {
     const double s = lineScale;
-    return QRectF(corner - QPointF(textWidth + 200 * s, 18.0 * s * rows + 12 * s),
+    return QRectF(corner + QPointF(12 * s, 12 * s) -
+                      QPointF(scaleBarsSize(rows, textWidth, s).width(),
+                              scaleBarsSize(rows, textWidth, s).height()),
                   corner + QPointF(12 * s, 12 * s))
         .toAlignedRect();
+}
+
+int shownRows(const VectorOverlay& overlay) {
+    int rows = 0;
+    for (int i = 0; i < kVectorKinds; ++i)
+        rows += (overlay.*vectorToggle(VectorKind(i))).shown ? 1 : 0;
+    return rows;
 }
 
 double extentOf(const Solution& s) {
@@ -112,17 +138,22 @@ void VectorLayer::paint(QPainter& p, const std::shared_ptr<const Solution>& solu
     m_barsText = scaleBarsTextWidth(barsFont, overlay, k, pixelsPerMetre);
     // the scale bars stay put: a frame that repaints what moves need not draw them
     if (repainted.intersects(scaleBarsBounds(overlay, area)))
-        paintScaleBars(p, overlay, k, pixelsPerMetre, scaleBarsCorner(area, m_lineScale),
-                       m_lineScale);
+        paintScaleBars(
+            p, overlay, k, pixelsPerMetre,
+            scaleBarsCorner(area, m_barsCorner, shownRows(overlay), m_barsText, m_lineScale),
+            m_lineScale);
 }
 
 QRect VectorLayer::scaleBarsBounds(const VectorOverlay& overlay, const QRectF& area) const {
-    int rows = 0;
-    for (int i = 0; i < kVectorKinds; ++i)
-        rows += (overlay.*vectorToggle(VectorKind(i))).shown ? 1 : 0;
-    return rows > 0
-               ? scaleBarsBox(scaleBarsCorner(area, m_lineScale), rows, m_barsText, m_lineScale)
-               : QRect();
+    return scaleBarsBounds(overlay, area, m_barsCorner);
+}
+
+QRect VectorLayer::scaleBarsBounds(const VectorOverlay& overlay, const QRectF& area,
+                                   Qt::Corner corner) const {
+    const int rows = shownRows(overlay);
+    return rows > 0 ? scaleBarsBox(scaleBarsCorner(area, corner, rows, m_barsText, m_lineScale),
+                                   rows, m_barsText, m_lineScale)
+                    : QRect();
 }
 
 QRectF VectorLayer::bounds(const std::shared_ptr<const Solution>& solution,

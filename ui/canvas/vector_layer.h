@@ -28,6 +28,13 @@ class VectorLayer {
 
     /// The box [px] of the scale bars paint draws in the corner of area (empty when none).
     QRect scaleBarsBounds(const VectorOverlay& overlay, const QRectF& area) const;
+    /// The box [px] they would take in another corner of area.
+    QRect scaleBarsBounds(const VectorOverlay& overlay, const QRectF& area,
+                          Qt::Corner corner) const;
+    /// The corner of the drawing area the scale bars are drawn in (the bottom right at first;
+    /// the canvas moves them off the bodies' way).
+    void setBarsCorner(Qt::Corner corner) { m_barsCorner = corner; }
+    Qt::Corner barsCorner() const { return m_barsCorner; }
 
     /// The effective scales (the scene's, else automatic) for a solution.
     VectorScales scales(const std::shared_ptr<const Solution>& solution,
@@ -55,6 +62,7 @@ class VectorLayer {
     std::vector<QRectF> m_labels;
     int m_barsText = 104; // the scale bars' text column [px] (scaleBarsTextWidth)
     double m_lineScale = 1;
+    Qt::Corner m_barsCorner = Qt::BottomRightCorner;
 };
 
 } // namespace chaplygin::ui

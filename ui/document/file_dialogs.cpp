@@ -86,9 +86,9 @@ QString lastFolder(const QString& purpose) {
     const QString dir = settings.value(QStringLiteral("dialogs/") + purpose).toString();
     if (!dir.isEmpty() && QFileInfo(dir).isDir())
         return dir;
-    // a folder moved or deleted since is never proposed: the last one used for anything instead
+    // a kind not used yet, or its folder moved or deleted since: the last one used for anything
     const QString last = settings.value(QStringLiteral("dialogs/last")).toString();
-    if (!dir.isEmpty() && !last.isEmpty() && QFileInfo(last).isDir())
+    if (!last.isEmpty() && QFileInfo(last).isDir())
         return last;
     const QString docs = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
     return !docs.isEmpty() && QFileInfo(docs).isDir() ? docs : QDir::homePath();

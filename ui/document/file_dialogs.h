@@ -20,8 +20,9 @@ QString withFilterExtension(const QString& path, const QString& selectedFilter);
 /// ("graph-sin", "parametric", "drawn"); letters, digits, '-' and '_' only.
 QString sceneFileStem(const Scene& scene, const QString& fileName = {});
 
-/// A folder that exists: the one last used for purpose (QSettings "dialogs/<purpose>"); when that
-/// one is gone, the last one used for any purpose; else the documents folder, else home.
+/// A folder that exists: the one last used for purpose (QSettings "dialogs/<purpose>"); when
+/// there is none or it is gone, the last one used for any purpose; else the documents folder,
+/// else home.
 QString lastFolder(const QString& purpose);
 void rememberFolder(const QString& purpose, const QString& fileOrFolder);
 

@@ -2,9 +2,9 @@
 
 #include "common/atomic_file.h"
 #include "common/input_error.h"
-#include "document/plot_series.h"
 #include "scene/csv_writer.h"
 #include "scene/scene_json.h"
+#include "scene/summary_json.h"
 
 #include <QCoreApplication>
 #include <QFileInfo>
@@ -35,10 +35,16 @@ void saveSceneFile(const QString& path, const Scene& scene) {
     writeFileAtomically(path.toStdString(), sceneToJson(scene));
 }
 
+QString csvSummaryPath(const QString& csvPath) {
+    QString stem = csvPath;
+    if (stem.endsWith(QStringLiteral(".csv"), Qt::CaseInsensitive))
+        stem.chop(4);
+    return stem + QStringLiteral(".summary.json");
+}
+
 void exportCsvFile(const QString& path, const Solution& solution, int rows) {
-    std::string text = "# Chaplygin Lab: " + sceneCaption(solution).toStdString() + "\n";
-    text += formatCsv(solution.sample(rows));
-    writeFileAtomically(path.toStdString(), text);
+    writeFileAtomically(path.toStdString(), formatCsv(solution.sample(rows)));
+    writeFileAtomically(csvSummaryPath(path).toStdString(), formatSummary(solution));
 }
 
 QStringList recentFiles() {

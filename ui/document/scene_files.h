@@ -15,9 +15,12 @@ Scene openSceneFile(const QString& path);
 /// Throws IoError.
 void saveSceneFile(const QString& path, const Scene& scene);
 
-/// File > Export CSV: samples rows evenly on [0, t_end] in the CLI's columns, after one comment
-/// line "# Chaplygin Lab: <parameters>". Written atomically; throws IoError.
+/// File > Export CSV: samples rows evenly on [0, t_end] in the CLI's columns (one header row),
+/// and the run's parameters and methods as the CLI's --summary JSON beside it
+/// (csvSummaryPath). Each written atomically; throws IoError.
 void exportCsvFile(const QString& path, const Solution& solution, int rows = 501);
+/// The summary beside a CSV: "run.csv" -> "run.summary.json".
+QString csvSummaryPath(const QString& csvPath);
 
 /// The recent-files list kept in QSettings (most recent first, at most 8).
 QStringList recentFiles();

@@ -14,9 +14,11 @@
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QStyle>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <exception>
 
 namespace chaplygin::ui {
@@ -61,8 +63,12 @@ MethodsPanel::MethodsPanel(SceneDocument* document, QWidget* parent)
     m_table->setHorizontalHeaderLabels(
         {tr("problem"), tr("chosen method"), tr("error [m]"), tr("s/solve"), tr("Pareto")});
     m_table->verticalHeader()->hide();
+    // the short columns as wide as their titles and cells; the method's name takes what is left
+    // and is elided, whole in its tooltip
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
+    m_table->setTextElideMode(Qt::ElideRight);
+    m_table->setWordWrap(false);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
     m_table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
@@ -70,6 +76,7 @@ MethodsPanel::MethodsPanel(SceneDocument* document, QWidget* parent)
     m_table->setSizeAdjustPolicy(QAbstractScrollArea::AdjustToContents);
     m_table->setMaximumHeight(m_table->horizontalHeader()->sizeHint().height() * 4);
     m_table->setTabKeyNavigation(false); // Tab leaves the table
+    fitColumns();
     m_plotMenu = installPlotExportMenu(
         m_plot, [] { return QStringLiteral("work_precision"); },
         [this](const QString& error) { m_status->setText(error); });
@@ -103,6 +110,24 @@ MethodsPanel::MethodsPanel(SceneDocument* document, QWidget* parent)
     connect(m_runner, &JobRunner::progress, this, &MethodsPanel::onProgress);
     connect(m_runner, &JobRunner::finished, this, &MethodsPanel::onFinished);
     connect(m_document, &SceneDocument::solutionChanged, this, &MethodsPanel::onSceneChanged);
+}
+
+// the table never narrower than its short columns and the method column's title
+void MethodsPanel::fitColumns() {
+    QHeaderView* header = m_table->horizontalHeader();
+    const int padding = 2 * m_table->style()->pixelMetric(QStyle::PM_FocusFrameHMargin) + 8;
+    int width = 2 * m_table->frameWidth();
+    for (int c = 0; c < m_table->columnCount(); ++c) {
+        const QString title = m_table->horizontalHeaderItem(c)->text();
+        int column = c == 1 ? header->fontMetrics().horizontalAdvance(title) + 2 * padding
+                            : header->sectionSizeHint(c);
+        for (int r = 0; c != 1 && r < m_table->rowCount(); ++r)
+            if (const QTableWidgetItem* item = m_table->item(r, c))
+                column = std::max(column,
+                                  m_table->fontMetrics().horizontalAdvance(item->text()) + padding);
+        width += column;
+    }
+    m_table->setMinimumWidth(width);
 }
 
 MethodsPanel::~MethodsPanel() {
@@ -248,8 +273,11 @@ void MethodsPanel::showReport(const WorkPrecisionReport& report) {
                                    front ? tr("yes") : tr("no")};
         for (int c = 0; c < cells.size(); ++c)
             m_table->setItem(row, c, new QTableWidgetItem(cells[c]));
-        m_table->item(row, 1)->setToolTip(QString::fromStdString(r.method)); // the registry's id
+        // the whole name and the registry's id
+        m_table->item(row, 1)->setToolTip(cells[1] + QStringLiteral("\n") +
+                                          QString::fromStdString(r.method));
     }
+    fitColumns();
     // the references by their plain names; the registry's ids in the tooltip
     QString controlled = plainMethodName(report.controlledReferenceMethod);
     if (report.controlledReferenceTightest)
@@ -260,10 +288,9 @@ void MethodsPanel::showReport(const WorkPrecisionReport& report) {
     m_references->setText(tr("<b>References</b><br>controlled: %1<br>free: %2")
                               .arg(controlled.toHtmlEscaped(),
                                    plainMethodName(report.freeReferenceMethod).toHtmlEscaped()));
-    m_references->setToolTip(
-        tr("controlled: %1\nfree: %2")
-            .arg(QString::fromStdString(report.controlledReferenceMethod),
-                 QString::fromStdString(report.freeReferenceMethod)));
+    m_references->setToolTip(tr("controlled: %1\nfree: %2")
+                                 .arg(QString::fromStdString(report.controlledReferenceMethod),
+                                      QString::fromStdString(report.freeReferenceMethod)));
     QString summary = tr("%1 configurations; horizons %2 s (controlled), %3 s (free).")
                           .arg(report.rows.size())
                           .arg(number(report.controlledEnd), number(report.freeEnd));

@@ -63,6 +63,7 @@ class MethodsPanel : public QWidget {
     };
     void onProgress(int done, int total);
     void onFinished();
+    void fitColumns();
     void onSceneChanged();
     void showReport(const WorkPrecisionReport& report);
     void clearReport();

@@ -48,6 +48,9 @@ NotesPanel::NotesPanel(QWidget* parent) : QWidget(parent) {
 
 void NotesPanel::setPresenting(bool on) {
     m_hint->setVisible(!on);
+    if (on)
+        setEditing(false);
+    m_edit->setVisible(!on);
 }
 
 bool NotesPanel::hintShown() const {

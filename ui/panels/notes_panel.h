@@ -23,8 +23,8 @@ class NotesPanel : public QWidget {
     double fontScale() const { return m_scale; }
     void setEditing(bool on);
     bool editing() const;
-    /// Presenting: the note alone, without the editing hint above it (a lecture hall reads the
-    /// note; the Edit button stays).
+    /// Presenting: the note alone, without the editing hint and the Edit button above it (a
+    /// lecture hall reads the note).
     void setPresenting(bool on);
     bool hintShown() const;
 

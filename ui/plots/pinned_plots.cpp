@@ -38,18 +38,20 @@ QCPLegend* legendOf(QCustomPlot& plot, QCPAxisRect* rect) {
 
 } // namespace
 
-void addPinnedSeries(QCustomPlot& plot, PlotKind kind, PinSet& pins) {
+void addPinnedSeries(QCustomPlot& plot, PlotKind kind, PinSet& pins,
+                     const QList<PlotSeries>* exact) {
     if (plot.axisRectCount() == 0 || pins.count() == 0)
         return;
     QCPAxisRect* rect = plot.axisRect();
     QCPLegend* legend = legendOf(plot, rect);
     for (int i = 0; i < pins.count(); ++i) {
         const PinSet::Run& run = pins.run(i);
-        const QVector<double>* values = valuesOf(run.series, kind);
+        const PlotSeries& series = exact && i < exact->size() ? (*exact)[i] : run.series;
+        const QVector<double>* values = valuesOf(series, kind);
         if (!run.solution || !values)
             continue;
         QCPGraph* g = plot.addGraph(rect->axis(QCPAxis::atBottom), rect->axis(QCPAxis::atLeft));
-        g->setData(run.series.t, *values, true);
+        g->setData(series.t, *values, true);
         g->setName(pins.label(i)); // the canvas's key says "pin N: " before the same label
         QColor c = PinSet::color(i);
         c.setAlpha(170);

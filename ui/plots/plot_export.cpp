@@ -1,6 +1,7 @@
 #include "plots/plot_export.h"
 
 #include "common/atomic_file.h"
+#include "document/pin_set.h"
 #include "plots/pinned_plots.h"
 
 #include <qcustomplot.h>
@@ -55,6 +56,11 @@ void exportPlots(const Solution& solution, const QString& dir, const QStringList
     if (!QDir().mkpath(dir))
         throw IoError("cannot create the plot directory '" + dir.toStdString() + "'");
     PlotSeries series = collectSeries(solution, 800, 800);
+    // the pinned runs as smooth as the run itself: sampled evenly, not at the path's nodes
+    QList<PlotSeries> pinned;
+    for (int i = 0; pins && i < pins->count(); ++i)
+        pinned << (pins->run(i).solution ? collectSeries(*pins->run(i).solution, 2, 800)
+                                         : PlotSeries{});
     QString caption = sceneCaption(solution);
     QList<PlotKind> kinds{PlotKind::Psi,    PlotKind::Chi,        PlotKind::Lambda,
                           PlotKind::Energy, PlotKind::Trajectory, PlotKind::PaperFigure};
@@ -66,7 +72,7 @@ void exportPlots(const Solution& solution, const QString& dir, const QStringList
         const bool timePlot = kind == PlotKind::Psi || kind == PlotKind::Chi ||
                               kind == PlotKind::Lambda || kind == PlotKind::Energy;
         if (pins && timePlot) // what the Plots dock shows
-            addPinnedSeries(plot, kind, *pins);
+            addPinnedSeries(plot, kind, *pins, &pinned);
         addCaption(plot, caption);
         QCPLayoutGrid* grid = plot.plotLayout();
         grid->insertRow(0);

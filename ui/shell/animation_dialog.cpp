@@ -15,10 +15,41 @@
 #include <QLineEdit>
 #include <QProgressDialog>
 #include <QPushButton>
+#include <QSettings>
 
 #include <exception>
 
 namespace chaplygin::ui {
+
+namespace {
+// what the exporter takes
+constexpr int kMinFps = 1, kMaxFps = 120;
+constexpr int kMinSide = 64, kMaxWidth = 7680, kMaxHeight = 4320;
+const QString kFpsKey = QStringLiteral("animation/fps");
+const QString kSizeKey = QStringLiteral("animation/size");
+const QString kPlotsKey = QStringLiteral("animation/withPlots");
+} // namespace
+
+AnimationSettings AnimationDialog::remembered(AnimationSettings defaults) {
+    QSettings settings;
+    const int fps = settings.value(kFpsKey).toInt();
+    if (fps >= kMinFps && fps <= kMaxFps)
+        defaults.fps = fps;
+    const QSize size = settings.value(kSizeKey).toSize();
+    if (size.width() >= kMinSide && size.width() <= kMaxWidth && size.height() >= kMinSide &&
+        size.height() <= kMaxHeight)
+        defaults.size = size;
+    if (settings.contains(kPlotsKey))
+        defaults.withPlots = settings.value(kPlotsKey).toBool();
+    return defaults;
+}
+
+void AnimationDialog::remember(const AnimationSettings& chosen) {
+    QSettings settings;
+    settings.setValue(kFpsKey, chosen.fps);
+    settings.setValue(kSizeKey, chosen.size);
+    settings.setValue(kPlotsKey, chosen.withPlots);
+}
 
 AnimationDialog::AnimationDialog(const AnimationSettings& initial, QWidget* parent)
     : QDialog(parent) {
@@ -39,10 +70,10 @@ AnimationDialog::AnimationDialog(const AnimationSettings& initial, QWidget* pare
         field->setValue(value);
         return field;
     };
-    m_fps = wholeNumber(tr("Frame rate"), 1, 120, initial.fps);
+    m_fps = wholeNumber(tr("Frame rate"), kMinFps, kMaxFps, initial.fps);
     m_fps->setUnit(tr("fps"));
-    m_width = wholeNumber(tr("width"), 64, 7680, initial.size.width());
-    m_height = wholeNumber(tr("height"), 64, 4320, initial.size.height());
+    m_width = wholeNumber(tr("width"), kMinSide, kMaxWidth, initial.size.width());
+    m_height = wholeNumber(tr("height"), kMinSide, kMaxHeight, initial.size.height());
     auto* sizeRow = new QHBoxLayout;
     sizeRow->addWidget(m_width);
     sizeRow->addWidget(new QLabel(QStringLiteral("\u00d7")));

@@ -20,6 +20,12 @@ class AnimationDialog : public QDialog {
     explicit AnimationDialog(const AnimationSettings& initial, QWidget* parent = nullptr);
     AnimationSettings settings() const;
 
+    /// defaults with the frame rate, size and "with plots" last exported (QSettings), where
+    /// there are such and they are within the dialog's bounds.
+    static AnimationSettings remembered(AnimationSettings defaults);
+    /// Keeps the frame rate, size and "with plots" of an export for the next dialog.
+    static void remember(const AnimationSettings& settings);
+
     QLineEdit* fileEdit() const { return m_file; }
     NumberField* fpsBox() const { return m_fps; }
     NumberField* widthBox() const { return m_width; }

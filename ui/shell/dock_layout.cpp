@@ -21,6 +21,8 @@ namespace {
 
 // narrower windows tab the right-hand docks on the left
 constexpr int kNarrow = 1200;
+// the dynamic property of a dock balanceDocks moved to the left
+constexpr const char* kMovedLeft = "movedLeftWhenNarrow";
 
 QDockWidget* makeDock(const QString& title, const QString& name, QWidget* content,
                       QMainWindow* parent) {
@@ -90,6 +92,7 @@ void balanceDocks(QMainWindow* window, const Docks& docks) {
                 continue;
             window->addDockWidget(Qt::LeftDockWidgetArea, dock);
             window->tabifyDockWidget(last, dock);
+            dock->setProperty(kMovedLeft, true);
             last = dock;
         }
         if (last != docks.parameters)
@@ -99,8 +102,43 @@ void balanceDocks(QMainWindow* window, const Docks& docks) {
     window->resizeDocks({docks.path}, {std::max(360, width / 4)}, Qt::Horizontal);
 }
 
+void returnRightDocks(QMainWindow* window, const Docks& docks) {
+    const QList<QDockWidget*> all = window->findChildren<QDockWidget*>();
+    QList<QDockWidget*> moving;
+    for (QDockWidget* dock : all) {
+        if (!dock->property(kMovedLeft).toBool())
+            continue;
+        dock->setProperty(kMovedLeft, false);
+        if (window->dockWidgetArea(dock) == Qt::LeftDockWidgetArea && !dock->isFloating())
+            moving << dock;
+    }
+    if (moving.isEmpty())
+        return;
+    // the left tab in front stays in front, unless it is one of those leaving
+    QDockWidget* front = docks.path;
+    for (QDockWidget* dock : all)
+        if (window->dockWidgetArea(dock) == Qt::LeftDockWidgetArea && !dock->isFloating() &&
+            dock->isVisible() && !dock->visibleRegion().isEmpty() && !moving.contains(dock))
+            front = dock;
+    for (QDockWidget* dock : moving) {
+        window->addDockWidget(Qt::RightDockWidgetArea, dock);
+        if (dock != moving.first())
+            window->tabifyDockWidget(moving.first(), dock);
+    }
+    moving.first()->raise();
+    front->raise();
+}
+
 int balancedPlotsHeight(int windowHeight) {
     return windowHeight < 900 ? std::max(200, windowHeight / 4) : windowHeight / 3;
+}
+
+int methodsDockHeight(int windowHeight) {
+    return std::max(360, windowHeight * 9 / 20);
+}
+
+int sweepDockHeight(int windowHeight) {
+    return std::max(300, windowHeight * 2 / 5);
 }
 
 DockBalancer::DockBalancer(QMainWindow* window, const Docks& docks, bool balanceWhenShown,
@@ -109,6 +147,26 @@ DockBalancer::DockBalancer(QMainWindow* window, const Docks& docks, bool balance
       m_defaultLayout(defaultLayout) {
     window->installEventFilter(this);
     connect(docks.plots, &QDockWidget::visibilityChanged, this, &DockBalancer::plotsShown);
+    growWhenShown(docks.methods, methodsDockHeight);
+    growWhenShown(docks.sweep, sweepDockHeight);
+}
+
+// a bottom tab brought to the front (its tab clicked, its menu entry) gets its height
+void DockBalancer::growWhenShown(QDockWidget* dock, int (*height)(int windowHeight)) {
+    connect(dock, &QDockWidget::visibilityChanged, this, [this, dock, height](bool visible) {
+        if (!visible || !m_window->isVisible() || dock->isFloating() ||
+            m_window->dockWidgetArea(dock) != Qt::BottomDockWidgetArea)
+            return;
+        // after the tab switch has laid out the dock
+        QMetaObject::invokeMethod(
+            this,
+            [this, dock, height] {
+                const int target = height(m_window->height());
+                if (dock->isVisible() && dock->height() < target - 4)
+                    m_window->resizeDocks({dock}, {target}, Qt::Vertical);
+            },
+            Qt::QueuedConnection);
+    });
 }
 
 void DockBalancer::plotsShown(bool visible) {
@@ -148,14 +206,18 @@ void DockBalancer::resetLayout() {
 
 bool DockBalancer::eventFilter(QObject* watched, QEvent* event) {
     if (watched == m_window && event->type() == QEvent::Show) {
-        // a restored layout may start with another tab in front of the plots
+        // a restored layout may start with another tab in front of the plots: the plots come
+        // forward on the first show (the Sweep and Methods docks start empty)
         QMetaObject::invokeMethod(
             this,
-            [this] {
+            [this, first = !m_shown] {
+                if (first && m_docks.plots->toggleViewAction()->isChecked())
+                    m_docks.plots->raise();
                 m_behind = m_behind || (m_docks.plots->toggleViewAction()->isChecked() &&
                                         !m_docks.plots->isVisible());
             },
             Qt::QueuedConnection);
+        m_shown = true;
         if (m_balanceWhenShown) {
             m_balanceWhenShown = false;
             balanceLater();
@@ -168,6 +230,9 @@ bool DockBalancer::eventFilter(QObject* watched, QEvent* event) {
         auto* resize = static_cast<QResizeEvent*>(event);
         if (resize->oldSize().width() >= kNarrow && resize->size().width() < kNarrow)
             balanceLater();
+        else if (resize->oldSize().width() < kNarrow && resize->size().width() >= kNarrow)
+            QMetaObject::invokeMethod(
+                this, [this] { returnRightDocks(m_window, m_docks); }, Qt::QueuedConnection);
     }
     return false;
 }

@@ -8,6 +8,7 @@
 #include <QPainter>
 #include <QPainterPath>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSettings>
 #include <QTextDocument>
 #include <QVBoxLayout>
@@ -163,8 +164,24 @@ IntroductionWindow::IntroductionWindow(bool useSettings, QWidget* parent) : QDia
     setObjectName(QStringLiteral("introductionWindow"));
     setWindowTitle(tr("What am I looking at?"));
     setAttribute(Qt::WA_DeleteOnClose);
-    m_html =
-        tr("<p>A <b>body</b> (a sleigh, a rolling disk or a two-wheeled carriage) rests on a "
+    // the screen first, in plain words; then the physics
+    m_html = tr("<p><b>On the screen.</b> The big picture in the middle is the "
+                "<b>canvas</b>: the <b>path</b> is the broad band, red where it turns right, "
+                "grey where it runs straight and blue where it turns left, from its dot (the "
+                "start) to its square (the end). The solid dark blue body follows it and leaves "
+                "a trail; the dashed red ghost and the dash-dotted purple body start with it "
+                "and go their own ways. The legend under the canvas names each line.</p>"
+                "<p>The <b>four plots</b> below show, against time, the control angle \u03a8, "
+                "the angle \u03c7 the control turns, how hard it turns it (\u03bb) and the "
+                "kinetic energy T. The <b>green line</b> in each plot is the moment the canvas "
+                "shows; click a plot to go to that moment.</p>"
+                "<p><b>To play</b>, press <b>Space</b> or the play button at the bottom; drag "
+                "the slider beside it to move through time, <b>Home</b> goes back to the start. "
+                "The keys <b>1</b> to <b>4</b> load the paper's four examples, <b>Page Down</b> "
+                "the gallery's next scene; <b>Ctrl+Z</b> takes any of them back.</p>");
+    m_html +=
+        tr("<p><b>The physics.</b> A <b>body</b> (a sleigh, a rolling disk or a two-wheeled "
+           "carriage) rests on a "
            "knife edge at <b>P</b>: P moves only along the body's heading \u03c6, never sideways. "
            "A control inside the body steers it so that P follows the <b>path</b>.</p>"
            "<p><b>\u03a8</b>, the control angle, splits the body's energy between driving and "
@@ -201,11 +218,17 @@ IntroductionWindow::IntroductionWindow(bool useSettings, QWidget* parent) : QDia
     auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::close);
     auto* layout = new QVBoxLayout(this);
-    layout->addWidget(new BodyDiagram, 1);
-    layout->addWidget(text);
+    layout->addWidget(new BodyDiagram, 2);
+    // the text scrolls when the screen is too low for all of it
+    auto* scroll = new QScrollArea;
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    scroll->setWidget(text);
+    layout->addWidget(scroll, 3);
     layout->addWidget(m_dismiss);
     layout->addWidget(buttons);
-    resize(560, 620);
+    resize(600, 900); // within the screen's free area (placeOnScreen)
 }
 
 bool IntroductionWindow::dueAtStart(const QSettings& settings) {

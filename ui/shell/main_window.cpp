@@ -146,6 +146,9 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
 
     if (!m_useSettings)
         resize(1280, 800);
+    // the path and the plots in front of their tabs (the docks installed since took the front)
+    m_docks.path->raise();
+    m_docks.plots->raise();
     const QByteArray defaultLayout = saveState();
     const bool firstStart = !m_useSettings || !restoreWindowLayout(this);
     if (firstStart)
@@ -180,14 +183,22 @@ void MainWindow::balanceDocks() {
     chaplygin::ui::balanceDocks(this, m_docks);
 }
 
+void MainWindow::showPlotsInFront() {
+    if (m_docks.plots->toggleViewAction()->isChecked())
+        m_docks.plots->raise();
+}
+
 void MainWindow::showParametersDock() {
     bringDockForward(this, m_docks.parameters);
 }
 
 IntroductionWindow* MainWindow::showIntroduction() {
-    if (!m_intro)
+    const bool first = !m_intro;
+    if (first)
         m_intro = new IntroductionWindow(m_useSettings, this);
     m_intro->show();
+    if (first) // shown, its frame is known
+        placeOnScreen(m_intro, m_intro->size(), this);
     m_intro->raise();
     m_intro->activateWindow();
     return m_intro;
@@ -317,7 +328,7 @@ void MainWindow::onSolutionChanged() {
 
 void MainWindow::showMethodsDock() {
     // the diagram's legends need about half the height
-    bringDockForward(this, m_docks.methods, std::max(360, height() * 9 / 20));
+    bringDockForward(this, m_docks.methods, methodsDockHeight(height()));
 }
 
 bool MainWindow::loadGalleryEntry(const QString& name) {
@@ -390,6 +401,8 @@ bool MainWindow::openFile(const QString& path) {
         showFileError(QString::fromStdString(e.what()));
         return false;
     }
+    rememberFolder(QStringLiteral("scene"), path); // opened from the recent list or a command line
+    showPlotsInFront(); // the Sweep and Methods docks are empty for a scene just opened
     m_playback->seek(0);
     m_canvas->fitScene();
     return true;
@@ -426,8 +439,10 @@ bool MainWindow::exportCsvTo(const QString& path) {
         showFileError(QString::fromStdString(e.what()));
         return false;
     }
-    m_exportReport->report(tr("CSV written to %1").arg(QDir::toNativeSeparators(path)),
-                           QFileInfo(path).absolutePath());
+    m_exportReport->report(
+        tr("CSV written to %1, its parameters to %2")
+            .arg(QDir::toNativeSeparators(path), QFileInfo(csvSummaryPath(path)).fileName()),
+        QFileInfo(path).absolutePath());
     return true;
 }
 
@@ -465,7 +480,7 @@ void MainWindow::exportCsvDialog() {
 }
 
 void MainWindow::showSweepDock() {
-    bringDockForward(this, m_docks.sweep, std::max(300, height() * 2 / 5));
+    bringDockForward(this, m_docks.sweep, sweepDockHeight(height()));
 }
 
 void MainWindow::exportAnimationDialog() {
@@ -476,10 +491,11 @@ void MainWindow::exportAnimationDialog() {
         sceneFileStem(m_document->scene(), m_document->fileName()) +
         (findFfmpeg().isEmpty() ? QStringLiteral("-frames/") : QStringLiteral(".mp4"));
     initial.file = QDir(lastFolder(QStringLiteral("animation"))).filePath(clip);
-    AnimationDialog dialog(initial, this);
+    AnimationDialog dialog(AnimationDialog::remembered(initial), this);
     if (dialog.exec() != QDialog::Accepted)
         return;
     AnimationSettings chosen = dialog.settings();
+    AnimationDialog::remember(chosen);
     chosen.look = m_canvas->look();          // the clip shows what the screen shows
     if (QFileInfo(chosen.file).isRelative()) // a typed name goes beside the proposed one
         chosen.file = QDir(lastFolder(QStringLiteral("animation"))).filePath(chosen.file);

@@ -163,6 +163,8 @@ class MainWindow : public QMainWindow {
     bool saveDialog(bool askName);
     void exportPlotsDialog();
     void exportCsvDialog();
+    /// The Plots dock in front of its tabs, when it is open.
+    void showPlotsInFront();
     void showFileError(const QString& message);
     void updateTitle();
     /// A new scene starts at t = 0, paused or playing (playNewScenesAction).

@@ -8,6 +8,7 @@
 #include "scene/presets.h"
 #include "shell/help_window.h"
 #include "shell/timeline_bar.h"
+#include "shell/window_layout.h"
 #include "version.h"
 
 #include <QApplication>
@@ -31,11 +32,14 @@ QString MainWindow::aboutText() {
 }
 
 HelpWindow* MainWindow::showHelp(const QString& document, const QString& section) {
-    if (!m_help)
+    const bool first = !m_help;
+    if (first)
         m_help = new HelpWindow(this);
     if (!document.isEmpty())
         m_help->showTopic(document, section);
     m_help->show();
+    if (first) // shown, its frame is known
+        placeOnScreen(m_help, m_help->size(), this);
     m_help->raise();
     return m_help;
 }

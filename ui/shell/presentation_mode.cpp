@@ -11,16 +11,23 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
+#include <QTextBrowser>
+#include <QTextDocument>
 #include <QToolBar>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace chaplygin::ui {
 
 namespace {
 const QString kScaleKey = QStringLiteral("presentation/scale");
-}
+// a text dock's width or height beyond its text: the panel's and the view's margins and frames
+constexpr int kTextChrome = 40;
+// from this window width [px] the note goes under the canvas, beside the plots
+constexpr int kNoteBelowWidth = 1600;
+} // namespace
 
 PresentationMode::PresentationMode(QMainWindow* window, SceneCanvas* canvas, PlotsPanel* plots,
                                    QList<QDockWidget*> hidden, QList<QToolBar*> toolBars)
@@ -54,6 +61,7 @@ void PresentationMode::setScale(double factor) {
         f.setPointSizeF(m_savedFont.pointSizeF() * m_scale);
         m_window->setFont(f);
         applyStyle();
+        fitDocks(); // the note's lines in the new font
     }
 }
 
@@ -95,21 +103,81 @@ void PresentationMode::updateDocks() {
         dock->hide();
     for (const Conditional& c : m_conditional)
         c.dock->setVisible(c.needed());
+    // the next scene's note, once it is laid out
+    QMetaObject::invokeMethod(this, &PresentationMode::fitDocks, Qt::QueuedConnection);
 }
 
 void PresentationMode::fitDocks() {
     if (!m_active)
         return;
+    const int width = m_window->width(), height = m_window->height();
+    // a dock shown with the scene (its note) goes under the canvas, beside the plots: as a column
+    // beside the canvas it took the canvas's width (180 px, the note needed scrolling, or more
+    // than a quarter of a 1024 px projector). It is as wide as lines of about 66 characters, wider
+    // when a long note would not fit, within a quarter of the width up to 1280 px and two fifths
+    // from 1920 px; the bottom docks as tall as the note, within a third of the height
+    const double share = 0.25 + 0.15 * std::clamp((width - 1280) / 640.0, 0.0, 1.0);
+    const int most = int(width * share), tallest = height / 3;
+    int bottom = std::max(height / 4, 240);
+    QList<QDockWidget*> shown;
     if (auto* plots = qobject_cast<QDockWidget*>(m_plots->parentWidget());
-        plots && plots->isVisible())
-        m_window->resizeDocks({plots}, {std::max(m_window->height() / 4, 240)}, Qt::Vertical);
-    // a dock kept beside the canvas (the scene's note) takes at most a quarter of the width:
-    // on a 1024 px projector it took over a third (a bound, which holds whenever it is laid out)
+        plots && plots->isVisible() && !plots->isFloating())
+        shown << plots;
+    // below 1600 px the plots need the bottom's width: the note stays beside the canvas
+    const bool below = width >= kNoteBelowWidth;
     for (const Conditional& c : m_conditional) {
+        if (c.dock->isFloating())
+            continue;
         const Qt::DockWidgetArea area = m_window->dockWidgetArea(c.dock);
-        if (area == Qt::LeftDockWidgetArea || area == Qt::RightDockWidgetArea)
-            c.dock->setMaximumWidth(m_window->width() / 4);
+        if (!below) {
+            if (area == Qt::BottomDockWidgetArea)
+                m_window->addDockWidget(Qt::RightDockWidgetArea, c.dock);
+            c.dock->setMaximumWidth(width / 4);
+            c.dock->setMinimumWidth(0);
+            continue;
+        }
+        if (area != Qt::BottomDockWidgetArea)
+            m_window->addDockWidget(Qt::BottomDockWidgetArea, c.dock, Qt::Horizontal);
+        int w = std::min(most, readableWidth(*c.dock));
+        while (w < most && textHeight(*c.dock, w) > tallest)
+            w = std::min(most, w + 20);
+        // bounds, which hold whenever it is laid out (resizeDocks leaves a tabbed dock alone)
+        c.dock->setMaximumWidth(most);
+        c.dock->setMinimumWidth(w);
+        if (c.dock->isVisible()) {
+            bottom = std::max(bottom, std::min(tallest, textHeight(*c.dock, w)));
+            shown << c.dock;
+        }
     }
+    if (!shown.isEmpty())
+        m_window->resizeDocks(shown, QList<int>(shown.size(), bottom), Qt::Vertical);
+}
+
+int PresentationMode::readableWidth(const QWidget& dock) {
+    // a line of prose of 66 characters in the dock's font, its margins and a scroll bar
+    static const QString line =
+        QStringLiteral("the knife's heading turns smoothly while the sleigh slows to a stop");
+    return QFontMetrics(dock.font()).horizontalAdvance(line) * 66 / int(line.size()) + kTextChrome +
+           dock.style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+}
+
+int PresentationMode::textHeight(const QWidget& dock, int width) {
+    const auto* view = dock.findChild<QTextBrowser*>();
+    if (!view)
+        return 0;
+    // what the dock adds around the text: measured once it is laid out
+    int aroundWidth = kTextChrome + dock.style()->pixelMetric(QStyle::PM_ScrollBarExtent);
+    int aroundHeight = kTextChrome + QFontMetrics(dock.font()).height();
+    if (view->isVisible() && view->viewport()->width() > 0) {
+        aroundWidth = std::max(aroundWidth, dock.width() - view->viewport()->width());
+        aroundHeight = std::max(aroundHeight, dock.height() - view->viewport()->height());
+    }
+    std::unique_ptr<QTextDocument> text(view->document()->clone());
+    text->setDefaultFont(view->document()->defaultFont());
+    text->setTextWidth(width - aroundWidth);
+    // and half a line to spare: the view lays its text out a pixel or two apart from the clone
+    return int(std::ceil(text->size().height())) + aroundHeight +
+           QFontMetrics(text->defaultFont()).lineSpacing() / 2;
 }
 
 bool PresentationMode::eventFilter(QObject* watched, QEvent* event) {
@@ -155,8 +223,10 @@ void PresentationMode::setActive(bool on) {
         for (QToolBar* bar : m_toolBars)
             bar->setIconSize(m_savedIconSize);
         m_window->setWindowState(m_savedWindowState);
-        for (const Conditional& c : m_conditional)
+        for (const Conditional& c : m_conditional) {
             c.dock->setMaximumWidth(QWIDGETSIZE_MAX);
+            c.dock->setMinimumWidth(0);
+        }
         m_window->restoreState(m_savedState);
         for (QDockWidget* dock : m_wasVisible)
             dock->show();

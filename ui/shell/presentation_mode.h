@@ -72,9 +72,16 @@ class PresentationMode : public QObject {
 
   private:
     void applyStyle();
-    /// The plots a quarter of the height (at least 240 px) and a dock beside the canvas (the
-    /// note) at most a quarter of the width, so that the canvas keeps most of the screen.
+    /// The plots a quarter of the height (at least 240 px) and, from 1600 px wide, a dock shown
+    /// with the scene (the note) beside them, as wide as lines of about 66 characters (at most
+    /// two fifths of the width at 1920 px) and the bottom as tall as the note (at most a third
+    /// of the height); narrower, the note beside the canvas at most a quarter of the width, so
+    /// that the canvas keeps most of the screen and the plots their width.
     void fitDocks();
+    /// The width of a dock that shows prose in lines of about 66 characters [px].
+    static int readableWidth(const QWidget& dock);
+    /// The height a dock's text browser needs at this dock width, its title bar included [px].
+    static int textHeight(const QWidget& dock, int width);
     struct Conditional {
         QDockWidget* dock;
         std::function<bool()> needed;

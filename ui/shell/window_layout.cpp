@@ -39,6 +39,26 @@ bool restoreWindowLayout(QMainWindow* window) {
     return false;
 }
 
+void placeOnScreen(QWidget* window, const QSize& wanted, const QWidget* over) {
+    const QScreen* screen = over && over->screen() ? over->screen() : window->screen();
+    if (!screen) {
+        window->resize(wanted);
+        return;
+    }
+    const QRect available = screen->availableGeometry();
+    // the frame the window manager adds, as far as it is known before the window is shown
+    const QSize frame = window->frameGeometry().size() - window->geometry().size();
+    const QSize size = wanted.boundedTo(available.size() * 0.9 - frame);
+    window->resize(size); // not below the window's minimum size
+    QRect placed(QPoint(0, 0), window->size() + frame);
+    placed.moveCenter(over ? over->frameGeometry().center() : available.center());
+    placed.moveLeft(std::clamp(placed.left(), available.left(),
+                               std::max(available.left(), available.right() + 1 - placed.width())));
+    placed.moveTop(std::clamp(placed.top(), available.top(),
+                              std::max(available.top(), available.bottom() + 1 - placed.height())));
+    window->move(placed.topLeft());
+}
+
 void saveWindowLayout(const QMainWindow* window) {
     QSettings settings;
     settings.setValue(QStringLiteral("geometry"), window->saveGeometry());

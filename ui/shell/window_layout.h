@@ -2,6 +2,7 @@
 #include <QRect>
 
 class QMainWindow;
+class QWidget;
 
 namespace chaplygin::ui {
 
@@ -18,5 +19,9 @@ FirstStart firstStartGeometry(const QRect& available);
 bool restoreWindowLayout(QMainWindow* window);
 /// Saves the window's geometry and dock state in QSettings.
 void saveWindowLayout(const QMainWindow* window);
+
+/// A tool window (help, introduction) of the wanted size, at most 90 % of the free area of the
+/// screen of over, centred over over and moved inside that area.
+void placeOnScreen(QWidget* window, const QSize& wanted, const QWidget* over);
 
 } // namespace chaplygin::ui

@@ -164,6 +164,28 @@ TEST(CsvColumns, EachColumnNeedsOnlyItsPartsOfTheState) {
     EXPECT_GT(skipped, 100) << "the other parts were computed too";
 }
 
+// a zero that arithmetic made negative is written 0: a spreadsheet shows -0 as text
+TEST(CsvColumns, NoNegativeZero) {
+    MotionSample sample;
+    sample.t = 0.5;
+    sample.y = -0.0;
+    sample.control.lambda = -0.0;
+    sample.vak.lambda = -0.0;
+    const std::vector<std::string> handMade = lines(formatCsv({sample}));
+    ASSERT_EQ(handMade.size(), 2u);
+    for (const std::string& field : split(handMade[1]))
+        EXPECT_NE(field, "-0") << handMade[1];
+    // the line preset's lambda, psidot and the forces are zeros of either sign
+    int zeros = 0;
+    for (const std::string& row :
+         lines(formatCsv(Solution::compute(presetScene("line")).sample(51))))
+        for (const std::string& field : split(row)) {
+            EXPECT_NE(field, "-0") << row;
+            zeros += field == "0";
+        }
+    EXPECT_GT(zeros, 51 * 5);
+}
+
 TEST(CsvColumns, AValueThatIsNotFiniteNamesItsColumn) {
     MotionSample sample;
     sample.t = 2.5;

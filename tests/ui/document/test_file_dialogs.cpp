@@ -4,6 +4,8 @@
 
 #include <QFile>
 #include <QFileInfo>
+#include <QSettings>
+#include <QTemporaryDir>
 #include <QtTest>
 
 using namespace chaplygin;
@@ -19,6 +21,7 @@ class TestFileDialogs : public QObject, private test::WindowFixture {
 
     void saveProposesNameAndAddsExtension();
     void dialogsRememberLastFolder();
+    void firstDialogOfAKindStartsInTheFolderJustUsed();
     void filterExtensionAndStems();
 };
 
@@ -47,7 +50,8 @@ void TestFileDialogs::saveProposesNameAndAddsExtension() {
     QVERIFY2(dialog.proposed.endsWith(QStringLiteral("/lecture.csv")), qPrintable(dialog.proposed));
     QFile csv(m_dir.filePath(QStringLiteral("table.csv")));
     QVERIFY(csv.open(QIODevice::ReadOnly));
-    QVERIFY(csv.readLine().startsWith("# Chaplygin Lab"));
+    QVERIFY(csv.readLine().startsWith("t,s,x,y,"));
+    QVERIFY(QFile::exists(m_dir.filePath(QStringLiteral("table.summary.json"))));
 }
 
 void TestFileDialogs::dialogsRememberLastFolder() {
@@ -67,13 +71,58 @@ void TestFileDialogs::dialogsRememberLastFolder() {
     chooseOpenFile(nullptr, QStringLiteral("Open"), QStringLiteral("scene"),
                    QStringLiteral("Scenes (*.json)"));
     QCOMPARE(dialog.proposed, QFileInfo(other.path()).absoluteFilePath());
-    QVERIFY(lastFolder(QStringLiteral("csv")) != QFileInfo(other.path()).absoluteFilePath());
+    // a kind not used yet starts in the last folder used at all
+    QCOMPARE(lastFolder(QStringLiteral("csv")), QFileInfo(other.path()).absoluteFilePath());
+    // a kind used keeps its own folder when another kind goes elsewhere
+    QTemporaryDir tables;
+    dialog.answer = QDir(tables.path()).filePath(QStringLiteral("t.csv"));
+    chooseSaveFile(nullptr, QStringLiteral("Export CSV"), QStringLiteral("csv"),
+                   QStringLiteral("t"), QStringLiteral("CSV (*.csv)"));
+    QCOMPARE(lastFolder(QStringLiteral("csv")), QFileInfo(tables.path()).absoluteFilePath());
+    QCOMPARE(lastFolder(QStringLiteral("scene")), QFileInfo(other.path()).absoluteFilePath());
     // a cancelled dialog changes nothing
+    QTemporaryDir third;
     dialog.answer.clear();
-    QVERIFY(chooseSaveFile(nullptr, QStringLiteral("Save"), QStringLiteral("csv"),
-                           QStringLiteral("z"), QStringLiteral("CSV (*.csv)"))
+    QVERIFY(chooseSaveFile(nullptr, QStringLiteral("Save"), QStringLiteral("scene"),
+                           QStringLiteral("z"), QStringLiteral("Scenes (*.json)"))
                 .isEmpty());
-    QVERIFY(lastFolder(QStringLiteral("csv")) != QFileInfo(other.path()).absoluteFilePath());
+    QCOMPARE(lastFolder(QStringLiteral("scene")), QFileInfo(other.path()).absoluteFilePath());
+    QCOMPARE(lastFolder(QStringLiteral("plots")), QFileInfo(tables.path()).absoluteFilePath());
+}
+
+// the first Export CSV after a save, and the first Save As after opening a file from the recent
+// list or the command line, start in the folder just used, not in Documents or home
+void TestFileDialogs::firstDialogOfAKindStartsInTheFolderJustUsed() {
+    QTemporaryDir lecture, runs;
+    test::DialogScript dialog;
+    dialog.install();
+    dialog.answer = QDir(lecture.path()).filePath(QStringLiteral("lecture.json"));
+    dialog.filter = QStringLiteral("Scenes (*.json)");
+    QAction* saveAs = nullptr;
+    for (QAction* a : m_window->findChildren<QAction*>())
+        if (a->text().startsWith(QStringLiteral("Save &As")))
+            saveAs = a;
+    QVERIFY(saveAs);
+    saveAs->trigger();
+    QCOMPARE(dialog.calls, 1);
+    QVERIFY(QFile::exists(dialog.answer));
+    dialog.answer.clear(); // cancel the next dialogs
+    QTest::keyClick(m_window.get(), Qt::Key_E, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(dialog.calls, 2);
+    QCOMPARE(QFileInfo(dialog.proposed).absolutePath(),
+             QFileInfo(lecture.path()).absoluteFilePath());
+    // a scene opened without a dialog: the next Save As starts beside it
+    const QString opened = QDir(runs.path()).filePath(QStringLiteral("opened.json"));
+    QVERIFY(QFile::copy(QDir(lecture.path()).filePath(QStringLiteral("lecture.json")), opened));
+    QSettings().clear();
+    QVERIFY(m_window->openFile(opened));
+    saveAs->trigger();
+    QCOMPARE(dialog.calls, 3);
+    QCOMPARE(
+        dialog.proposed,
+        QDir(QFileInfo(runs.path()).absoluteFilePath()).filePath(QStringLiteral("opened.json")));
+    QTest::keyClick(m_window.get(), Qt::Key_E, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(QFileInfo(dialog.proposed).absolutePath(), QFileInfo(runs.path()).absoluteFilePath());
 }
 
 void TestFileDialogs::filterExtensionAndStems() {

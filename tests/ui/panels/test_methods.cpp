@@ -11,6 +11,7 @@
 
 #include <QAction>
 #include <QElapsedTimer>
+#include <QHeaderView>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QStandardPaths>
@@ -66,6 +67,7 @@ class TestMethods : public QObject {
     void accuracyReadoutRefreshesAtAMetersPace();
     void galleryRefusedEntryKeepsScene();
     void galleryAcceptedEntryShowsExplanation();
+    void tableShowsWholeColumnTitles();
 
   private:
     void load(const char* preset);
@@ -237,6 +239,49 @@ void TestMethods::galleryAcceptedEntryShowsExplanation() {
     m_window->document()->flush();
     QVERIFY(m_window->document()->scene() == before);
     QVERIFY(m_window->accuracyReadout()->noteText().isEmpty());
+}
+
+// at 1024x768 the chosen configurations' table keeps every column title whole ("Pareto" read
+// "ye") and every short cell; the long method name is elided with its whole text in the tooltip
+void TestMethods::tableShowsWholeColumnTitles() {
+    m_window->resize(1024, 768);
+    m_window->balanceDocks();
+    load("sinusoid");
+    MethodsPanel* panel = m_window->methodsPanel();
+    m_window->showMethodsDock();
+    panel->start();
+    QTRY_VERIFY_WITH_TIMEOUT(!panel->isRunning(), 60000);
+    QApplication::processEvents();
+    QTableWidget* table = panel->chosenTable();
+    QCOMPARE(table->rowCount(), 2);
+    QHeaderView* header = table->horizontalHeader();
+    int used = 0;
+    for (int c = 0; c < table->columnCount(); ++c) {
+        const QString title = table->horizontalHeaderItem(c)->text();
+        const int need = header->fontMetrics().horizontalAdvance(title);
+        QVERIFY2(header->sectionSize(c) >= need + 8,
+                 qPrintable(QStringLiteral("\"%1\" needs %2 px, its column is %3 px")
+                                .arg(title)
+                                .arg(need)
+                                .arg(header->sectionSize(c))));
+        used += header->sectionSize(c);
+        for (int r = 0; r < table->rowCount(); ++r) {
+            const QString text = table->item(r, c)->text();
+            const int cell = table->fontMetrics().horizontalAdvance(text);
+            if (c == 1)
+                QCOMPARE(table->item(r, c)->toolTip().contains(text), true);
+            else
+                QVERIFY2(header->sectionSize(c) >= cell + 4,
+                         qPrintable(QStringLiteral("%1: %2 px in %3")
+                                        .arg(text)
+                                        .arg(cell)
+                                        .arg(header->sectionSize(c))));
+        }
+    }
+    QVERIFY2(
+        used <= table->viewport()->width() + 1,
+        qPrintable(
+            QStringLiteral("%1 px of columns in %2 px").arg(used).arg(table->viewport()->width())));
 }
 
 QTEST_MAIN(TestMethods)

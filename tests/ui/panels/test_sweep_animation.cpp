@@ -1,5 +1,8 @@
 // GUI tests of the Sweep dock (a parameter sweep in the shared job runner, with progress,
 // cancel and click-to-load through the undo stack) and of File > Export animation.
+#include "canvas/body_sprites.h"
+#include "canvas/scene_canvas.h"
+#include "canvas/vector_painter.h"
 #include "document/scene_document.h"
 #include "gui_test_support.h"
 #include "panels/sweep_panel.h"
@@ -17,11 +20,14 @@
 #include <QProgressDialog>
 #include <QPushButton>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QUndoStack>
 #include <QtTest>
 #include <qcustomplot.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <memory>
 
 using namespace chaplygin;
@@ -41,6 +47,8 @@ class TestSweepAnimation : public QObject {
     void exportWritesFramesRenderedOffscreen();
     void exportDialogPathWithCancelLeavesNoFiles();
     void exportGifAndMissingFfmpeg();
+    void exportDialogRemembersItsSettings();
+    void exportedArrowsAndScaleBarsKeepClear();
 
   private:
     void load(const char* preset);
@@ -257,6 +265,158 @@ void TestSweepAnimation::exportGifAndMissingFfmpeg() {
     QCOMPARE(gif.read(6), QByteArray("GIF89a"));
     QCOMPARE(QDir(dir.path()).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden),
              QStringList{QStringLiteral("circle.gif")});
+}
+
+// fps, size and "with plots" chosen once are what the dialog shows the next time, in this window
+// and in the next one (QSettings)
+void TestSweepAnimation::exportDialogRemembersItsSettings() {
+    load("circle");
+    QTemporaryDir dir;
+    const QString folder = dir.filePath(QStringLiteral("clip/"));
+    auto exportAction = [this] {
+        for (QAction* menu : m_window->menuBar()->actions())
+            if (menu->menu())
+                for (QAction* a : menu->menu()->actions())
+                    if (a->text().contains(QLatin1String("animation")))
+                        return a;
+        return static_cast<QAction*>(nullptr);
+    };
+    QVERIFY(exportAction());
+    int fps = 0, width = 0, height = 0;
+    bool plots = false, seen = false;
+    QTimer poll;
+    poll.setInterval(10);
+    // the first time: choose 12 fps, 640x360 with plots, export and cancel the rendering
+    connect(&poll, &QTimer::timeout, this, [&] {
+        if (auto* dialog = qobject_cast<AnimationDialog*>(QApplication::activeModalWidget())) {
+            seen = true;
+            QVERIFY(dialog->fpsBox()->value() != 12);
+            QVERIFY(!dialog->plotsBox()->isChecked());
+            dialog->fileEdit()->setText(folder);
+            dialog->fpsBox()->setValue(12);
+            dialog->widthBox()->setValue(640);
+            dialog->heightBox()->setValue(360);
+            dialog->plotsBox()->setChecked(true);
+            dialog->accept();
+        } else if (auto* progress =
+                       m_window->findChild<QProgressDialog*>(QStringLiteral("animationProgress")))
+            progress->cancel();
+    });
+    poll.start();
+    exportAction()->trigger();
+    poll.stop();
+    QVERIFY(seen);
+    // the next times, here and in a new window: what was chosen, read and then dismissed
+    poll.disconnect();
+    connect(&poll, &QTimer::timeout, this, [&] {
+        if (auto* dialog = qobject_cast<AnimationDialog*>(QApplication::activeModalWidget())) {
+            fps = int(dialog->fpsBox()->value());
+            width = int(dialog->widthBox()->value());
+            height = int(dialog->heightBox()->value());
+            plots = dialog->plotsBox()->isChecked();
+            dialog->reject();
+        }
+    });
+    for (int window = 0; window < 2; ++window) {
+        if (window == 1) {
+            m_window = test::showTestWindow();
+            QVERIFY(m_window);
+        }
+        fps = width = height = 0;
+        plots = false;
+        poll.start();
+        exportAction()->trigger();
+        poll.stop();
+        QCOMPARE(fps, 12);
+        QCOMPARE(width, 640);
+        QCOMPARE(height, 360);
+        QVERIFY(plots);
+    }
+}
+
+// the canvas of an exported frame at the export sizes (with the plots it is 3/5 of the frame),
+// with every arrow shown: the legend strip under the drawing area is the same with the arrows
+// as without (an arrow ran across the legend's text), and the arrows' scale bars lie in a corner
+// of the drawing area that no body crosses in any frame, when there is one (a 640x360 GIF with
+// plots put them over the body); when every corner is crossed, in one crossed least
+void TestSweepAnimation::exportedArrowsAndScaleBarsKeepClear() {
+    int frames = 0, clear = 0;
+    for (const char* preset : {"catenary", "sinusoid", "circle", "line"}) {
+        Scene plain = presetScene(preset), arrows = plain;
+        for (int i = 0; i < 2; ++i) // two arrows: two rows of scale bars
+            (arrows.vectors.*vectorToggle(VectorKind(i))).shown = true;
+        for (const QSize size : {QSize(384, 360), QSize(768, 720), QSize(1280, 720)}) {
+            QImage without[12];
+            for (const bool shown : {false, true}) {
+                m_window->loadScene(shown ? arrows : plain);
+                QVERIFY(m_window->document()->error().isEmpty());
+                SceneCanvas canvas(m_window->document());
+                canvas.setAttribute(Qt::WA_DontShowOnScreen);
+                canvas.setLook(m_window->canvas()->look());
+                canvas.resize(size);
+                canvas.show();
+                canvas.fitScene();
+                const QString where = QStringLiteral("%1 at %2x%3")
+                                          .arg(QLatin1String(preset))
+                                          .arg(size.width())
+                                          .arg(size.height());
+                const Solution& solution = *m_window->document()->solution();
+                const QRectF area = canvas.drawingArea();
+                const QRect legend(0, int(std::ceil(area.bottom())) + 1, size.width(),
+                                   size.height() - int(std::ceil(area.bottom())) - 1);
+                QVERIFY(legend.height() > 20);
+                const double s = canvas.scale();
+                const QPointF origin = canvas.toPixel({0, 0});
+                const QTransform world(s, 0, 0, -s, origin.x(), origin.y());
+                const BodyLook look{canvas.shownBodyDisplay(), canvas.canvasStyle().bodyOpacity,
+                                    canvas.canvasStyle().lineScale};
+                constexpr Qt::Corner corners[] = {Qt::BottomRightCorner, Qt::BottomLeftCorner,
+                                                  Qt::TopRightCorner};
+                int crossed[3] = {}, chosen = 0;
+                for (int k = 0; k < 12; ++k) {
+                    const double t = solution.tEnd() * k / 11;
+                    canvas.setTime(t);
+                    const QImage image = canvas.grab().toImage().copy(legend);
+                    if (!shown) {
+                        without[k] = image;
+                        continue;
+                    }
+                    QVERIFY2(image == without[k],
+                             qPrintable(where +
+                                        QStringLiteral(", t = %1: an arrow on the legend").arg(t)));
+                    const MotionSample now = solution.at(t);
+                    const BodyPose poses[] = {{now.x, now.y, now.phi},
+                                              {now.free.x, now.free.y, now.free.phi},
+                                              {now.vak.x, now.vak.y, now.vak.phi}};
+                    for (const BodyPose& pose : poses) {
+                        const QRectF body = BodySprites::pixelBounds(
+                            world, s, solution.scene().system, solution.system(), pose, look);
+                        for (int c = 0; c < 3; ++c)
+                            crossed[c] +=
+                                body.intersects(QRectF(canvas.vectorLayer().scaleBarsBounds(
+                                    arrows.vectors, area, corners[c])))
+                                    ? 1
+                                    : 0;
+                        chosen += body.intersects(QRectF(
+                                      canvas.vectorLayer().scaleBarsBounds(arrows.vectors, area)))
+                                      ? 1
+                                      : 0;
+                    }
+                    ++frames;
+                }
+                if (!shown)
+                    continue;
+                const int least = *std::min_element(std::begin(crossed), std::end(crossed));
+                QVERIFY2(least > 0 || chosen == 0,
+                         qPrintable(where + QStringLiteral(": the scale bars cover a body in %1 "
+                                                           "frames, a corner is free")
+                                                .arg(chosen)));
+                clear += least == 0;
+            }
+        }
+    }
+    QCOMPARE(frames, 4 * 3 * 12);
+    QVERIFY2(clear >= 3, qPrintable(QString::number(clear)));
 }
 
 QTEST_MAIN(TestSweepAnimation)

@@ -35,6 +35,8 @@ class TestHelp : public QObject, private test::WindowFixture {
     void sectionHeadingAtTheTop();
     void picturesFitTheWidth();
     void everyPictureOfTheHelpLoads();
+    void helpWindowFitsTheScreen();
+    void userGuideStartsWithUsingTheProgram();
 };
 
 void TestHelp::aboutNamesVersionLicenceCreditsPaper() {
@@ -167,6 +169,45 @@ void TestHelp::everyPictureOfTheHelpLoads() {
             }
     }
     QVERIFY(pictures >= 10);
+}
+
+// the help window opens inside the screen's free area, at most 900 x 700 and never taller or
+// wider than the screen (a 900 x 700 window ran off the bottom of a 1080 screen placed below the
+// main window's title)
+void TestHelp::helpWindowFitsTheScreen() {
+    m_window->move(0, 0);
+    HelpWindow* help = m_window->showHelp(QStringLiteral("user-guide.md"));
+    QApplication::processEvents();
+    const QRect available = m_window->screen()->availableGeometry();
+    QVERIFY2(available.width() < 900 || available.height() < 700,
+             "the test needs a screen smaller than the help window's own size");
+    QVERIFY2(available.contains(help->frameGeometry()),
+             qPrintable(QStringLiteral("help %1,%2 %3x%4 on a screen of %5x%6")
+                            .arg(help->frameGeometry().x())
+                            .arg(help->frameGeometry().y())
+                            .arg(help->frameGeometry().width())
+                            .arg(help->frameGeometry().height())
+                            .arg(available.width())
+                            .arg(available.height())));
+    QVERIFY(help->width() >= available.width() / 2);
+    QVERIFY(help->height() >= available.height() / 2);
+}
+
+// Help > User guide opens on how to use the program: its first screen names Space, the presets'
+// keys and What am I looking at?, and no build command or source folder (they come later)
+void TestHelp::userGuideStartsWithUsingTheProgram() {
+    HelpWindow* help = m_window->showHelp(QStringLiteral("user-guide.md"));
+    const QString text = help->browser()->document()->toPlainText();
+    const qsizetype window = text.indexOf(QStringLiteral("\nThe window\n"));
+    QVERIFY(window > 0);
+    const QString start = text.left(window);
+    for (const QString& word : {QStringLiteral("Space"), QStringLiteral("1 to 4"),
+                                QStringLiteral("What am I looking at?")})
+        QVERIFY2(start.contains(word), qPrintable(word));
+    for (const QString& word :
+         {QStringLiteral("scripts/"), QStringLiteral("build/"), QStringLiteral("cmake")})
+        QVERIFY2(!start.contains(word), qPrintable(word));
+    QVERIFY(text.indexOf(QStringLiteral("scripts/run")) > window); // still in the guide
 }
 
 QTEST_MAIN(TestHelp)

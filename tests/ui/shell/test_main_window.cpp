@@ -18,6 +18,8 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMenu>
@@ -32,6 +34,7 @@
 #include <QtTest>
 #include <qcustomplot.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -88,6 +91,7 @@ class TestMainWindow : public QObject {
     void saveLoadRoundTrip();
     void openBadFileKeepsScene();
     void exportFilesValid();
+    void exportedCsvHasNoNegativeZero();
     void screenshotMode();
     void settingsKeepRecentFilesAndLayout();
 
@@ -527,14 +531,45 @@ void TestMainWindow::exportFilesValid() {
     QVERIFY(m_window->exportCsvTo(csv));
     QFile c(csv);
     QVERIFY(c.open(QIODevice::ReadOnly));
-    QByteArray stamp = c.readLine();
-    QVERIFY(stamp.startsWith("# Chaplygin Lab: "));
-    QVERIFY(stamp.contains("b = 1"));
+    // one header row and the rows, nothing a spreadsheet would show as a row of its own
     QVERIFY(c.readLine().startsWith("t,s,x,y,phi,psi,chi,lambda,energy,free_x"));
     int rows = 0;
-    while (!c.atEnd())
-        rows += c.readLine().trimmed().isEmpty() ? 0 : 1;
+    while (!c.atEnd()) {
+        const QByteArray line = c.readLine().trimmed();
+        QVERIFY2(!line.startsWith('#'), line.constData());
+        rows += line.isEmpty() ? 0 : 1;
+    }
     QCOMPARE(rows, 501);
+    // the parameters the comment line held are in the summary beside it
+    QFile summary(m_dir.filePath(QStringLiteral("run.summary.json")));
+    QVERIFY(summary.open(QIODevice::ReadOnly));
+    const QJsonObject s = QJsonDocument::fromJson(summary.readAll()).object();
+    QCOMPARE(s.value(QStringLiteral("preset")).toString(), QStringLiteral("sinusoid"));
+    QCOMPARE(s.value(QStringLiteral("b")).toDouble(), 1.0);
+    QCOMPARE(s.value(QStringLiteral("parameters")).toObject().value(QStringLiteral("m")).toDouble(),
+             1.0);
+}
+
+// the line preset's y, psi and lambda are zeros that arithmetic makes negative: written as 0
+void TestMainWindow::exportedCsvHasNoNegativeZero() {
+    const auto names = presetNames();
+    m_window->choosePresetNumber(
+        int(std::find(names.begin(), names.end(), "line") - names.begin()));
+    m_window->document()->flush();
+    QCOMPARE(m_window->document()->scene().preset, std::string("line"));
+    const QString csv = m_dir.filePath(QStringLiteral("line.csv"));
+    QVERIFY(m_window->exportCsvTo(csv));
+    QFile c(csv);
+    QVERIFY(c.open(QIODevice::ReadOnly));
+    int zeros = 0;
+    while (!c.atEnd()) {
+        const QList<QByteArray> fields = c.readLine().trimmed().split(',');
+        for (const QByteArray& f : fields) {
+            QVERIFY2(f != "-0", "a -0 in the CSV");
+            zeros += f == "0";
+        }
+    }
+    QVERIFY(zeros > 1000);
 }
 
 void TestMainWindow::screenshotMode() {

@@ -4,6 +4,7 @@
 #include "canvas/scene_canvas.h"
 #include "desktop_entry.h"
 #include "lab/gallery.h"
+#include "panels/notes_panel.h"
 #include "plots/plots_panel.h"
 #include "scene/presets.h"
 #include "shell/playback.h"
@@ -12,6 +13,11 @@
 #include "window_fixture.h"
 
 #include <QImage>
+#include <QScrollBar>
+#include <QTextBlock>
+#include <QTextBrowser>
+#include <QTextLayout>
+#include <QToolButton>
 #include <QtTest>
 #include <qcustomplot.h>
 
@@ -35,6 +41,7 @@ class TestPresentation : public QObject, private test::WindowFixture {
     void presentationScalesPlots();
     void presentationScreenshotOption();
     void presentationLegendsWholeAt1024x768();
+    void presentationNotesReadableUnscrolled();
 };
 
 void TestPresentation::presentationEntersAndLeaves() {
@@ -240,6 +247,54 @@ void TestPresentation::presentationLegendsWholeAt1024x768() {
         }
     }
     QVERIFY2(checked >= 20, qPrintable(QString::number(checked)));
+}
+
+// every gallery note at 1920x1080 in presentation: shown whole without scrolling, at least 60
+// characters a line (the last line of a paragraph aside), no Edit button
+void TestPresentation::presentationNotesReadableUnscrolled() {
+    m_window->presentation()->setFullScreen(false);
+    m_window->resize(1920, 1080);
+    m_window->presentation()->setActive(true);
+    m_window->resize(1920, 1080);
+    int notes = 0;
+    for (const GalleryEntry& entry : galleryEntries()) {
+        if (entry.rejected || entry.scene.note.empty())
+            continue;
+        QVERIFY(m_window->loadGalleryEntry(QString::fromStdString(entry.name)));
+        m_window->document()->flush();
+        QTest::qWait(30);
+        QDockWidget* notesDock = dock("notesDock");
+        QVERIFY2(notesDock->isVisible(), entry.name.c_str());
+        auto* panel = notesDock->findChild<NotesPanel*>();
+        QVERIFY(panel);
+        auto* edit = panel->findChild<QToolButton*>(QStringLiteral("editNote"));
+        QVERIFY(edit);
+        QVERIFY2(!edit->isVisible(), "the Edit button is shown while presenting");
+        QTextBrowser* view = panel->view();
+        QTRY_VERIFY2(view->verticalScrollBar()->maximum() == 0,
+                     qPrintable(QStringLiteral("%1 scrolls by %2 px in a %3x%4 view")
+                                    .arg(QString::fromStdString(entry.name))
+                                    .arg(view->verticalScrollBar()->maximum())
+                                    .arg(view->viewport()->width())
+                                    .arg(view->viewport()->height())));
+        int shortest = 1 << 20;
+        for (QTextBlock b = view->document()->begin(); b.isValid(); b = b.next()) {
+            QTextLayout* layout = b.layout();
+            for (int i = 0; layout && i + 1 < layout->lineCount(); ++i) // not a paragraph's last
+                shortest = std::min(shortest, layout->lineAt(i).textLength());
+        }
+        QVERIFY2(shortest >= 60, qPrintable(QStringLiteral("%1: a line of %2 characters")
+                                                .arg(QString::fromStdString(entry.name))
+                                                .arg(shortest)));
+        ++notes;
+    }
+    QVERIFY(notes >= 10);
+    // leaving presentation mode gives the Edit button back
+    m_window->presentation()->setActive(false);
+    auto* edit = dock("notesDock")->findChild<QToolButton*>(QStringLiteral("editNote"));
+    dock("notesDock")->show();
+    dock("notesDock")->raise();
+    QTRY_VERIFY(edit->isVisible());
 }
 
 QTEST_MAIN(TestPresentation)

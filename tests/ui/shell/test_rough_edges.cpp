@@ -332,6 +332,37 @@ void TestRoughEdges::exportedPlotsShowThePinnedRuns() {
         for (int i = 0; i < pins->count(); ++i)
             QVERIFY2(text.contains(m_window->document()->pins()->label(i).toHtmlEscaped()),
                      qPrintable(QStringLiteral("%1: %2").arg(QLatin1String(stem), pins->label(i))));
+        // each pinned curve sampled as densely as the run's own: a point at least every 2 px
+        // along the time axis (they were the path table's nodes, 105 points a curve, visibly
+        // polygonal at the file's width)
+        for (int i = 0; i < pins->count(); ++i) {
+            const QString stroke =
+                QStringLiteral("stroke=\"%1\"").arg(PinSet::color(i).name(QColor::HexRgb));
+            double longest = 0;
+            int points = 0;
+            for (qsizetype at = text.indexOf(stroke); at >= 0; at = text.indexOf(stroke, at + 1)) {
+                const qsizetype end = text.indexOf(QStringLiteral("</g>"), at);
+                static const QRegularExpression polyline(
+                    QStringLiteral("<polyline[^>]*points=\"([^\"]*)\""));
+                for (auto m = polyline.globalMatch(text.mid(at, end - at)); m.hasNext();) {
+                    const QStringList xy = m.next().captured(1).split(
+                        QRegularExpression(QStringLiteral("[ ,]+")), Qt::SkipEmptyParts);
+                    if (xy.size() < 20) // the legend's sample of the line
+                        continue;
+                    for (int k = 2; k + 1 < xy.size(); k += 2, ++points)
+                        longest =
+                            std::max(longest, std::abs(xy[k].toDouble() - xy[k - 2].toDouble()));
+                }
+            }
+            QVERIFY2(points > 200, qPrintable(QStringLiteral("%1: pin %2, %3 points")
+                                                  .arg(QLatin1String(stem))
+                                                  .arg(i)
+                                                  .arg(points)));
+            QVERIFY2(longest <= 2, qPrintable(QStringLiteral("%1: pin %2, a gap of %3 px")
+                                                  .arg(QLatin1String(stem))
+                                                  .arg(i)
+                                                  .arg(longest)));
+        }
     }
 }
 
@@ -539,6 +570,19 @@ void TestRoughEdges::helpMenuOpensTheExplanationWithItsDrawing() {
          {QStringLiteral("\u03a8"), QStringLiteral("\u03c7"), QStringLiteral("\u03bb"),
           QStringLiteral("ghost"), QStringLiteral("vakonomic"), QStringLiteral("leaves the path")})
         QVERIFY2(text.contains(word), qPrintable(word));
+    // the screen first, in plain words (the four plots, the path's colours, the green line,
+    // how to play), then the physics
+    const qsizetype physics = text.indexOf(QStringLiteral("knife"));
+    QVERIFY(physics > 0);
+    for (const QString& word :
+         {QStringLiteral("canvas"), QStringLiteral("four plots"),
+          QStringLiteral("red where it "
+                         "turns right"),
+          QStringLiteral("blue where it turns left"), QStringLiteral("green line"),
+          QStringLiteral("Space"), QStringLiteral("To play")}) {
+        const qsizetype at = text.indexOf(word);
+        QVERIFY2(at >= 0 && at < physics, qPrintable(word));
+    }
     // the drawing is painted: a good part of it is ink of several colours
     auto* diagram = intro->findChild<BodyDiagram*>();
     QVERIFY(diagram && diagram->isVisible());

@@ -2,6 +2,7 @@
 // at 1280x800, a usable canvas at 1024x768, the canvas legend in its own strip, the status bar.
 // Offscreen, real widgets.
 #include "canvas/scene_canvas.h"
+#include "shell/dock_layout.h"
 #include "shell/elided_label.h"
 #include "shell/window_layout.h"
 #include "window_fixture.h"
@@ -34,6 +35,9 @@ class TestWindowLayout : public QObject, private test::WindowFixture {
     void legendOutsideDrawingArea();
     void statusBarElidedWithTooltip();
     void dockTabsWholeAt1024x768();
+    void firstStartShowsThePathTab();
+    void openedSceneShowsThePlots();
+    void methodsAndSweepTabsGrow();
 };
 
 void TestWindowLayout::firstStartSizedToScreen() {
@@ -84,10 +88,103 @@ void TestWindowLayout::narrowedWindowKeepsCanvasUsable() {
     QCOMPARE(m_window->dockWidgetArea(dock("accuracyDock")), Qt::LeftDockWidgetArea);
     QTRY_VERIFY2(m_window->canvas()->width() >= 480,
                  qPrintable(QString::number(m_window->canvas()->width())));
-    // widened again, the docks stay where they are (the user may have placed them)
+    // widened again, the docks the narrowing moved go back to their own side, in their order
+    // and with the accuracy in front; the path keeps the front on the left
+    dock("notesDock")->show();
     m_window->resize(1280, 800);
     QApplication::processEvents();
-    QCOMPARE(m_window->dockWidgetArea(dock("accuracyDock")), Qt::LeftDockWidgetArea);
+    for (const char* name : {"accuracyDock", "notesDock", "equationsDock"})
+        QCOMPARE(m_window->dockWidgetArea(dock(name)), Qt::RightDockWidgetArea);
+    QTRY_VERIFY(dock("accuracyDock")->isVisible() &&
+                !dock("accuracyDock")->visibleRegion().isEmpty());
+    QCOMPARE(m_window->tabifiedDockWidgets(dock("accuracyDock")).size(), 2);
+    QVERIFY(!dock("pathDock")->visibleRegion().isEmpty());
+    // a dock the user puts on the left of a wide window stays there
+    m_window->addDockWidget(Qt::LeftDockWidgetArea, dock("equationsDock"));
+    m_window->resize(1300, 800);
+    QApplication::processEvents();
+    QCOMPARE(m_window->dockWidgetArea(dock("equationsDock")), Qt::LeftDockWidgetArea);
+}
+
+// the first start shows the Path dock in front of its tabs, at every size (the parameters and
+// the perturbation share them)
+void TestWindowLayout::firstStartShowsThePathTab() {
+    for (const QSize size : {QSize(1024, 768), QSize(1280, 800), QSize(1920, 1080)}) {
+        MainWindow window(false); // a first start, sized here (the offscreen screen is small)
+        window.resize(size);
+        window.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&window));
+        QApplication::processEvents();
+        QCOMPARE(window.size(), size);
+        auto* path = window.findChild<QDockWidget*>(QStringLiteral("pathDock"));
+        auto* parameters = window.findChild<QDockWidget*>(QStringLiteral("parametersDock"));
+        auto* plots = window.findChild<QDockWidget*>(QStringLiteral("plotsDock"));
+        QVERIFY2(path->isVisible() && !path->visibleRegion().isEmpty(),
+                 qPrintable(QStringLiteral("%1x%2").arg(size.width()).arg(size.height())));
+        QVERIFY(parameters->visibleRegion().isEmpty());
+        QVERIFY(!plots->visibleRegion().isEmpty());
+    }
+}
+
+// a scene opened while the Sweep tab (empty for a new scene) or the Methods tab is in front, and a
+// start that restores such a layout, show the plots
+void TestWindowLayout::openedSceneShowsThePlots() {
+    const QString file = m_dir.filePath(QStringLiteral("circle.json"));
+    choosePreset("circle");
+    QVERIFY(m_window->saveFile(file));
+    for (const char* front : {"sweepDock", "methodsDock"}) {
+        dock(front)->raise();
+        QApplication::processEvents();
+        QVERIFY(dock("plotsDock")->visibleRegion().isEmpty());
+        QVERIFY(m_window->openFile(file));
+        QApplication::processEvents();
+        QVERIFY2(!dock("plotsDock")->visibleRegion().isEmpty(), front);
+    }
+    dock("sweepDock")->raise();
+    QApplication::processEvents();
+    saveWindowLayout(m_window.get());
+    MainWindow restarted(true);
+    restarted.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&restarted));
+    QApplication::processEvents();
+    QVERIFY(
+        !restarted.findChild<QDockWidget*>(QStringLiteral("plotsDock"))->visibleRegion().isEmpty());
+}
+
+// the Methods and Sweep tabs, clicked, grow the bottom docks as their menu entries do; the
+// Plots tab gives the plots their height back
+void TestWindowLayout::methodsAndSweepTabsGrow() {
+    m_window->resize(1280, 800);
+    m_window->balanceDocks();
+    QApplication::processEvents();
+    const int plotsHeight = dock("plotsDock")->height();
+    QVERIFY(plotsHeight < 300);
+    auto clickTab = [this](const QString& title) {
+        for (QTabBar* bar : m_window->findChildren<QTabBar*>(Qt::FindDirectChildrenOnly))
+            for (int i = 0; i < bar->count(); ++i)
+                if (bar->isVisible() && bar->tabText(i) == title) {
+                    QTest::mouseClick(bar, Qt::LeftButton, {}, bar->tabRect(i).center());
+                    QApplication::processEvents();
+                    QApplication::processEvents();
+                    return true;
+                }
+        return false;
+    };
+    // as tall as asked, or as the canvas's minimum height leaves
+    QVERIFY(clickTab(QStringLiteral("Methods")));
+    QTRY_VERIFY2(dock("methodsDock")->height() >= std::min(methodsDockHeight(800), 330),
+                 qPrintable(QString::number(dock("methodsDock")->height())));
+    const int methodsHeight = dock("methodsDock")->height();
+    QVERIFY(clickTab(QStringLiteral("Sweep")));
+    QTRY_VERIFY2(dock("sweepDock")->height() >= std::min(sweepDockHeight(800), methodsHeight),
+                 qPrintable(QString::number(dock("sweepDock")->height())));
+    QVERIFY(clickTab(QStringLiteral("Plots")));
+    QTRY_VERIFY2(std::abs(dock("plotsDock")->height() - plotsHeight) <= 4,
+                 qPrintable(QString::number(dock("plotsDock")->height())));
+    // the menu entry's height is the tab's
+    m_window->showMethodsDock();
+    QTRY_VERIFY2(std::abs(dock("methodsDock")->height() - methodsHeight) <= 4,
+                 qPrintable(QString::number(dock("methodsDock")->height())));
 }
 
 void TestWindowLayout::noDockScrollsAt1280x800() {
