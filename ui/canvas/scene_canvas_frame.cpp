@@ -275,7 +275,13 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         p.restore();
         m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform(),
                         m_view.scale(), drawingArea(), e->region());
-        paintTimeReadout(p, solution->tEnd());
+        // a planned motion played: its time along it and its arrival (docs/physics.md §10)
+        const int played = m_planMode && m_planTool->playTime() >= 0 ? m_planTool->chosen() : -1;
+        if (played >= 0)
+            paintTimeReadout(p, m_planTool->playTime(),
+                             m_planTool->planned().geodesics[std::size_t(played)].t);
+        else
+            paintTimeReadout(p, m_time, solution->tEnd());
         m_movingPainted = movingBounds(*solution, *now, m_time);
     } else {
         m_movingPainted = {};
@@ -423,7 +429,7 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     p.restore();
 }
 
-void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
+void SceneCanvas::paintTimeReadout(QPainter& p, double t, double tEnd) const {
     QFont f = font();
     p.setPen(Qt::black);
     if (m_look.style.largeTime) {
@@ -431,7 +437,7 @@ void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
         f.setPointSizeF(9 * m_look.style.lineScale * 2);
         f.setBold(true);
         p.setFont(f);
-        const QString now = tr("t = %1 s").arg(m_time, 0, 'f', 2);
+        const QString now = tr("t = %1 s").arg(t, 0, 'f', 2);
         QRectF band(10, 0, width() - 20, topBandPx());
         p.drawText(band, Qt::AlignLeft | Qt::AlignVCenter, now);
         double after =
@@ -446,7 +452,7 @@ void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
     f.setPointSizeF(9 * m_look.style.lineScale);
     p.setFont(f);
     QString readout = tr("t = %1 s of %2 s    scale %3 px/m")
-                          .arg(m_time, 0, 'f', 2)
+                          .arg(t, 0, 'f', 2)
                           .arg(tEnd, 0, 'f', 2)
                           .arg(m_view.scale(), 0, 'g', 3);
     // said, not hidden: a curve too dense for a frame at this zoom ends where its budget did

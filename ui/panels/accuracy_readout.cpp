@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace chaplygin::ui {
 
@@ -67,6 +68,25 @@ AccuracyReadout::AccuracyReadout(SceneDocument* document, QWidget* parent)
     m_note->setFrameShape(QFrame::StyledPanel);
     m_note->setMargin(4);
     m_note->hide();
+    // the Plan tool's chosen motion: its end on the target and its certificate
+    m_planBox = new QWidget;
+    m_planBox->setObjectName(QStringLiteral("accuracyPlan"));
+    m_planTitle = new QLabel;
+    m_planEndError = valueLabel();
+    m_planEndError->setToolTip(
+        tr("How far the planned motion's end is from the target pose: |Δx|/b + |Δy|/b "
+           "+ |Δφ mod 2π|, from its closed form"));
+    m_planOptimal = valueLabel();
+    m_planOptimal->setToolTip(tr("A motion is the fastest to the target up to its cut time, the "
+                                 "first time another motion of the same length meets it"));
+    auto* planForm = new QFormLayout;
+    planForm->setContentsMargins(0, 0, 0, 0);
+    planForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    planForm->addRow(m_planTitle);
+    planForm->addRow(tr("end error"), m_planEndError);
+    planForm->addRow(tr("optimal"), m_planOptimal);
+    m_planBox->setLayout(planForm);
+    m_planBox->hide();
     m_time = new QLabel;
     m_time->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_time->setObjectName(QStringLiteral("accuracyTime"));
@@ -113,6 +133,7 @@ AccuracyReadout::AccuracyReadout(SceneDocument* document, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 6);
     layout->addWidget(m_note);
+    layout->addWidget(m_planBox);
     layout->addLayout(form);
     layout->addLayout(header);
     layout->addWidget(m_plainModels);
@@ -180,6 +201,38 @@ void AccuracyReadout::setNote(const QString& title, const QString& text, bool wa
     m_note->setText(
         withDottedSymbolFont(QStringLiteral("<b>%1</b><br>%2").arg(title.toHtmlEscaped(), body)));
     m_note->show();
+}
+
+QString AccuracyReadout::planEndErrorText() const {
+    return m_plan ? m_planEndError->text() : QString();
+}
+
+QString AccuracyReadout::planOptimalText() const {
+    return m_plan ? m_planOptimal->text() : QString();
+}
+
+void AccuracyReadout::showPlan(const std::optional<PlanAccuracy>& plan) {
+    m_plan = plan;
+    if (m_plan)
+        fillPlan();
+    m_planBox->setVisible(m_plan.has_value());
+}
+
+void AccuracyReadout::fillPlan() {
+    const PlanAccuracy& p = *m_plan;
+    m_planTitle->setText(tr("<b>Plan: motion %1 of %2</b> (t = %3 s)")
+                             .arg(p.index)
+                             .arg(p.count)
+                             .arg(p.t, 0, 'f', 3));
+    m_planEndError->setText(relative(p.endError));
+    const QString cut =
+        std::isfinite(p.cutTime) ? tr("%1 s").arg(p.cutTime, 0, 'f', 3) : QStringLiteral("∞");
+    if (p.optimal)
+        m_planOptimal->setText(tr("certified: t ≤ cut time %1").arg(cut));
+    else if (p.t > p.cutTime)
+        m_planOptimal->setText(tr("no: t > cut time %1, a faster motion exists").arg(cut));
+    else
+        m_planOptimal->setText(tr("not certified (cut time %1)").arg(cut));
 }
 
 void AccuracyReadout::onSolutionChanged() {
