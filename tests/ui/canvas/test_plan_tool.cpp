@@ -503,6 +503,11 @@ void TestPlanTool::thePlotsAndTheAccuracyDockShowTheChosenMotion() {
              qPrintable(QString::number(m_tool->playTime())));
     QCOMPARE(plots->cursorTime(), m_tool->playTime());
     QCOMPARE(m_window->playback()->time(), 0.0); // the scene's clock stays
+    // CHAPLYGIN_PLAN_SHOTS: a folder for the picture to look at
+    if (const QString shots = qEnvironmentVariable("CHAPLYGIN_PLAN_SHOTS"); !shots.isEmpty()) {
+        plots->replotNow();
+        QVERIFY(m_window->grab().save(shots + QStringLiteral("/plan-played.png")));
+    }
 
     // another motion chosen: its curves, not the first's; not the least time, not optimal
     const int last = int(m_tool->planned().geodesics.size()) - 1;
