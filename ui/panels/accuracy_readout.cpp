@@ -69,24 +69,15 @@ AccuracyReadout::AccuracyReadout(SceneDocument* document, QWidget* parent)
     m_note->setMargin(4);
     m_note->hide();
     // the Plan tool's chosen motion: its end on the target and its certificate
-    m_planBox = new QWidget;
-    m_planBox->setObjectName(QStringLiteral("accuracyPlan"));
     m_planTitle = new QLabel;
+    m_planTitle->setObjectName(QStringLiteral("accuracyPlan"));
     m_planEndError = valueLabel();
     m_planEndError->setToolTip(
-        tr("How far the planned motion's end is from the target pose: |Δx|/b + |Δy|/b "
-           "+ |Δφ mod 2π|, from its closed form"));
+        tr("How far the planned motion's end is from the target pose: |\u0394x|/b + |\u0394y|/b "
+           "+ |\u0394\u03c6 mod 2\u03c0|, from its closed form"));
     m_planOptimal = valueLabel();
     m_planOptimal->setToolTip(tr("A motion is the fastest to the target up to its cut time, the "
                                  "first time another motion of the same length meets it"));
-    auto* planForm = new QFormLayout;
-    planForm->setContentsMargins(0, 0, 0, 0);
-    planForm->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    planForm->addRow(m_planTitle);
-    planForm->addRow(tr("end error"), m_planEndError);
-    planForm->addRow(tr("optimal"), m_planOptimal);
-    m_planBox->setLayout(planForm);
-    m_planBox->hide();
     m_time = new QLabel;
     m_time->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_time->setObjectName(QStringLiteral("accuracyTime"));
@@ -119,6 +110,14 @@ AccuracyReadout::AccuracyReadout(SceneDocument* document, QWidget* parent)
 
     auto* form = new QFormLayout;
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    // the plan's rows first, in the same columns as the scene's (shown in plan mode only)
+    form->addRow(m_planTitle);
+    form->addRow(tr("end error"), m_planEndError);
+    form->addRow(tr("optimal"), m_planOptimal);
+    for (QWidget* row : {static_cast<QWidget*>(m_planTitle), static_cast<QWidget*>(m_planEndError),
+                         static_cast<QWidget*>(m_planOptimal)})
+        form->setRowVisible(row, false);
+    m_form = form;
     form->addRow(tr("t"), m_time);
     form->addRow(tr("off the path"), m_tracking);
     form->addRow(tr("vs closed form"), m_paper);
@@ -133,7 +132,6 @@ AccuracyReadout::AccuracyReadout(SceneDocument* document, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(6, 6, 6, 6);
     layout->addWidget(m_note);
-    layout->addWidget(m_planBox);
     layout->addLayout(form);
     layout->addLayout(header);
     layout->addWidget(m_plainModels);
@@ -215,7 +213,9 @@ void AccuracyReadout::showPlan(const std::optional<PlanAccuracy>& plan) {
     m_plan = plan;
     if (m_plan)
         fillPlan();
-    m_planBox->setVisible(m_plan.has_value());
+    for (QWidget* row : {static_cast<QWidget*>(m_planTitle), static_cast<QWidget*>(m_planEndError),
+                         static_cast<QWidget*>(m_planOptimal)})
+        m_form->setRowVisible(row, m_plan.has_value());
 }
 
 void AccuracyReadout::fillPlan() {
@@ -226,9 +226,9 @@ void AccuracyReadout::fillPlan() {
                              .arg(p.t, 0, 'f', 3));
     m_planEndError->setText(relative(p.endError));
     const QString cut =
-        std::isfinite(p.cutTime) ? tr("%1 s").arg(p.cutTime, 0, 'f', 3) : QStringLiteral("∞");
+        std::isfinite(p.cutTime) ? tr("%1 s").arg(p.cutTime, 0, 'f', 3) : QStringLiteral("\u221e");
     if (p.optimal)
-        m_planOptimal->setText(tr("certified: t ≤ cut time %1").arg(cut));
+        m_planOptimal->setText(tr("certified: t \u2264 cut time %1").arg(cut));
     else if (p.t > p.cutTime)
         m_planOptimal->setText(tr("no: t > cut time %1, a faster motion exists").arg(cut));
     else

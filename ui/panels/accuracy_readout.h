@@ -5,6 +5,7 @@
 
 #include <optional>
 
+class QFormLayout;
 class QLabel;
 class QToolButton;
 
@@ -83,7 +84,7 @@ class AccuracyReadout : public QWidget {
     void fillPlan();
 
     QLabel* m_note;
-    QWidget* m_planBox;
+    QFormLayout* m_form;
     QLabel* m_planTitle;
     QLabel* m_planEndError;
     QLabel* m_planOptimal;
