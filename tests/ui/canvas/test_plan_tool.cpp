@@ -6,6 +6,7 @@
 #include "canvas/plan_tool.h"
 #include "canvas/scene_canvas.h"
 #include "common/input_error.h"
+#include "document/plot_series.h"
 #include "document/scene_document.h"
 #include "gui_test_support.h"
 #include "panels/accuracy_readout.h"
@@ -18,6 +19,7 @@
 #include "shell/timeline_bar.h"
 
 #include <QAction>
+#include <QElapsedTimer>
 #include <QMenuBar>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -484,6 +486,15 @@ void TestPlanTool::thePlotsAndTheAccuracyDockShowTheChosenMotion() {
         QVERIFY(!accuracy->planEndErrorText().isEmpty());
         QCOMPARE(accuracy->planOptimalText().startsWith(QStringLiteral("certified")), g.optimal);
     };
+    {
+        // what a plan made while dragging costs the UI thread for the plots
+        QElapsedTimer clock;
+        clock.start();
+        plots->showPlan(
+            collectPlanSeries(m_tool->plannedRequest(), m_tool->planned().geodesics[0]));
+        plots->replotNow();
+        qInfo("the plots of a planned motion drawn in %.2f ms", clock.nsecsElapsed() * 1e-6);
+    }
     const PlannedGeodesic first = m_tool->planned().geodesics.at(0);
     QVERIFY(first.optimal);
     QCOMPARE(m_tool->playTime(), first.t);
