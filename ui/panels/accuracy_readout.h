@@ -79,10 +79,10 @@ class AccuracyReadout : public QWidget {
     void onSolutionChanged();
     /// The time label keeps one size, so that a new time lays out nothing.
     void fixTimeSize();
-
-    SceneDocument* m_document;
+    /// The plan's rows from m_plan.
     void fillPlan();
 
+    SceneDocument* m_document;
     QLabel* m_note;
     QFormLayout* m_form;
     QLabel* m_planTitle;
