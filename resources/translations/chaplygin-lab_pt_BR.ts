@@ -613,6 +613,22 @@ realimentação: %2</translation>
         <source>Pushed bodies: lateral error e(t) and heading error θ(t)</source>
         <translation>Corpos empurrados: erro lateral e(t) e erro de rumo θ(t)</translation>
     </message>
+    <message>
+        <source>planned Ψ (vakonomic)</source>
+        <translation>Ψ planejado (vakonômico)</translation>
+    </message>
+    <message>
+        <source>planned χ (vakonomic)</source>
+        <translation>χ planejado (vakonômico)</translation>
+    </message>
+    <message>
+        <source>planned λ (eq. 21)</source>
+        <translation>λ planejado (eq. 21)</translation>
+    </message>
+    <message>
+        <source>planned T (vakonomic)</source>
+        <translation>T planejado (vakonômico)</translation>
+    </message>
 </context>
 <context>
     <name>PlotSeries</name>
@@ -1090,6 +1106,42 @@ realimentação: %2</translation>
     <message>
         <source>The models and numerical methods in technical terms</source>
         <translation>Os modelos e os métodos numéricos em termos técnicos</translation>
+    </message>
+    <message>
+        <source>How far the planned motion&apos;s end is from the target pose: |Δx|/b + |Δy|/b + |Δφ mod 2π|, from its closed form</source>
+        <translation>A distância do fim do movimento planejado à pose alvo: |Δx|/b + |Δy|/b + |Δφ mod 2π|, da sua forma fechada</translation>
+    </message>
+    <message>
+        <source>A motion is the fastest to the target up to its cut time, the first time another motion of the same length meets it</source>
+        <translation>Um movimento é o mais rápido até o alvo até o seu tempo de corte, o primeiro instante em que outro movimento do mesmo comprimento o encontra</translation>
+    </message>
+    <message>
+        <source>end error</source>
+        <translation>erro no fim</translation>
+    </message>
+    <message>
+        <source>optimal</source>
+        <translation>ótimo</translation>
+    </message>
+    <message>
+        <source>&lt;b&gt;Plan: motion %1 of %2&lt;/b&gt; (t = %3 s)</source>
+        <translation>&lt;b&gt;Plano: movimento %1 de %2&lt;/b&gt; (t = %3 s)</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>certified: t ≤ cut time %1</source>
+        <translation>certificado: t ≤ tempo de corte %1</translation>
+    </message>
+    <message>
+        <source>no: t &gt; cut time %1, a faster motion exists</source>
+        <translation>não: t &gt; tempo de corte %1, existe um movimento mais rápido</translation>
+    </message>
+    <message>
+        <source>not certified (cut time %1)</source>
+        <translation>não certificado (tempo de corte %1)</translation>
     </message>
 </context>
 <context>

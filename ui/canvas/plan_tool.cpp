@@ -76,12 +76,14 @@ void PlanTool::play() {
 void PlanTool::showAt(double t) {
     const int i = chosen();
     m_playTime = i < 0 ? -1 : std::clamp(t, 0.0, m_planned.geodesics[std::size_t(i)].t);
+    emit playTimeChanged(m_playTime);
     emit changed();
 }
 
 void PlanTool::stopPlaying() {
     m_playTimer.stop();
     m_playTime = -1;
+    emit playTimeChanged(m_playTime);
     emit changed();
 }
 
@@ -174,6 +176,8 @@ void PlanTool::syncFromDocument() {
     const Scene& scene = m_document->scene();
     m_plan = scene.plan ? *scene.plan : defaultPlan();
     replan();
+    emit planChanged();
+    emit playTimeChanged(m_playTime);
     emit changed();
 }
 
@@ -320,6 +324,7 @@ void PlanTool::takeBackgroundPlan() {
         if (m_error.isEmpty() && m_planned.geodesics.empty())
             m_error = tr("No motion reaches the target within %1 s").arg(m_planned.horizon);
         ++m_planId;
+        emit planChanged();
         emit changed();
     }
     if (m_nextRequest && active())
@@ -356,6 +361,7 @@ void PlanTool::commit(const ScenePlan& plan, const QString& description) {
     scene.plan = plan;
     m_plan = plan;
     m_document->edit(scene, description);
+    emit planChanged();
     emit changed();
 }
 

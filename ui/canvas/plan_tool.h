@@ -75,6 +75,13 @@ class PlanTool : public CanvasTool {
     /// time (docs/physics.md §10).
     QString chosenSummary() const;
 
+  signals:
+    /// A new plan drawn (after a change, an undo, a load, a plan made while dragging): the
+    /// chosen motion may be another.
+    void planChanged();
+    /// The played time changed (showAt, stopPlaying): playTime().
+    void playTimeChanged(double t);
+
   public slots:
     /// The document's plan and solution again (after a change, an undo, a load).
     void syncFromDocument();

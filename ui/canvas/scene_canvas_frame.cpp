@@ -340,7 +340,13 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         m_edgeMarkersPainted = {};
         for (const EdgeMarker& marker : m_edgeMarkers)
             m_edgeMarkersPainted += marker.box.toAlignedRect().adjusted(-2, -2, 2, 2);
-        paintTimeReadout(p, solution->tEnd());
+        // a planned motion played: its time along it and its arrival (docs/physics.md §10)
+        const int played = m_planMode && m_planTool->playTime() >= 0 ? m_planTool->chosen() : -1;
+        if (played >= 0)
+            paintTimeReadout(p, m_planTool->playTime(),
+                             m_planTool->planned().geodesics[std::size_t(played)].t);
+        else
+            paintTimeReadout(p, m_time, solution->tEnd());
         m_movingPainted = movingBounds(*solution, *now, m_time);
     } else {
         m_movingPainted = {};
@@ -495,6 +501,7 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     p.restore();
 }
 
+<<<<<<< HEAD
 namespace {
 
 // black text in a white halo: legible over the bodies and trails that pass under it
@@ -510,6 +517,9 @@ void drawHaloText(QPainter& p, const QRectF& box, int flags, const QString& text
 } // namespace
 
 void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
+=======
+void SceneCanvas::paintTimeReadout(QPainter& p, double t, double tEnd) const {
+>>>>>>> plan-plots
     QFont f = font();
     const double halo = std::max(1.0, std::round(m_look.style.lineScale));
     if (m_look.style.largeTime) {
@@ -517,7 +527,7 @@ void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
         f.setPointSizeF(9 * m_look.style.lineScale * 2);
         f.setBold(true);
         p.setFont(f);
-        const QString now = tr("t = %1 s").arg(m_time, 0, 'f', 2);
+        const QString now = tr("t = %1 s").arg(t, 0, 'f', 2);
         QRectF band(10, 0, width() - 20, topBandPx());
         drawHaloText(p, band, Qt::AlignLeft | Qt::AlignVCenter, now, halo);
         double after =
@@ -532,7 +542,7 @@ void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
     f.setPointSizeF(9 * m_look.style.lineScale);
     p.setFont(f);
     QString readout = tr("t = %1 s of %2 s    scale %3 px/m")
-                          .arg(m_time, 0, 'f', 2)
+                          .arg(t, 0, 'f', 2)
                           .arg(tEnd, 0, 'f', 2)
                           .arg(m_view.scale(), 0, 'g', 3);
     // said, not hidden: a curve too dense for a frame at this zoom ends where its budget did

@@ -1,6 +1,7 @@
 #include "document/plot_series.h"
 
 #include "common/input_error.h"
+#include "planning/planned_samples.h"
 
 #include <QCoreApplication>
 
@@ -111,6 +112,29 @@ PlotSeries collectSeries(const Solution& solution, int freeSamples, int exactSam
             p.pathX << n.x;
             p.pathY << n.y;
         }
+    }
+    return p;
+}
+
+PlotSeries collectPlanSeries(const PlanRequest& request, const PlannedGeodesic& motion,
+                             int samples) {
+    PlotSeries p;
+    p.planned = true;
+    p.tEnd = motion.t;
+    for (const PlannedSample& s : samplePlannedMotion(request, motion, samples)) {
+        p.freeT << s.t;
+        p.freeX << s.free.x;
+        p.freeY << s.free.y;
+        p.freePsi << s.free.psi;
+        p.freeChi << s.free.chi;
+        p.freeEnergy << s.free.energy;
+        p.vakT << s.t;
+        p.vakX << s.vakonomic.x;
+        p.vakY << s.vakonomic.y;
+        p.vakPsi << s.vakonomic.psi;
+        p.vakChi << s.vakonomic.chi;
+        p.vakLambda << s.vakonomic.lambda;
+        p.vakEnergy << s.vakonomic.energy;
     }
     return p;
 }

@@ -1,4 +1,5 @@
 #pragma once
+#include "planning/pose_planner.h"
 #include "scene/solution.h"
 
 #include <QString>
@@ -21,12 +22,21 @@ struct PlotSeries {
     QVector<double> openE, openTheta, fbE, fbTheta;
     QVector<double> pathX, pathY; ///< the prescribed path, whole
     double tEnd = 0;
+    /// A planned motion's series (collectPlanSeries): no controlled body, the vakonomic columns
+    /// are the planned genuine vakonomic body, the free ones its ghost.
+    bool planned = false;
 };
 
 /// freeSamples: how many evenly spaced times for the free motion. exactSamples > 0 samples the
 /// controlled motion evenly in t as well (exact, slower: for exported figures); 0 takes the
 /// path table's nodes (cheap: for live plots).
 PlotSeries collectSeries(const Solution& solution, int freeSamples = 400, int exactSamples = 0);
+
+/// A planned motion (docs/physics.md §10) over [0, motion.t] at `samples` evenly spaced times:
+/// the genuine vakonomic body along it in the vakonomic columns and the free ghost from the same
+/// start in the free ones, from the core's closed forms (samplePlannedMotion).
+PlotSeries collectPlanSeries(const PlanRequest& request, const PlannedGeodesic& motion,
+                             int samples = 400);
 
 /// Throws InputError naming the series and the time of its first non-finite value. The tracking
 /// errors are left out: NaN there marks a lost closest point, and the plots leave it out.

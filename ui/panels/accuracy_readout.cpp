@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace chaplygin::ui {
 
@@ -67,6 +68,16 @@ AccuracyReadout::AccuracyReadout(SceneDocument* document, QWidget* parent)
     m_note->setFrameShape(QFrame::StyledPanel);
     m_note->setMargin(4);
     m_note->hide();
+    // the Plan tool's chosen motion: its end on the target and its certificate
+    m_planTitle = new QLabel;
+    m_planTitle->setObjectName(QStringLiteral("accuracyPlan"));
+    m_planEndError = valueLabel();
+    m_planEndError->setToolTip(
+        tr("How far the planned motion's end is from the target pose: |\u0394x|/b + |\u0394y|/b "
+           "+ |\u0394\u03c6 mod 2\u03c0|, from its closed form"));
+    m_planOptimal = valueLabel();
+    m_planOptimal->setToolTip(tr("A motion is the fastest to the target up to its cut time, the "
+                                 "first time another motion of the same length meets it"));
     m_time = new QLabel;
     m_time->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_time->setObjectName(QStringLiteral("accuracyTime"));
@@ -99,6 +110,14 @@ AccuracyReadout::AccuracyReadout(SceneDocument* document, QWidget* parent)
 
     auto* form = new QFormLayout;
     form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    // the plan's rows first, in the same columns as the scene's (shown in plan mode only)
+    form->addRow(m_planTitle);
+    form->addRow(tr("end error"), m_planEndError);
+    form->addRow(tr("optimal"), m_planOptimal);
+    for (QWidget* row : {static_cast<QWidget*>(m_planTitle), static_cast<QWidget*>(m_planEndError),
+                         static_cast<QWidget*>(m_planOptimal)})
+        form->setRowVisible(row, false);
+    m_form = form;
     form->addRow(tr("t"), m_time);
     form->addRow(tr("off the path"), m_tracking);
     form->addRow(tr("vs closed form"), m_paper);
@@ -180,6 +199,40 @@ void AccuracyReadout::setNote(const QString& title, const QString& text, bool wa
     m_note->setText(
         withDottedSymbolFont(QStringLiteral("<b>%1</b><br>%2").arg(title.toHtmlEscaped(), body)));
     m_note->show();
+}
+
+QString AccuracyReadout::planEndErrorText() const {
+    return m_plan ? m_planEndError->text() : QString();
+}
+
+QString AccuracyReadout::planOptimalText() const {
+    return m_plan ? m_planOptimal->text() : QString();
+}
+
+void AccuracyReadout::showPlan(const std::optional<PlanAccuracy>& plan) {
+    m_plan = plan;
+    if (m_plan)
+        fillPlan();
+    for (QWidget* row : {static_cast<QWidget*>(m_planTitle), static_cast<QWidget*>(m_planEndError),
+                         static_cast<QWidget*>(m_planOptimal)})
+        m_form->setRowVisible(row, m_plan.has_value());
+}
+
+void AccuracyReadout::fillPlan() {
+    const PlanAccuracy& p = *m_plan;
+    m_planTitle->setText(tr("<b>Plan: motion %1 of %2</b> (t = %3 s)")
+                             .arg(p.index)
+                             .arg(p.count)
+                             .arg(p.t, 0, 'f', 3));
+    m_planEndError->setText(relative(p.endError));
+    const QString cut =
+        std::isfinite(p.cutTime) ? tr("%1 s").arg(p.cutTime, 0, 'f', 3) : QStringLiteral("\u221e");
+    if (p.optimal)
+        m_planOptimal->setText(tr("certified: t \u2264 cut time %1").arg(cut));
+    else if (p.t > p.cutTime)
+        m_planOptimal->setText(tr("no: t > cut time %1, a faster motion exists").arg(cut));
+    else
+        m_planOptimal->setText(tr("not certified (cut time %1)").arg(cut));
 }
 
 void AccuracyReadout::onSolutionChanged() {

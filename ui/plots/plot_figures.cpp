@@ -126,24 +126,33 @@ void rescale(QCPAxisRect* rect, bool equalAspect = false) {
 // a time plot: the controlled body sets the value range; the free and vakonomic bodies are
 // clipped at the frame with a mark where they leave (time_axes.h)
 void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSeries& s) {
+    // a planned motion has no controlled body: its genuine vakonomic body is the curve drawn
+    // solid, and every curve sets the value range (docs/physics.md §10)
     auto controlled = [rect](const QVector<double>& t, const QVector<double>& y,
                              const QString& name) {
-        setControlled(*addGraph(rect, t, y, name, kControlled));
+        if (!t.isEmpty())
+            setControlled(*addGraph(rect, t, y, name, kControlled));
     };
     auto free = [rect](const QVector<double>& t, const QVector<double>& y, const QString& name) {
         setClipped(*addGraph(rect, t, y, name, kFree, Qt::DashLine),
                    QCoreApplication::translate("PlotFigures", "free"));
     };
-    auto vakonomic = [rect](const QVector<double>& t, const QVector<double>& y,
-                            const QString& name) {
-        setClipped(*addGraph(rect, t, y, name, kVakonomic, Qt::DashDotLine),
-                   QCoreApplication::translate("PlotFigures", "vakonomic"));
+    auto vakonomic = [rect, &s](const QVector<double>& t, const QVector<double>& y,
+                                const QString& name) {
+        setClipped(
+            *addGraph(rect, t, y, name, kVakonomic, s.planned ? Qt::SolidLine : Qt::DashDotLine),
+            QCoreApplication::translate("PlotFigures", "vakonomic"));
+    };
+    auto named = [&s](const char* scene, const char* planned) {
+        return QCoreApplication::translate("PlotFigures", s.planned ? planned : scene);
     };
     switch (kind) {
     case PlotKind::Psi:
         controlled(s.t, s.psi, QCoreApplication::translate("PlotFigures", "controlled \u03a8"));
         free(s.freeT, s.freePsi, QCoreApplication::translate("PlotFigures", "free \u03a8"));
-        vakonomic(s.vakT, s.vakPsi, QCoreApplication::translate("PlotFigures", "vakonomic \u03a8"));
+        vakonomic(s.vakT, s.vakPsi,
+                  named(QT_TRANSLATE_NOOP("PlotFigures", "vakonomic \u03a8"),
+                        QT_TRANSLATE_NOOP("PlotFigures", "planned \u03a8 (vakonomic)")));
         labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03a8 [rad]"),
                QStringLiteral("\u03a8\n[rad]"));
         break;
@@ -151,7 +160,9 @@ void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSer
         controlled(s.t, s.chi, QCoreApplication::translate("PlotFigures", "controlled \u03c7"));
         free(s.freeT, s.freeChi,
              QCoreApplication::translate("PlotFigures", "free \u03c7 (constant)"));
-        vakonomic(s.vakT, s.vakChi, QCoreApplication::translate("PlotFigures", "vakonomic \u03c7"));
+        vakonomic(s.vakT, s.vakChi,
+                  named(QT_TRANSLATE_NOOP("PlotFigures", "vakonomic \u03c7"),
+                        QT_TRANSLATE_NOOP("PlotFigures", "planned \u03c7 (vakonomic)")));
         labels(rect, QStringLiteral("t [s]"),
                QStringLiteral("\u03c7 = \u03a8 \u2212 (a/b)\u03c6 [rad]"),
                QStringLiteral("\u03c7 [rad]"));
@@ -159,14 +170,17 @@ void timePlot(QCustomPlot& plot, QCPAxisRect* rect, PlotKind kind, const PlotSer
     case PlotKind::Lambda:
         controlled(s.t, s.lambda, QStringLiteral("\u03bb = m b d\u03c7/dt"));
         vakonomic(s.vakT, s.vakLambda,
-                  QCoreApplication::translate("PlotFigures", "vakonomic \u03bb (eq. 21)"));
+                  named(QT_TRANSLATE_NOOP("PlotFigures", "vakonomic \u03bb (eq. 21)"),
+                        QT_TRANSLATE_NOOP("PlotFigures", "planned \u03bb (eq. 21)")));
         labels(rect, QStringLiteral("t [s]"), QStringLiteral("\u03bb [kg m/s]"),
                QStringLiteral("\u03bb\n[kg m/s]"));
         break;
     case PlotKind::Energy:
         controlled(s.t, s.energy, QCoreApplication::translate("PlotFigures", "controlled T"));
         free(s.freeT, s.freeEnergy, QCoreApplication::translate("PlotFigures", "free T"));
-        vakonomic(s.vakT, s.vakEnergy, QCoreApplication::translate("PlotFigures", "vakonomic T"));
+        vakonomic(s.vakT, s.vakEnergy,
+                  named(QT_TRANSLATE_NOOP("PlotFigures", "vakonomic T"),
+                        QT_TRANSLATE_NOOP("PlotFigures", "planned T (vakonomic)")));
         labels(rect, QStringLiteral("t [s]"),
                QCoreApplication::translate("PlotFigures", "kinetic energy T [J]"),
                QStringLiteral("T [J]"));

@@ -75,7 +75,10 @@ void PlotsPanel::makeSeekable(QCustomPlot* plot) {
             if (e->position().x() >= rect->left() - 1 && e->position().x() <= rect->right() + 1)
                 if (double t = rect->axis(QCPAxis::atBottom)->pixelToCoord(e->position().x());
                     std::isfinite(t)) {
-                    emit seekRequested(t);
+                    if (m_plan)
+                        emit planSeekRequested(t);
+                    else
+                        emit seekRequested(t);
                     return;
                 }
     };
@@ -125,12 +128,13 @@ bool PlotsPanel::eventFilter(QObject* watched, QEvent* event) {
 
 void PlotsPanel::refresh() {
     for (int i = 0; i < 4; ++i) {
-        drawPlot(*m_plots[i], kKinds[i], m_document->series());
-        addPinnedSeries(*m_plots[i], kKinds[i], *m_document->pins());
+        drawPlot(*m_plots[i], kKinds[i], m_plan ? *m_plan : m_document->series());
+        if (!m_plan) // the pinned runs are the scene's
+            addPinnedSeries(*m_plots[i], kKinds[i], *m_document->pins());
         fitLegendToWidth(*m_plots[i]);
         m_plots[i]->replot(QCustomPlot::rpQueuedReplot);
     }
-    const bool perturbed = m_document->series().perturbed;
+    const bool perturbed = !m_plan && m_document->series().perturbed;
     m_errorPlot->setVisible(perturbed);
     if (perturbed != m_errorsShown) {
         m_errorsShown = perturbed;
@@ -149,8 +153,9 @@ void PlotsPanel::placeCursor(QCustomPlot* plot, int rectIndex, QWidget* cursor) 
     }
     QCPAxisRect* rect = plot->axisRect(rectIndex);
     QCPAxis* axis = rect->axis(QCPAxis::atBottom);
-    double x = axis->coordToPixel(m_time);
-    bool inside = axis->range().contains(m_time) && rect->height() > 0;
+    const double t = cursorTime();
+    double x = axis->coordToPixel(t);
+    bool inside = t >= 0 && axis->range().contains(t) && rect->height() > 0;
     cursor->setGeometry(int(std::lround(x)) - 1, rect->top(), 2, rect->height());
     cursor->setVisible(inside);
 }
@@ -164,6 +169,25 @@ void PlotsPanel::placeCursors() {
 
 void PlotsPanel::setTime(double t) {
     m_time = t;
+    placeCursors();
+}
+
+void PlotsPanel::showPlan(const PlotSeries& series) {
+    m_plan = series;
+    refresh();
+}
+
+void PlotsPanel::setPlanTime(double t) {
+    m_planTime = t;
+    placeCursors();
+}
+
+void PlotsPanel::showScene() {
+    if (!m_plan)
+        return;
+    m_plan.reset();
+    m_planTime = -1;
+    refresh();
     placeCursors();
 }
 

@@ -4,6 +4,7 @@
 #include <QWidget>
 
 #include <array>
+#include <optional>
 
 class QAction;
 class QCustomPlot;
@@ -30,7 +31,10 @@ class PlotsPanel : public QWidget {
     /// curves" action.
     QMenu* contextMenu(int index) const { return m_menus[index]; }
     QAction* fitAllAction(int index) const { return m_fitAll[index]; }
-    double cursorTime() const { return m_time; }
+    /// The time the cursor shows: the scene's, or the planned motion's while one is shown.
+    double cursorTime() const { return m_plan ? m_planTime : m_time; }
+    /// Whether the plots show a planned motion (showPlan) rather than the scene's.
+    bool showsPlan() const { return m_plan.has_value(); }
     /// The time cursor drawn over a plot.
     QWidget* cursor(int index) const { return m_cursors[index]; }
     /// The perturbed bodies' errors against t (docs/physics.md §9), shown beside a row of the
@@ -43,6 +47,11 @@ class PlotsPanel : public QWidget {
     /// Hands the document's series to the plots (after each recompute).
     void refresh();
     void setTime(double t);
+    /// The Plan tool's chosen motion (docs/physics.md §10): its series instead of the scene's,
+    /// until showScene; the cursor at setPlanTime's time (hidden while it is negative).
+    void showPlan(const PlotSeries& series);
+    void setPlanTime(double t);
+    void showScene();
     /// Repaints every plot now (for screenshots and the benchmark).
     void replotNow();
     /// Font and line scale and palette of the plots (presentation mode).
@@ -50,6 +59,8 @@ class PlotsPanel : public QWidget {
 
   signals:
     void seekRequested(double t);
+    /// A click or drag on a plot while it shows a planned motion: that time along it.
+    void planSeekRequested(double t);
     /// Exporting a plot from its context menu failed.
     void exportFailed(const QString& message);
 
@@ -73,6 +84,8 @@ class PlotsPanel : public QWidget {
     std::array<QWidget*, 2> m_errorCursors{};
     bool m_errorsShown = false;
     double m_time = 0;
+    std::optional<PlotSeries> m_plan;
+    double m_planTime = -1;
     QGridLayout* m_grid;
     int m_columns = 2;
 };

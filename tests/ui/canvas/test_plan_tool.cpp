@@ -1,22 +1,29 @@
 // The Plan tool (docs/physics.md §10) driven with the mouse: its action in the menu, on the
 // toolbar and on a key; the target dragged by its handles; the drawn tracks against the
 // geodesic integrated here by RK4 from the planned start (not the closed form the tool draws);
-// choosing a motion by a click; one undo step per change; the plan in the scene file.
+// choosing a motion by a click; one undo step per change; the plan in the scene file; while a
+// motion is chosen, the plots of Psi, chi, lambda and T and the Accuracy dock are its own.
 #include "canvas/plan_tool.h"
 #include "canvas/scene_canvas.h"
 #include "common/input_error.h"
+#include "document/plot_series.h"
 #include "document/scene_document.h"
 #include "gui_test_support.h"
+#include "panels/accuracy_readout.h"
+#include "plots/plots_panel.h"
 #include "scene/scene_json.h"
 #include "scene/scene_plan.h"
 #include "shell/main_window.h"
+#include "shell/playback.h"
 #include "shell/presentation_mode.h"
 #include "shell/timeline_bar.h"
 
 #include <QAction>
+#include <QElapsedTimer>
 #include <QMenuBar>
 #include <QTemporaryDir>
 #include <QtTest>
+#include <qcustomplot.h>
 
 #include <algorithm>
 #include <cmath>
@@ -71,6 +78,44 @@ std::vector<Knife> integrateKnife(Knife k, double b, double v, double t, int n) 
     return out;
 }
 
+struct FreeKnife {
+    double x, y, phi, sdot, phidot;
+};
+
+// the free (Lagrange-d'Alembert) sleigh, sddot = a phidot^2, phiddot = -a sdot phidot / b^2,
+// x' = sdot cos phi, y' = sdot sin phi (paper (D12)-(D15)), by classical RK4 in n steps to t
+std::vector<FreeKnife> integrateFree(FreeKnife k, double a, double b, double t, int n) {
+    auto rate = [&](const FreeKnife& s) {
+        return FreeKnife{s.sdot * std::cos(s.phi), s.sdot * std::sin(s.phi), s.phidot,
+                         a * s.phidot * s.phidot, -a * s.sdot * s.phidot / (b * b)};
+    };
+    auto step = [](const FreeKnife& s, const FreeKnife& d, double h) {
+        return FreeKnife{s.x + h * d.x, s.y + h * d.y, s.phi + h * d.phi, s.sdot + h * d.sdot,
+                         s.phidot + h * d.phidot};
+    };
+    std::vector<FreeKnife> out{k};
+    const double h = t / n;
+    for (int i = 0; i < n; ++i) {
+        const FreeKnife k1 = rate(k), k2 = rate(step(k, k1, h / 2)), k3 = rate(step(k, k2, h / 2)),
+                        k4 = rate(step(k, k3, h));
+        auto mix = [&](double FreeKnife::*f) {
+            return k.*f + h / 6 * (k1.*f + 2 * k2.*f + 2 * k3.*f + k4.*f);
+        };
+        k = FreeKnife{mix(&FreeKnife::x), mix(&FreeKnife::y), mix(&FreeKnife::phi),
+                      mix(&FreeKnife::sdot), mix(&FreeKnife::phidot)};
+        out.push_back(k);
+    }
+    return out;
+}
+
+// the graph of `plot` named `name`, or null
+QCPGraph* graphNamed(QCustomPlot* plot, const QString& name) {
+    for (int i = 0; i < plot->graphCount(); ++i)
+        if (plot->graph(i)->name() == name)
+            return plot->graph(i);
+    return nullptr;
+}
+
 double distanceToSegment(QPointF p, QPointF a, QPointF b) {
     const QPointF ab = b - a, ap = p - a;
     const double len2 = QPointF::dotProduct(ab, ab);
@@ -119,6 +164,7 @@ class TestPlanTool : public QObject {
     void undoRestoresThePlan();
     void trackingThePlanMakesItThePath();
     void playAnimatesTheChosenMotion();
+    void thePlotsAndTheAccuracyDockShowTheChosenMotion();
     void thePlanIsSavedAndRestored();
     void aBadPlanInAFileIsRefusedNamingItsField();
     void fitsAt1024x768AndInPresentation();
@@ -335,6 +381,170 @@ void TestPlanTool::playAnimatesTheChosenMotion() {
     m_canvas->setPlanMode(false);
     QVERIFY(!play->isEnabled());
     QCOMPARE(m_tool->playTime(), -1.0);
+}
+
+void TestPlanTool::thePlotsAndTheAccuracyDockShowTheChosenMotion() {
+    Scene s = straightScene();
+    s.plan = ScenePlan{};
+    s.plan->to = {1.5, 2.0, -2.0};
+    m_window->document()->loadNow(s);
+    PlotsPanel* plots = m_window->plotsPanel();
+    AccuracyReadout* accuracy = m_window->accuracyReadout();
+    // a scene with a plan opens in plan mode: its plots at once
+    QVERIFY(m_canvas->planMode());
+    QVERIFY(plots->showsPlan());
+    QVERIFY(accuracy->plan());
+    m_canvas->setPlanMode(false);
+    QVERIFY(!plots->showsPlan());
+    QVERIFY(!accuracy->plan());
+    m_canvas->setPlanMode(true);
+    QCOMPARE(m_tool->chosen(), 0);
+    QVERIFY(plots->showsPlan());
+    // the motion played to its end: the cursor at the played time
+    QAction* play = m_window->findChild<QAction*>(QStringLiteral("playPlanAction"));
+    play->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(m_tool->playTime() > 0.3, 3000);
+    QCOMPARE(plots->cursorTime(), m_tool->playTime());
+    QTRY_VERIFY_WITH_TIMEOUT(!m_tool->playing(), 15000);
+
+    const DerivedSystem& sys = m_window->document()->solution()->system();
+    const double m = sys.mass, a = sys.a, b = sys.b, v = m_window->document()->scene().speed;
+    QVERIFY(a != 0); // chi differs from Psi, and the ghost turns
+    // each chosen motion: the plotted curves against RK4 integrations of the knife and of the
+    // free sleigh from the planned start, at the plotted times
+    auto checkCurves = [&](const PlannedGeodesic& g) {
+        QCOMPARE(plots->cursorTime(), m_tool->playTime());
+        QVERIFY(plots->showsPlan());
+        const QString names[4][2] = {
+            {QStringLiteral("planned \u03a8 (vakonomic)"), QStringLiteral("free \u03a8")},
+            {QStringLiteral("planned \u03c7 (vakonomic)"),
+             QStringLiteral("free \u03c7 (constant)")},
+            {QStringLiteral("planned \u03bb (eq. 21)"), QString()},
+            {QStringLiteral("planned T (vakonomic)"), QStringLiteral("free T")}};
+        QCPGraph* body = graphNamed(plots->plot(0), names[0][0]);
+        QVERIFY(body);
+        const int n = body->dataCount();
+        QVERIFY(n >= 100);
+        const int sub = 40, steps = (n - 1) * sub;
+        const auto knife = integrateKnife({0, 0, 0, g.psi0, g.psidot0}, b, v, g.t, steps);
+        const auto ghost = integrateFree({0, 0, 0, v * std::sin(g.psi0), v * std::cos(g.psi0) / b},
+                                         a, b, g.t, steps);
+        double worst[4][2] = {};
+        for (int kind = 0; kind < 4; ++kind) {
+            // no controlled body: the scene's curves are gone
+            QVERIFY(!graphNamed(plots->plot(kind), QStringLiteral("controlled \u03a8")));
+            for (int who = 0; who < 2; ++who) {
+                if (names[kind][who].isEmpty()) // the free body has no multiplier
+                    continue;
+                QCPGraph* graph = graphNamed(plots->plot(kind), names[kind][who]);
+                QVERIFY2(graph, qPrintable(names[kind][who]));
+                QCOMPARE(graph->dataCount(), n);
+                for (int i = 0; i < n; ++i) {
+                    const QCPGraphData d = *graph->data()->at(i);
+                    QVERIFY(std::abs(d.key - g.t * i / (n - 1)) <= 1e-12 * g.t);
+                    const Knife& k = knife[std::size_t(i * sub)];
+                    const FreeKnife& f = ghost[std::size_t(i * sub)];
+                    const double fpsi = std::atan2(f.sdot, b * f.phidot);
+                    double miss = 0;
+                    switch (kind) {
+                    case 0: // Psi, the branch the closed form keeps continuous
+                        miss = angleMiss(d.value, who == 0 ? k.psi : fpsi);
+                        break;
+                    case 1: // chi = Psi - (a/b) phi
+                        miss = angleMiss(d.value,
+                                         who == 0 ? k.psi - a / b * k.phi : fpsi - a / b * f.phi);
+                        break;
+                    case 2: // lambda = m (b Psidot - a phidot), phidot = v cos Psi / b
+                        miss = std::abs(d.value - m * (b * k.lambda - a * v * std::cos(k.psi) / b));
+                        break;
+                    case 3: // T = (m/2)(sdot^2 + b^2 phidot^2)
+                        miss = std::abs(
+                            d.value -
+                            (who == 0 ? 0.5 * m * v * v
+                                      : 0.5 * m * (f.sdot * f.sdot + b * b * f.phidot * f.phidot)));
+                        break;
+                    }
+                    worst[kind][who] = std::max(worst[kind][who], miss);
+                }
+            }
+        }
+        qInfo("motion of %.4f s, worst against RK4: Psi %.1e / free %.1e, chi %.1e / free %.1e, "
+              "lambda %.1e, T %.1e / free %.1e",
+              g.t, worst[0][0], worst[0][1], worst[1][0], worst[1][1], worst[2][0], worst[3][0],
+              worst[3][1]);
+        for (const auto& row : worst)
+            for (double w : row)
+                QVERIFY2(w < 1e-11, qPrintable(QString::number(w)));
+        // the Accuracy dock: the end on the target and the certificate
+        QVERIFY(accuracy->plan());
+        QVERIFY(
+            accuracy->findChild<QWidget*>(QStringLiteral("accuracyPlan"))->isVisibleTo(accuracy));
+        QCOMPARE(accuracy->plan()->t, g.t);
+        QVERIFY2(accuracy->plan()->endError < 1e-10,
+                 qPrintable(QString::number(accuracy->plan()->endError)));
+        QCOMPARE(accuracy->plan()->optimal, g.optimal);
+        QVERIFY(!accuracy->planEndErrorText().isEmpty());
+        QCOMPARE(accuracy->planOptimalText().startsWith(QStringLiteral("certified")), g.optimal);
+    };
+    {
+        // what a plan made while dragging costs the UI thread for the plots
+        QElapsedTimer clock;
+        clock.start();
+        plots->showPlan(
+            collectPlanSeries(m_tool->plannedRequest(), m_tool->planned().geodesics[0]));
+        plots->replotNow();
+        qInfo("the plots of a planned motion drawn in %.2f ms", clock.nsecsElapsed() * 1e-6);
+    }
+    const PlannedGeodesic first = m_tool->planned().geodesics.at(0);
+    QVERIFY(first.optimal);
+    QCOMPARE(m_tool->playTime(), first.t);
+    checkCurves(first);
+    QCOMPARE(accuracy->plan()->index, 1);
+    // the cursor drawn at the played time, and a click on a plot moves the played bodies there
+    plots->replotNow();
+    QCPAxis* axis = plots->plot(0)->axisRect()->axis(QCPAxis::atBottom);
+    QVERIFY(plots->cursor(0)->isVisible());
+    QVERIFY(std::abs(plots->cursor(0)->geometry().center().x() + 0.5 -
+                     axis->coordToPixel(first.t)) <= 1.5);
+    const QPoint at(int(std::lround(axis->coordToPixel(1.0))),
+                    plots->plot(0)->axisRect()->center().y());
+    QTest::mouseClick(plots->plot(0), Qt::LeftButton, {}, at);
+    QVERIFY2(std::abs(m_tool->playTime() - 1.0) <=
+                 2 * axis->range().size() / axis->axisRect()->width(),
+             qPrintable(QString::number(m_tool->playTime())));
+    QCOMPARE(plots->cursorTime(), m_tool->playTime());
+    QCOMPARE(m_window->playback()->time(), 0.0); // the scene's clock stays
+    // CHAPLYGIN_PLAN_SHOTS: a folder for the picture to look at
+    if (const QString shots = qEnvironmentVariable("CHAPLYGIN_PLAN_SHOTS"); !shots.isEmpty()) {
+        plots->replotNow();
+        QVERIFY(m_window->grab().save(shots + QStringLiteral("/plan-played.png")));
+    }
+
+    // another motion chosen: its curves, not the first's; not the least time, not optimal
+    const int last = int(m_tool->planned().geodesics.size()) - 1;
+    QVERIFY(last >= 1);
+    Scene other = m_window->document()->scene();
+    other.plan->choice = last;
+    m_window->document()->edit(other, QStringLiteral("choose"));
+    m_window->document()->flush();
+    QCOMPARE(m_tool->chosen(), last);
+    const PlannedGeodesic later = m_tool->planned().geodesics.at(std::size_t(last));
+    QVERIFY(!later.optimal);
+    m_tool->showAt(0.5 * later.t);
+    checkCurves(later);
+    QCOMPARE(accuracy->plan()->index, last + 1);
+    QCOMPARE(accuracy->plan()->count, last + 1);
+
+    // out of plan mode: the scene's plots and no plan in the Accuracy dock
+    m_canvas->setPlanMode(false);
+    QVERIFY(!plots->showsPlan());
+    QVERIFY(!accuracy->plan());
+    QVERIFY(!accuracy->findChild<QWidget*>(QStringLiteral("accuracyPlan"))->isVisibleTo(accuracy));
+    QCOMPARE(plots->cursorTime(), m_window->playback()->time());
+    QCPGraph* controlled = graphNamed(plots->plot(0), QStringLiteral("controlled \u03a8"));
+    QVERIFY(controlled);
+    QCOMPARE(controlled->dataCount(), int(m_window->document()->series().t.size()));
+    QVERIFY(!graphNamed(plots->plot(0), QStringLiteral("planned \u03a8 (vakonomic)")));
 }
 
 void TestPlanTool::trackingThePlanMakesItThePath() {
