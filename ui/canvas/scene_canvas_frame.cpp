@@ -501,7 +501,6 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     p.restore();
 }
 
-<<<<<<< HEAD
 namespace {
 
 // black text in a white halo: legible over the bodies and trails that pass under it
@@ -516,10 +515,7 @@ void drawHaloText(QPainter& p, const QRectF& box, int flags, const QString& text
 
 } // namespace
 
-void SceneCanvas::paintTimeReadout(QPainter& p, double tEnd) const {
-=======
 void SceneCanvas::paintTimeReadout(QPainter& p, double t, double tEnd) const {
->>>>>>> plan-plots
     QFont f = font();
     const double halo = std::max(1.0, std::round(m_look.style.lineScale));
     if (m_look.style.largeTime) {
