@@ -161,13 +161,12 @@ void SceneCanvas::placeScaleBars(const Solution& solution) {
     const BodyLook look = bodyLook();
     for (int k = 0; k <= kSamples; ++k) {
         const MotionSample at = solution.at(solution.tEnd() * k / kSamples);
-        forEachShownPose(at, m_look.vakonomic, drawsOpenLoop(), drawsClosedLoop(),
-                         [&](double x, double y, double phi) {
-                             const QRectF body = BodySprites::pixelBounds(
-                                 world, m_view.scale(), spec, solution.system(), {x, y, phi}, look);
-                             for (int c = 0; c < 3; ++c)
-                                 crossed[c] += body.intersects(QRectF(boxes[c])) ? 1 : 0;
-                         });
+        for (const DrawnBody& drawn : drawnBodies(at)) {
+            const QRectF body = BodySprites::pixelBounds(world, m_view.scale(), spec,
+                                                         solution.system(), drawn.pose, look);
+            for (int c = 0; c < 3; ++c)
+                crossed[c] += body.intersects(QRectF(boxes[c])) ? 1 : 0;
+        }
     }
     const int best = int(std::min_element(std::begin(crossed), std::end(crossed)) - crossed);
     if (kCorners[best] != m_vectors.barsCorner()) {
