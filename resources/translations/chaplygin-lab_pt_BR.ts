@@ -2556,6 +2556,10 @@ O que os estudantes devem observar…</translation>
         <translation>corpo controlado (segue o caminho)</translation>
     </message>
     <message>
+        <source>controlled body</source>
+        <translation>corpo controlado</translation>
+    </message>
+    <message>
         <source>free motion (ghost)</source>
         <translation>movimento livre (fantasma)</translation>
     </message>

@@ -2,6 +2,7 @@
 #include "canvas/trail_stroke.h"
 
 #include "canvas/layer_blit.h"
+#include "canvas/legend_text.h"
 #include "document/scene_document.h"
 
 #include <QFontMetricsF>
@@ -238,19 +239,18 @@ void SceneCanvas::paintLegend(QPainter& p) const {
         p.setPen(Qt::black);
         double tx = x + len + 6;
         // an entry's text, or its short form where the text does not fit its room (a narrow
-        // canvas in presentation type), elided only when even that does not fit
-        auto text = [&](double row, const QString& full, const QString& brief, double left = -1) {
+        // canvas in presentation type), or its shortest; elided only when even that does not fit
+        auto text = [&](double row, const QString& full, const QString& brief, double left = -1,
+                        const QString& shortest = {}) {
             const double from = left < 0 ? tx : left;
             const double right =
                 left < 0 && (perturbed || compact) && row < 2 ? x2 - 8 : width() - 4;
             QRectF r(from, y + row * dy - 0.5 * dy, right - from, dy);
-            const QFontMetricsF metrics = p.fontMetrics();
-            const QString& s = metrics.horizontalAdvance(full) <= r.width() ? full : brief;
             p.drawText(r, Qt::AlignLeft | Qt::AlignVCenter,
-                       p.fontMetrics().elidedText(s, Qt::ElideRight, int(r.width())));
+                       fittingLegendText(p.font(), p.device(), r.width(), {full, brief, shortest}));
         };
         text(0, tr("controlled body and its trail (tracks the path)"),
-             tr("controlled body (tracks the path)"));
+             tr("controlled body (tracks the path)"), -1, tr("controlled body"));
         text(1, tr("free motion from the same start (ghost)"), tr("free motion (ghost)"));
         if (drawsOpenLoop())
             text(0, tr("pushed, open loop: the nominal \u03bb(t) as planned"),

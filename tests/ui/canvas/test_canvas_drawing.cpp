@@ -1,6 +1,7 @@
 // GUI tests of the canvas's drawing economies that need no window: a trail stroked only where a
 // frame repaints, and a layer kept within areas by a coverage mask, each against the Qt drawing
 // it stands in for (docs/numerics.md §7). Offscreen, on images.
+#include "canvas/legend_text.h"
 #include "canvas/masked_layer.h"
 #include "canvas/trail_stroke.h"
 #include "pixel_difference.h"
@@ -43,6 +44,7 @@ class TestCanvasDrawing : public QObject {
   private slots:
     void trailStrokesWithinAnAreaDrawWhatDrawPolylineDraws();
     void maskedLayerDrawsWhatClipPathsDraw();
+    void legendTextTakesTheLongestFormThatFits();
 };
 
 void TestCanvasDrawing::trailStrokesWithinAnAreaDrawWhatDrawPolylineDraws() {
@@ -223,6 +225,32 @@ void TestCanvasDrawing::maskedLayerDrawsWhatClipPathsDraw() {
         QVERIFY2(inside > 2000 * zoom * zoom, qPrintable(what));
         QVERIFY2(edge > 1000 * zoom && edgeDiffering == 0, qPrintable(what));
     }
+}
+
+void TestCanvasDrawing::legendTextTakesTheLongestFormThatFits() {
+    // a legend entry in a room measured here: the full text, its brief form or its shortest,
+    // each whole when it fits, the shortest elided when none does (a narrow canvas presenting)
+    QImage device(800, 40, QImage::Format_ARGB32_Premultiplied);
+    QFont font;
+    font.setPointSizeF(18);
+    const QFontMetricsF metrics(font, &device);
+    const QString full = QStringLiteral("corpo controlado e seu rastro (segue o caminho)");
+    const QString brief = QStringLiteral("corpo controlado (segue o caminho)");
+    const QString shortest = QStringLiteral("corpo controlado");
+    const double wFull = metrics.horizontalAdvance(full), wBrief = metrics.horizontalAdvance(brief),
+                 wShortest = metrics.horizontalAdvance(shortest);
+    QVERIFY(wShortest < wBrief && wBrief < wFull);
+    QCOMPARE(fittingLegendText(font, &device, wFull, {full, brief, shortest}), full);
+    QCOMPARE(fittingLegendText(font, &device, wFull - 1, {full, brief, shortest}), brief);
+    QCOMPARE(fittingLegendText(font, &device, wBrief - 1, {full, brief, shortest}), shortest);
+    QCOMPARE(fittingLegendText(font, &device, wShortest, {full, brief, shortest}), shortest);
+    // no room for the shortest: it is elided, never a longer form
+    const QString elided =
+        fittingLegendText(font, &device, wShortest - 10, {full, brief, shortest});
+    QVERIFY2(elided.endsWith(QChar(0x2026)) && elided.size() < shortest.size(), qPrintable(elided));
+    // an entry without a shortest form keeps its brief one
+    QCOMPARE(fittingLegendText(font, &device, wBrief - 1, {full, brief, QString()}),
+             QFontMetrics(font, &device).elidedText(brief, Qt::ElideRight, int(wBrief - 1)));
 }
 
 QTEST_MAIN(TestCanvasDrawing)
