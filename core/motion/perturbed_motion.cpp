@@ -174,18 +174,31 @@ PerturbedMotion::PerturbedMotion(Kind kind, std::shared_ptr<const NominalControl
     : m_kind(kind),
       m_problem(std::make_shared<const Problem>(kind, std::move(nominal), std::move(frame), spec)) {
     const Problem& problem = *m_problem;
-    std::function<void(double, const double*)> check;
-    if (kind == Kind::Feedback)
-        check = [&problem](double t, const double* y) {
-            const std::string why = problem.outsideDomain(y);
-            if (!why.empty())
-                throw InputError("perturbation",
-                                 "the feedback body leaves the chained form's domain at t = " +
-                                     formatNumber(t) + " s: " + why +
-                                     " (docs/physics.md §9); try a smaller offset, a smaller "
-                                     "feedback rate or no |Psidot| limit");
-        };
-    OdeValue y = problem.start();
+    const char* body = kind == Kind::Feedback ? "the feedback body" : "the open-loop body";
+    // the last accepted step, and the step budget that bounds the work a scene may ask for
+    double tLast = 0;
+    long steps = 0;
+    const auto check = [&](double t, const double* y) {
+        tLast = t;
+        if (++steps > kPerturbedStepBudget)
+            throw InputError("perturbation",
+                             std::string(body) + " needs more than " +
+                                 std::to_string(kPerturbedStepBudget) +
+                                 " steps of the integrator by t = " + formatNumber(t) + " s of " +
+                                 formatNumber(tEnd) +
+                                 " s: the path turns too tightly for its offsets; try a smaller "
+                                 "offset or push, a smoother path or no perturbation");
+        if (kind != Kind::Feedback)
+            return;
+        const std::string why = problem.outsideDomain(y);
+        if (!why.empty())
+            throw InputError("perturbation",
+                             "the feedback body leaves the chained form's domain at t = " +
+                                 formatNumber(t) + " s: " + why +
+                                 " (docs/physics.md §9); try a smaller offset, a smaller "
+                                 "feedback rate or no |Psidot| limit");
+    };
+    OdeValue y{};
     double t0 = 0;
     const auto run = [&](double t1) {
         Segment seg{t0, integrateGslSteps(problem, GslStepper::Rk8pd, t0, y.data(), t1,
@@ -196,13 +209,23 @@ PerturbedMotion::PerturbedMotion(Kind kind, std::shared_ptr<const NominalControl
         y = seg.steps.y.back();
         m_segments.push_back(std::move(seg));
     };
-    if (spec.tPush && *spec.tPush > 0) {
-        run(*spec.tPush);
-        t0 = *spec.tPush;
+    try {
+        y = problem.start();
+        if (spec.tPush && *spec.tPush > 0) {
+            run(*spec.tPush);
+            t0 = *spec.tPush;
+        }
+        if (spec.tPush)
+            problem.push(y.data());
+        run(tEnd);
+    } catch (const PathProjectionError&) {
+        throw InputError(
+            "perturbation",
+            "the feedback body has no closest point on the path after t = " + formatNumber(tLast) +
+                " s: it is farther from the path than the path's bends allow "
+                "(docs/physics.md §9); try a smaller offset or push, or a smoother "
+                "path");
     }
-    if (spec.tPush)
-        problem.push(y.data());
-    run(tEnd);
 }
 
 PerturbedState PerturbedMotion::at(double t) const {

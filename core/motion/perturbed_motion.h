@@ -83,7 +83,8 @@ class PerturbedMotion {
   public:
     enum class Kind { OpenLoop, Feedback };
     /// Throws InputError("perturbation") when the feedback body leaves the domain of the chained
-    /// form (|theta_e| -> pi/2, 1 - kappa e -> 0 or Psi leaving (0, pi)).
+    /// form (|theta_e| -> pi/2, 1 - kappa e -> 0 or Psi leaving (0, pi)) or the path, or when a
+    /// body needs more than kPerturbedStepBudget steps.
     PerturbedMotion(Kind kind, std::shared_ptr<const NominalControl> nominal, PathFrame frame,
                     const PerturbationSpec& spec, double tEnd);
     PerturbedState at(double t) const;
@@ -111,5 +112,8 @@ class PerturbedMotion {
 
 /// The integrator's tolerance (abs = rel, GSL's standard control).
 constexpr double kPerturbedTolerance = 1e-12;
+/// The accepted steps one perturbed body may take (both runs, before and after a push): about
+/// 0.6 s of one core. A push on 2 km of y = -sin x takes 32,066.
+constexpr long kPerturbedStepBudget = 100'000;
 
 } // namespace chaplygin

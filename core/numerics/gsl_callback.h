@@ -8,8 +8,10 @@
 #include <gsl/gsl_sf_result.h>
 
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace chaplygin::gsl {
 
@@ -27,20 +29,38 @@ template <class F> struct FunctionAdapter {
     gsl_function function() { return gsl_function{&FunctionAdapter::call, this}; }
 };
 
+/// An exception thrown by the problem does not unwind through GSL's C frames: it is kept, GSL is
+/// told the function failed, and the caller rethrows it once GSL has returned.
 struct OdeAdapter {
     const OdeProblem* problem;
     OdeWork* work;
+    std::exception_ptr error = nullptr;
     static int rhs(double t, const double y[], double f[], void* self) {
         auto* a = static_cast<OdeAdapter*>(self);
         ++a->work->rhsEvals;
-        a->problem->rhs(t, y, f);
+        try {
+            a->problem->rhs(t, y, f);
+        } catch (...) {
+            a->error = std::current_exception();
+            return GSL_EBADFUNC;
+        }
         return GSL_SUCCESS;
     }
     static int jacobian(double t, const double y[], double* dfdy, double dfdt[], void* self) {
         auto* a = static_cast<OdeAdapter*>(self);
         ++a->work->jacobianEvals;
-        a->problem->jacobian(t, y, dfdy, dfdt);
+        try {
+            a->problem->jacobian(t, y, dfdy, dfdt);
+        } catch (...) {
+            a->error = std::current_exception();
+            return GSL_EBADFUNC;
+        }
         return GSL_SUCCESS;
+    }
+    /// After a GSL call that failed: the problem's own exception, if it threw one.
+    void rethrowProblemError() {
+        if (error)
+            std::rethrow_exception(std::exchange(error, nullptr));
     }
 };
 

@@ -97,9 +97,11 @@ void driveGsl(const OdeProblem& problem, GslStepper stepper, double t0, const do
     gsl_odeiv2_driver* d = driver.get();
     while (t < t1) {
         int status = gsl_odeiv2_evolve_apply(d->e, d->c, d->s, &sys, &t, t1, &h, y.data());
-        if (status != GSL_SUCCESS)
+        if (status != GSL_SUCCESS) {
+            adapter.rethrowProblemError();
             throw std::runtime_error(gslStepperName(stepper) + ": " + gsl_strerror(status) +
                                      " at t = " + std::to_string(t));
+        }
         // f(t, y) at the accepted point: every odeiv2 stepper leaves it in the evolve object's
         // dydt_out (already counted), equal bit for bit to a fresh evaluation
         std::copy_n(d->e->dydt_out, n, f.begin());
@@ -138,8 +140,10 @@ OdeWork integrateGslFixed(const OdeProblem& problem, GslStepper stepper, double 
     for (long i = 0; i < steps; ++i) {
         int status = gsl_odeiv2_step_apply(step.get(), t0 + h * static_cast<double>(i), h, y,
                                            err.data(), nullptr, nullptr, &sys);
-        if (status != GSL_SUCCESS)
+        if (status != GSL_SUCCESS) {
+            adapter.rethrowProblemError();
             throw std::runtime_error(gslStepperName(stepper) + ": fixed step failed");
+        }
     }
     work.steps = steps;
     return work;
@@ -171,8 +175,10 @@ std::vector<OdeValue> gslValuesAt(const OdeProblem& problem, GslStepper stepper,
         gsl_odeiv2_step_reset(step.get());
         int status = gsl_odeiv2_step_apply(step.get(), tk, t - tk, out[i].data(), err.data(),
                                            dydt.data(), nullptr, &sys);
-        if (status != GSL_SUCCESS)
+        if (status != GSL_SUCCESS) {
+            adapter.rethrowProblemError();
             throw std::runtime_error(gslStepperName(stepper) + ": dense step failed");
+        }
     }
     return out;
 }
@@ -212,9 +218,11 @@ void gslStepFrom(const OdeProblem& problem, GslStepper stepper, const GslSteps& 
     OdeValue err{}, dydt = steps.f[k];
     int status =
         gsl_odeiv2_step_apply(step.get(), tk, t - tk, out, err.data(), dydt.data(), nullptr, &sys);
-    if (status != GSL_SUCCESS)
+    if (status != GSL_SUCCESS) {
+        adapter.rethrowProblemError();
         throw std::runtime_error(gslStepperName(stepper) + ": step to t = " + std::to_string(t) +
                                  " failed");
+    }
 }
 
 } // namespace chaplygin

@@ -72,9 +72,7 @@ PathProjection PathFrame::project(double x, double y, double uGuess) const {
         u += du;
         p = at(u);
     }
-    throw std::runtime_error("internal error: the projection onto the path does not converge "
-                             "near u = " +
-                             std::to_string(uGuess));
+    throw PathProjectionError("no closest point on the path near u = " + std::to_string(uGuess));
 }
 
 } // namespace chaplygin

@@ -2,6 +2,7 @@
 #include "paths/path_table.h"
 
 #include <memory>
+#include <stdexcept>
 
 namespace chaplygin {
 
@@ -20,6 +21,12 @@ struct PathProjection {
     double e = 0;
 };
 
+/// Newton's projection found no closest point near its guess: the point is farther from the path
+/// than the path's bends allow (beyond a centre of curvature, or where the path folds back).
+struct PathProjectionError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 /// A smooth tabulated curve as a frame for the feedback law: the geometry at any u from the table's
 /// interpolants, continued beyond the ends along the osculating circle there (constant kappa), and
 /// the projection of a point by Newton's method from a nearby u.
@@ -32,7 +39,7 @@ class PathFrame {
     /// lines and circles, and on a panel left to exact evaluation).
     PathPoint at(double u) const;
     /// The closest point to (x, y) from the guess u: Newton on (P - r(u)) . t(u) = 0, whose
-    /// derivative is -|r'| (1 - kappa e). Throws std::runtime_error when it does not converge.
+    /// derivative is -|r'| (1 - kappa e). Throws PathProjectionError when it does not converge.
     PathProjection project(double x, double y, double uGuess) const;
     double u0() const { return m_u0; }
     double u1() const { return m_u1; }

@@ -10,8 +10,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <numbers>
 #include <string>
+#include <utility>
+#include <vector>
 
 using namespace chaplygin;
 using std::numbers::pi;
@@ -79,7 +82,86 @@ const PerturbedState& openLoop(const MotionSample& m) {
     return m.pert;
 }
 
+// A 3 cm zig-zag drawn far out (at 350 km) with the push scene's 1 m offset: the feedback body
+// circles the stroke's bends, and the integrator would take 3.8 million steps (24 s) before GSL's
+// own limit. The step budget refuses it by name within a second of CPU.
+Scene drawnStroke(std::vector<std::pair<double, double>> points) {
+    Scene s = presetScene("sinusoid");
+    s.preset.clear();
+    s.path.kind = PathKind::Polyline;
+    s.path.points = std::move(points);
+    s.path.corners = CornerMode::Smooth;
+    s.path.smoothing = 3;
+    s.speed = 2.6140999999999996;
+    s.system.params = {{"a", -2.0}, {"b", 5.0}, {"m", 10.0}};
+    Perturbation p;
+    p.dy = -1;
+    p.tPush = 3;
+    p.pushDy = 0.15;
+    p.pushPsi = 0.4;
+    s.perturbation = p;
+    return s;
+}
+
+std::string refusal(const Scene& s) {
+    try {
+        Solution::compute(s);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return {};
+}
+
+double cpuSeconds() {
+    return double(std::clock()) / CLOCKS_PER_SEC;
+}
+
 } // namespace
+
+TEST(PerturbedMotion, AStrokeTooTightForItsOffsetIsRefusedWithinTheStepBudget) {
+    const Scene s = drawnStroke({{350064.0838613769, -135204.6437590552},
+                                 {350064.08578219154, -135204.66571122236},
+                                 {350064.1313329383, -135204.69616985426},
+                                 {350064.10169751267, -135204.66132078893},
+                                 {350064.1036183273, -135204.6544607367},
+                                 {350064.13380255713, -135204.69836507097},
+                                 {350064.0926422438, -135204.67147366624},
+                                 {350064.1132224004, -135204.69370023545},
+                                 {350064.1247472882, -135204.68930980202},
+                                 {350064.1011487085, -135204.67394328504},
+                                 {350064.1236496798, -135204.68574257486},
+                                 {350064.10745995655, -135204.65775356177}});
+    const double start = cpuSeconds();
+    const std::string why = refusal(s);
+    const double cpu = cpuSeconds() - start;
+    EXPECT_NE(why.find("perturbation: the feedback body needs more than 100000 steps of the "
+                       "integrator by t = "),
+              std::string::npos)
+        << why;
+    // 100,000 rk8pd steps with a projection each: about 0.6 s here, 24 s without the budget
+    EXPECT_LT(cpu, 3.0);
+}
+
+TEST(PerturbedMotion, ABodyWithoutAClosestPointIsRefusedByName) {
+    const Scene s = drawnStroke({{274574.0344446973, -116459.56772572332},
+                                 {274574.03636551194, -116459.58967789046},
+                                 {274574.0819162587, -116459.62013652235},
+                                 {274574.0522808331, -116459.58528745703},
+                                 {274574.0542016477, -116459.57842740479},
+                                 {274574.08438587753, -116459.62233173907},
+                                 {274574.0432255642, -116459.59544033432},
+                                 {274574.0638057208, -116459.61766690355},
+                                 {274574.0753306086, -116459.61327647013},
+                                 {274574.0517320289, -116459.59790995313},
+                                 {274574.0742330002, -116459.60970924297},
+                                 {274574.05804327695, -116459.58172022986}});
+    const std::string why = refusal(s);
+    EXPECT_NE(why.find("perturbation: the feedback body has no closest point on the path after "
+                       "t = "),
+              std::string::npos)
+        << why;
+    EXPECT_EQ(why.find("internal error"), std::string::npos) << why;
+}
 
 TEST(PerturbedMotion, WithoutAPerturbationNoBodyIsComputed) {
     const Solution s = Solution::compute(presetScene("circle"));

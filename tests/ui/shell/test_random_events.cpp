@@ -453,11 +453,6 @@ void TestRandomEvents::extremeEventStream() {
     const double slowest = m_slowestS;
     std::printf("the most CPU time of one event on the UI thread %.3f s\n", slowest);
 #if !defined(__SANITIZE_ADDRESS__)
-    // the stall this stream found, not mended yet (docs/robustness.md, In the desktop app): the
-    // default seed's event 130 draws a stroke after zoom bursts while a push is set, and the
-    // perturbed motion along the new path is solved on the UI thread (23 s)
-    if (seed == kDefaultSeed && events > 130)
-        QEXPECT_FAIL("", "a drawn path with a push is solved on the UI thread: 23 s", Continue);
     QVERIFY2(
         slowest < kSlowestEventS,
         qPrintable(QStringLiteral("seed %1: an event took %2 s of the UI thread's CPU, over %3 s")
