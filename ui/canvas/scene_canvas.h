@@ -77,6 +77,8 @@ class SceneCanvas : public QWidget {
     const std::vector<EdgeMarker>& edgeMarkers() const { return m_edgeMarkers; }
     /// The arrows of View > Vectors as last painted.
     const VectorLayer& vectorLayer() const { return m_vectors; }
+    /// The layer itself: tests move its scale bars to a corner of their choice.
+    VectorLayer& vectorLayer() { return m_vectors; }
     QSize minimumSizeHint() const override { return {240, 180}; }
 
     const CanvasStyle& canvasStyle() const { return m_look.style; }
@@ -206,6 +208,10 @@ class SceneCanvas : public QWidget {
     QTransform worldTransform() const { return m_view.transform(); }
     void paintGrid(QPainter& p, const QTransform& world, const QRectF& area) const;
     void paintScaleBar(QPainter& p) const;
+    /// The scale bar's label ("5 m"), its font, and the left end [px] of the bar and label.
+    QString scaleBarLabel() const;
+    QFont scaleBarFont() const;
+    double scaleBarLeft() const;
     /// The path's band; with `within` [px] only the segments that reach it.
     void paintPath(QPainter& p, const QTransform& world, const QRectF& within = {}) const;
     /// Whether a segment of the path's band reaches `within` [px].

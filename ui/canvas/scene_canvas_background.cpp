@@ -75,6 +75,25 @@ void SceneCanvas::paintGrid(QPainter& p, const QTransform& world, const QRectF& 
     p.restore();
 }
 
+QString SceneCanvas::scaleBarLabel() const {
+    const double step = m_view.gridStep();
+    return step >= 1 ? QStringLiteral("%1 m").arg(step) : QStringLiteral("%1 cm").arg(step * 100);
+}
+
+QFont SceneCanvas::scaleBarFont() const {
+    QFont f = font();
+    f.setPointSizeF(8 * m_look.style.lineScale);
+    return f;
+}
+
+double SceneCanvas::scaleBarLeft() const {
+    // the bar, one grid step long, ends 14 px from the right; its label is centred over it
+    const double len = m_view.gridStep() * m_view.scale();
+    const double centre = width() - 14 - len / 2;
+    const double label = QFontMetricsF(scaleBarFont(), this).horizontalAdvance(scaleBarLabel());
+    return std::min(centre - len / 2, centre - label / 2);
+}
+
 void SceneCanvas::paintScaleBar(QPainter& p) const {
     double step = m_view.gridStep();
     // scale bar, top right: one grid step
@@ -84,14 +103,10 @@ void SceneCanvas::paintScaleBar(QPainter& p) const {
     p.drawLine(left, right);
     p.drawLine(left, left - QPointF(0, 5));
     p.drawLine(right, right - QPointF(0, 5));
-    QFont f = font();
-    f.setPointSizeF(8 * m_look.style.lineScale);
-    p.setFont(f);
-    QString label =
-        step >= 1 ? QStringLiteral("%1 m").arg(step) : QStringLiteral("%1 cm").arg(step * 100);
+    p.setFont(scaleBarFont());
     p.drawText(QRectF(left.x() - 40, left.y() - 8 - 14 * m_look.style.lineScale, len + 80,
                       14 * m_look.style.lineScale),
-               Qt::AlignCenter, label);
+               Qt::AlignCenter, scaleBarLabel());
 }
 
 namespace {

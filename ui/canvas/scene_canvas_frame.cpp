@@ -1,5 +1,7 @@
 #include "canvas/scene_canvas.h"
 
+#include "canvas/legend_text.h"
+
 #include "canvas/draw_tool.h"
 #include "canvas/edit_points_tool.h"
 #include "canvas/masked_layer.h"
@@ -323,15 +325,17 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         // the ghosts first and the controlled body, the lesson's, on top of them: its fill is
         // nearly opaque, and where the translucent ghosts lay over it its colour was lost
         const BodyLook look = bodyLook();
+        // the scale bars under the bodies: a body crossing their corner hides them, not it
+        placeScaleBars(*solution);
+        m_vectors.paintScaleBars(p, solution, m_document->scene().vectors, m_view.scale(),
+                                 drawingArea(), e->region());
         const std::vector<DrawnBody> bodies = drawnBodies(*now);
         for (auto body = bodies.rbegin(); body != bodies.rend(); ++body)
             m_bodies.paint(p, world, m_view.scale(), spec, solution->system(), body->pose,
                            body->colour, body->ghost, look);
         paintPathOverBodies(p, *now);
         // the arrows end at the scene's edge, never over the legend under it
-        placeScaleBars(*solution);
-        m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform(),
-                        m_view.scale(), drawingArea(), e->region());
+        m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform());
         p.restore();
         // where the bodies out of view went
         m_edgeMarkers = edgeMarkersAt(*now);
@@ -536,13 +540,20 @@ void SceneCanvas::paintTimeReadout(QPainter& p, double t, double tEnd) const {
     }
     f.setPointSizeF(9 * m_look.style.lineScale);
     p.setFont(f);
-    QString readout = tr("t = %1 s of %2 s    scale %3 px/m")
-                          .arg(t, 0, 'f', 2)
-                          .arg(tEnd, 0, 'f', 2)
-                          .arg(m_view.scale(), 0, 'g', 3);
+    const QString full = tr("t = %1 s of %2 s    scale %3 px/m")
+                             .arg(t, 0, 'f', 2)
+                             .arg(tEnd, 0, 'f', 2)
+                             .arg(m_view.scale(), 0, 'g', 3);
+    const QString time =
+        tr("t = %1 s").arg(t, 0, 'f', 2) + QLatin1Char(' ') + tr("of %1 s").arg(tEnd, 0, 'f', 2);
     // said, not hidden: a curve too dense for a frame at this zoom ends where its budget did
-    if (m_curves.truncated())
-        readout += QStringLiteral("    ") + tr("curves drawn in part at this zoom");
+    const QString part = m_curves.truncated()
+                             ? QStringLiteral("    ") + tr("curves drawn in part at this zoom")
+                             : QString();
+    // on a narrow canvas the longest form that ends before the scale bar's label
+    const double room = scaleBarLeft() - 8 - 12 * m_look.style.lineScale;
+    const QString readout = fittingLegendText(
+        f, this, room, {full + part, time + part, full, time, tr("t = %1 s").arg(t, 0, 'f', 2)});
     drawHaloText(p, QRectF(8, 6, width() - 16, topBandPx()), Qt::AlignLeft, readout, halo);
 }
 

@@ -18,20 +18,23 @@ constexpr double kLargestTurn = 1.5 * std::numbers::pi; // the largest couple's 
 
 constexpr double kLabelPx = 48; // room for an arrowhead's label and its pen around a shape
 
-// the box's size around rows of scale bars: a row of 18 px each (times lineScale), its bar at
-// most 6 + 2 x 80 px left of the texts' column (paintScaleBars)
-QSizeF scaleBarsSize(int rows, int textWidth, double lineScale) {
+// the box's size around rows of scale bars: a row of 18 px each (times lineScale); left of the
+// texts' column a bar 6 px off, at most 1.6 times its round length long (roundValue's value is
+// within a factor sqrt(2.5) of the aim), or the couple's arc out to 55 px; 12 px of margin each
+// side (paintScaleBars)
+QSizeF scaleBarsSize(int rows, int textWidth, double lineScale, double barPx) {
     const double s = lineScale;
-    return {textWidth + 212 * s, 18.0 * s * rows + 24 * s};
+    const double bars = std::max(6 * s + 1.6 * barPx + 6, 55 * s);
+    return {textWidth + bars + 24 * s, 18.0 * s * rows + 24 * s};
 }
 
 // the bottom right of the rows (paintScaleBars draws them up and left from it) in a corner of
 // the drawing area: clear of the legend under it, and at the top clear of the time read-out's
 // band and the canvas's own scale bar
 QPointF scaleBarsCorner(const QRectF& area, Qt::Corner corner, int rows, int textWidth,
-                        double lineScale) {
+                        double lineScale, double barPx) {
     const double s = lineScale;
-    const QSizeF size = scaleBarsSize(rows, textWidth, s);
+    const QSizeF size = scaleBarsSize(rows, textWidth, s, barPx);
     const double right = corner == Qt::TopLeftCorner || corner == Qt::BottomLeftCorner
                              ? area.left() + 2 * s + size.width() - 12 * s
                              : area.right() - 14 * s;
@@ -42,13 +45,18 @@ QPointF scaleBarsCorner(const QRectF& area, Qt::Corner corner, int rows, int tex
 }
 
 // the box around the scale bars whose rows end at corner
-QRect scaleBarsBox(QPointF corner, int rows, int textWidth, double lineScale) {
+QRect scaleBarsBox(QPointF corner, int rows, int textWidth, double lineScale, double barPx) {
     const double s = lineScale;
-    return QRectF(corner + QPointF(12 * s, 12 * s) -
-                      QPointF(scaleBarsSize(rows, textWidth, s).width(),
-                              scaleBarsSize(rows, textWidth, s).height()),
+    const QSizeF size = scaleBarsSize(rows, textWidth, s, barPx);
+    return QRectF(corner + QPointF(12 * s, 12 * s) - QPointF(size.width(), size.height()),
                   corner + QPointF(12 * s, 12 * s))
         .toAlignedRect();
+}
+
+// how much smaller the scale bars are drawn on a drawing area narrower or lower than 400 px (a
+// small export): down to 0.6 of their size, so that their corner leaves room for the scene
+double barsShrink(const QRectF& area) {
+    return std::clamp(std::min(area.width(), area.height()) / 400, 0.6, 1.0);
 }
 
 int shownRows(const VectorOverlay& overlay) {
@@ -120,28 +128,35 @@ bool VectorLayer::shapes(const std::shared_ptr<const Solution>& solution,
     return true;
 }
 
+void VectorLayer::paintScaleBars(QPainter& p, const std::shared_ptr<const Solution>& solution,
+                                 const VectorOverlay& overlay, double pixelsPerMetre,
+                                 const QRectF& area, const QRegion& repainted) {
+    if (!solution || shownRows(overlay) == 0)
+        return;
+    const VectorScales k = scales(solution, overlay);
+    const double shrink = barsShrink(area), s = m_lineScale * shrink;
+    QFont barsFont = p.font();
+    barsFont.setPointSizeF(8.5 * s);
+    m_barsText = scaleBarsTextWidth(barsFont, overlay, k, pixelsPerMetre, kBarPx * shrink);
+    // the scale bars stay put: a frame that repaints what moves need not draw them
+    if (repainted.intersects(scaleBarsBounds(overlay, area)))
+        chaplygin::ui::paintScaleBars(
+            p, overlay, k, pixelsPerMetre,
+            scaleBarsCorner(area, m_barsCorner, shownRows(overlay), m_barsText, s, kBarPx * shrink),
+            s, kBarPx * shrink);
+}
+
 void VectorLayer::paint(QPainter& p, const std::shared_ptr<const Solution>& solution,
                         const VectorOverlay& overlay, const MotionSample& now,
-                        const QTransform& world, double pixelsPerMetre, const QRectF& area,
-                        const QRegion& repainted) {
+                        const QTransform& world) {
     m_controlled = {};
     m_free = {};
     m_labels.clear();
     VectorScales k{};
     if (!shapes(solution, overlay, now, world, m_free, m_controlled, k))
         return;
-    m_labels.clear();
     paintVectorShapes(p, m_free, false, nullptr, m_lineScale);
     paintVectorShapes(p, m_controlled, true, &m_labels, m_lineScale);
-    QFont barsFont = p.font();
-    barsFont.setPointSizeF(8.5 * m_lineScale);
-    m_barsText = scaleBarsTextWidth(barsFont, overlay, k, pixelsPerMetre);
-    // the scale bars stay put: a frame that repaints what moves need not draw them
-    if (repainted.intersects(scaleBarsBounds(overlay, area)))
-        paintScaleBars(
-            p, overlay, k, pixelsPerMetre,
-            scaleBarsCorner(area, m_barsCorner, shownRows(overlay), m_barsText, m_lineScale),
-            m_lineScale);
 }
 
 QRect VectorLayer::scaleBarsBounds(const VectorOverlay& overlay, const QRectF& area) const {
@@ -151,8 +166,9 @@ QRect VectorLayer::scaleBarsBounds(const VectorOverlay& overlay, const QRectF& a
 QRect VectorLayer::scaleBarsBounds(const VectorOverlay& overlay, const QRectF& area,
                                    Qt::Corner corner) const {
     const int rows = shownRows(overlay);
-    return rows > 0 ? scaleBarsBox(scaleBarsCorner(area, corner, rows, m_barsText, m_lineScale),
-                                   rows, m_barsText, m_lineScale)
+    const double shrink = barsShrink(area), s = m_lineScale * shrink, barPx = kBarPx * shrink;
+    return rows > 0 ? scaleBarsBox(scaleBarsCorner(area, corner, rows, m_barsText, s, barPx), rows,
+                                   m_barsText, s, barPx)
                     : QRect();
 }
 

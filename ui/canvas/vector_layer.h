@@ -16,10 +16,14 @@ namespace chaplygin::ui {
 /// and so do the forces, so that they compare).
 class VectorLayer {
   public:
-    /// Draws the arrows and, where they meet repainted, the scale bars in the corner of area.
+    /// Draws, where they meet repainted, the scale bars in the corner of area. The canvas draws
+    /// them before the bodies, so that a body crossing their corner is drawn over them.
+    void paintScaleBars(QPainter& painter, const std::shared_ptr<const Solution>& solution,
+                        const VectorOverlay& overlay, double pixelsPerMetre, const QRectF& area,
+                        const QRegion& repainted);
+    /// Draws the arrows and their names, over the bodies.
     void paint(QPainter& painter, const std::shared_ptr<const Solution>& solution,
-               const VectorOverlay& overlay, const MotionSample& now, const QTransform& world,
-               double pixelsPerMetre, const QRectF& area, const QRegion& repainted);
+               const VectorOverlay& overlay, const MotionSample& now, const QTransform& world);
 
     /// The box [px] of the arrows, arcs and labels paint draws for now (empty when none); the
     /// scale bars stay put.

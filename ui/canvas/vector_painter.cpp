@@ -181,7 +181,7 @@ VectorShapes vectorShapes(const DerivedSystem& system, const BodyState& body,
 namespace {
 
 // "v_P: 2 m/s", "τ: 0.1 N m = 103°": a scale bar's words
-QString scaleBarText(VectorKind kind, double k, double pixelsPerMetre) {
+QString scaleBarText(VectorKind kind, double k, double pixelsPerMetre, double barPx) {
     if (kind == VectorKind::ControlCouple) {
         double value = roundValue((std::numbers::pi / 2) / k);
         double span = std::min(value * k * kDeg, kMaxSpanDeg);
@@ -190,7 +190,7 @@ QString scaleBarText(VectorKind kind, double k, double pixelsPerMetre) {
                                         .arg(vectorUnit(kind))
                                         .arg(span, 0, 'f', 0);
     }
-    double value = roundValue(80 / (k * pixelsPerMetre));
+    double value = roundValue(barPx / (k * pixelsPerMetre));
     return vectorSymbol(kind) + QStringLiteral(": %1 %2").arg(value).arg(vectorUnit(kind));
 }
 
@@ -237,14 +237,14 @@ void placeLabel(QPainter& p, QPointF tip, QPointF u, const QString& text,
 } // namespace
 
 int scaleBarsTextWidth(const QFont& font, const VectorOverlay& overlay, const VectorScales& scales,
-                       double pixelsPerMetre) {
+                       double pixelsPerMetre, double barPx) {
     const QFontMetrics metrics(font);
-    int widest = 104;
+    int widest = int(std::lround(104 * barPx / kBarPx));
     for (int i = 0; i < kVectorKinds; ++i) {
         auto kind = VectorKind(i);
         if ((overlay.*vectorToggle(kind)).shown)
             widest = std::max(widest, metrics.horizontalAdvance(scaleBarText(
-                                          kind, scales[std::size_t(i)], pixelsPerMetre)) +
+                                          kind, scales[std::size_t(i)], pixelsPerMetre, barPx)) +
                                           4);
     }
     return widest;
@@ -325,7 +325,7 @@ void paintVectorShapes(QPainter& p, const VectorShapes& shapes, bool labels,
 }
 
 void paintScaleBars(QPainter& p, const VectorOverlay& overlay, const VectorScales& scales,
-                    double pixelsPerMetre, QPointF bottomRight, double lineScale) {
+                    double pixelsPerMetre, QPointF bottomRight, double lineScale, double barPx) {
     const double s = lineScale;
     p.save();
     p.setRenderHint(QPainter::Antialiasing, true);
@@ -333,7 +333,7 @@ void paintScaleBars(QPainter& p, const VectorOverlay& overlay, const VectorScale
     f.setPointSizeF(8.5 * s);
     p.setFont(f);
     // the texts in one column as wide as the widest; the bars left of it
-    const double textWidth = scaleBarsTextWidth(f, overlay, scales, pixelsPerMetre);
+    const double textWidth = scaleBarsTextWidth(f, overlay, scales, pixelsPerMetre, barPx);
     QPointF row = bottomRight;
     for (int i = kVectorKinds - 1; i >= 0; --i) {
         auto kind = VectorKind(i);
@@ -351,7 +351,7 @@ void paintScaleBars(QPainter& p, const VectorOverlay& overlay, const VectorScale
             p.drawArc(QRectF(c.x() - 9 * s, c.y() - 9 * s, 18 * s, 18 * s), 180 * 16,
                       int(-span * 16));
         } else {
-            double value = roundValue(80 / (k * pixelsPerMetre));
+            double value = roundValue(barPx / (k * pixelsPerMetre));
             double len = value * k * pixelsPerMetre;
             QPointF right = row + QPointF(-textWidth - 6 * s, -5 * s),
                     left = right - QPointF(len, 0);
@@ -361,7 +361,7 @@ void paintScaleBars(QPainter& p, const VectorOverlay& overlay, const VectorScale
         }
         p.setPen(Qt::black);
         p.drawText(QRectF(row.x() - textWidth, row.y() - 14 * s, textWidth, 16 * s),
-                   Qt::AlignLeft | Qt::AlignVCenter, scaleBarText(kind, k, pixelsPerMetre));
+                   Qt::AlignLeft | Qt::AlignVCenter, scaleBarText(kind, k, pixelsPerMetre, barPx));
         row -= QPointF(0, 18 * s);
     }
     p.restore();

@@ -68,16 +68,21 @@ VectorShapes vectorShapes(const DerivedSystem& system, const BodyState& body,
 void paintVectorShapes(QPainter& painter, const VectorShapes& shapes, bool labels,
                        std::vector<QRectF>* placed = nullptr, double lineScale = 1);
 
-/// The width [px] the scale bars' texts take in font, the widest of them (at least 104 px):
-/// the bars stand left of it, so no text is cut.
-int scaleBarsTextWidth(const QFont& font, const VectorOverlay& overlay, const VectorScales& scales,
-                       double pixelsPerMetre);
+/// A scale bar's length [px] for a round value: about this much (a small drawing area shortens
+/// it, VectorLayer).
+constexpr double kBarPx = 80;
 
-/// A scale bar for each shown quantity (a round value in physical units), stacked upwards from
-/// bottomRight; pixelsPerMetre is the canvas's zoom. lineScale multiplies pens and type; the
-/// texts' column is scaleBarsTextWidth of the scaled font.
+/// The width [px] the scale bars' texts take in font, the widest of them (at least 104 px for
+/// bars of kBarPx, in proportion for shorter ones): the bars stand left of it, so no text is cut.
+int scaleBarsTextWidth(const QFont& font, const VectorOverlay& overlay, const VectorScales& scales,
+                       double pixelsPerMetre, double barPx = kBarPx);
+
+/// A scale bar for each shown quantity (a round value in physical units, its bar about barPx
+/// long), stacked upwards from bottomRight; pixelsPerMetre is the canvas's zoom. lineScale
+/// multiplies pens and type; the texts' column is scaleBarsTextWidth of the scaled font.
 void paintScaleBars(QPainter& painter, const VectorOverlay& overlay, const VectorScales& scales,
-                    double pixelsPerMetre, QPointF bottomRight, double lineScale = 1);
+                    double pixelsPerMetre, QPointF bottomRight, double lineScale = 1,
+                    double barPx = kBarPx);
 
 /// A round value (1, 2 or 5 x 10^k) near target.
 double roundValue(double target);

@@ -49,6 +49,7 @@ class TestSweepAnimation : public QObject {
     void exportGifAndMissingFfmpeg();
     void exportDialogRemembersItsSettings();
     void exportedArrowsAndScaleBarsKeepClear();
+    void scaleBarsOfFiveArrowsFitASmallExportUnderTheBodies();
 
   private:
     void load(const char* preset);
@@ -417,6 +418,108 @@ void TestSweepAnimation::exportedArrowsAndScaleBarsKeepClear() {
     }
     QCOMPARE(frames, 4 * 3 * 12);
     QVERIFY2(clear >= 3, qPrintable(QString::number(clear)));
+}
+
+// every arrow in the smallest export (its canvas 3/5 of 384x360): the scale bars' box stays inside
+// the drawing area and leaves most of it to the scene, and a body crossing the bars' corner is
+// drawn over them, not under them: with opaque bodies, fewer of the bars' pixels show at a time
+// when the controlled body lies on their corner than when nothing does (the bars moved to another
+// corner are the reference: the two pictures differ only where the bars are)
+void TestSweepAnimation::scaleBarsOfFiveArrowsFitASmallExportUnderTheBodies() {
+    Scene arrows = presetScene("sinusoid");
+    for (int i = 0; i < kVectorKinds; ++i)
+        (arrows.vectors.*vectorToggle(VectorKind(i))).shown = true;
+    m_window->loadScene(arrows);
+    QVERIFY(m_window->document()->error().isEmpty());
+    SceneCanvas canvas(m_window->document());
+    canvas.setAttribute(Qt::WA_DontShowOnScreen);
+    CanvasLook look = m_window->canvas()->look();
+    look.style.bodyOpacity = 1;
+    canvas.setLook(look);
+    canvas.resize(QSize(384 * 3 / 5, 360));
+    canvas.show();
+    canvas.fitScene();
+    canvas.setTime(0);
+    canvas.grab(); // the bars' corner chosen and their texts measured
+    const QRectF area = canvas.drawingArea();
+    const VectorLayer& layer = canvas.vectorLayer();
+    const QRect bars = layer.scaleBarsBounds(arrows.vectors, area);
+    QVERIFY2(area.contains(QRectF(bars)),
+             qPrintable(QStringLiteral("bars %1,%2 %3x%4 outside the drawing area")
+                            .arg(bars.x())
+                            .arg(bars.y())
+                            .arg(bars.width())
+                            .arg(bars.height())));
+    QVERIFY2(bars.width() <= 0.8 * area.width() && bars.height() <= 0.45 * area.height(),
+             qPrintable(QStringLiteral("bars %1x%2 in an area %3x%4")
+                            .arg(bars.width())
+                            .arg(bars.height())
+                            .arg(area.width())
+                            .arg(area.height())));
+    // the view panned (a middle-button drag) so that the controlled body at t = tEnd/2 lies on the
+    // bars' column; a time when no body is on the bars' box in that view is the reference
+    const Solution& solution = *m_window->document()->solution();
+    const double tOn = solution.tEnd() / 2;
+    const MotionSample on = solution.at(tOn);
+    const QPointF body = canvas.toPixel({on.x, on.y});
+    const QPointF target(bars.right() - 0.3 * bars.width(), bars.center().y());
+    QTest::mousePress(&canvas, Qt::MiddleButton, {}, body.toPoint());
+    QTest::mouseMove(&canvas, ((body + target) / 2).toPoint());
+    QTest::mouseMove(&canvas, target.toPoint());
+    QTest::mouseRelease(&canvas, Qt::MiddleButton, {}, target.toPoint());
+    QVERIFY2(QLineF(canvas.toPixel({on.x, on.y}), target).length() < 2,
+             "the drag did not pan the body onto the bars");
+    const double s = canvas.scale();
+    const QPointF origin = canvas.toPixel({0, 0});
+    const QTransform world(s, 0, 0, -s, origin.x(), origin.y());
+    const BodyLook bodyLook{canvas.shownBodyDisplay(), 1, canvas.canvasStyle().lineScale};
+    const auto onBox = [&](const BodyPose& pose, const QRectF& box) {
+        return BodySprites::pixelBounds(world, s, solution.scene().system, solution.system(), pose,
+                                        bodyLook)
+            .intersects(box);
+    };
+    constexpr Qt::Corner corners[] = {Qt::BottomRightCorner, Qt::BottomLeftCorner,
+                                      Qt::TopRightCorner};
+    const Qt::Corner corner = canvas.vectorLayer().barsCorner();
+    const QRect box = layer.scaleBarsBounds(arrows.vectors, area, corner);
+    double tOff = -1;
+    for (int k = 0; k <= 200 && tOff < 0; ++k) {
+        const double t = solution.tEnd() * k / 200;
+        const MotionSample m = solution.at(t);
+        if (!onBox({m.x, m.y, m.phi}, box) && !onBox({m.free.x, m.free.y, m.free.phi}, box) &&
+            !onBox({m.vak.x, m.vak.y, m.vak.phi}, box))
+            tOff = t;
+    }
+    QVERIFY2(tOff >= 0, "no time without a body on the bars");
+    Qt::Corner other = corner;
+    for (const Qt::Corner c : corners)
+        if (!layer.scaleBarsBounds(arrows.vectors, area, c).intersects(box))
+            other = c;
+    QVERIFY(other != corner);
+    // the bars' pixels that show at time t: the picture with the bars in their corner against the
+    // one with them in the other, inside their box
+    const auto barsShown = [&](double t) {
+        canvas.setTime(t);
+        canvas.grab();
+        canvas.vectorLayer().setBarsCorner(corner);
+        const QImage with = canvas.grab().toImage().copy(box);
+        canvas.vectorLayer().setBarsCorner(other);
+        const QImage without = canvas.grab().toImage().copy(box);
+        int shown = 0;
+        for (int y = 0; y < with.height(); ++y)
+            for (int x = 0; x < with.width(); ++x)
+                shown += with.pixel(x, y) != without.pixel(x, y) ? 1 : 0;
+        return shown;
+    };
+    const int clear = barsShown(tOff), crossed = barsShown(tOn);
+    QVERIFY2(clear > 100, qPrintable(QString::number(clear)));
+    QVERIFY2(crossed < clear - 20,
+             qPrintable(QStringLiteral("%1 of the bars' pixels show under the body at t = %2, %3 "
+                                       "with no body on them at t = %4")
+                            .arg(crossed)
+                            .arg(tOn)
+                            .arg(clear)
+                            .arg(tOff)));
 }
 
 QTEST_MAIN(TestSweepAnimation)
