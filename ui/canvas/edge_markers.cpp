@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace chaplygin::ui {
 
@@ -161,6 +162,20 @@ void paintEdgeMarkers(QPainter& p, const std::vector<EdgeMarker>& markers, const
         p.drawText(m.textBox, Qt::AlignCenter, m.text);
     }
     p.restore();
+}
+
+void PaintedEdgeMarkers::paint(QPainter& painter, std::vector<EdgeMarker> markers,
+                               const QFont& font, double lineScale) {
+    m_markers = std::move(markers);
+    paintEdgeMarkers(painter, m_markers, font, lineScale);
+    m_painted = {};
+    for (const EdgeMarker& marker : m_markers)
+        m_painted += marker.box.toAlignedRect().adjusted(-2, -2, 2, 2);
+}
+
+void PaintedEdgeMarkers::clear() {
+    m_markers.clear();
+    m_painted = {};
 }
 
 } // namespace chaplygin::ui

@@ -3,6 +3,7 @@
 #include <QFont>
 #include <QPointF>
 #include <QRectF>
+#include <QRegion>
 #include <QString>
 #include <QTransform>
 
@@ -44,5 +45,22 @@ std::vector<EdgeMarker> layoutEdgeMarkers(const std::vector<ShownBody>& bodies, 
 /// Draws the markers; font as given to layoutEdgeMarkers.
 void paintEdgeMarkers(QPainter& painter, const std::vector<EdgeMarker>& markers, const QFont& font,
                       double lineScale);
+
+/// The markers a canvas last painted and the pixels they covered: a click finds its marker there,
+/// and the next frame repaints where they were.
+class PaintedEdgeMarkers {
+  public:
+    /// Draws markers (paintEdgeMarkers) and keeps them.
+    void paint(QPainter& painter, std::vector<EdgeMarker> markers, const QFont& font,
+               double lineScale);
+    void clear();
+    const std::vector<EdgeMarker>& markers() const { return m_markers; }
+    /// The markers' boxes as last painted, with their pens' reach.
+    const QRegion& painted() const { return m_painted; }
+
+  private:
+    std::vector<EdgeMarker> m_markers;
+    QRegion m_painted;
+};
 
 } // namespace chaplygin::ui

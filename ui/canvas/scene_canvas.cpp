@@ -118,8 +118,8 @@ QRectF SceneCanvas::pathBounds() const {
     const auto& solution = m_document->solution();
     if (!solution)
         return {};
-    if (m_boundsOf == solution.get())
-        return m_pathBounds;
+    if (m_pathBounds.of == solution.get())
+        return m_pathBounds.box;
     // the path's nodes and its two ends (the nodes are inside the panels)
     const PlotSeries& s = m_document->series();
     const Path& path = *solution->path();
@@ -133,9 +133,9 @@ QRectF SceneCanvas::pathBounds() const {
         y0 = std::min(y0, s.pathY[i]);
         y1 = std::max(y1, s.pathY[i]);
     }
-    m_boundsOf = solution.get();
-    m_pathBounds = x0 <= x1 && y0 <= y1 ? QRectF(QPointF(x0, y0), QPointF(x1, y1)) : QRectF();
-    return m_pathBounds;
+    m_pathBounds = {solution.get(),
+                    x0 <= x1 && y0 <= y1 ? QRectF(QPointF(x0, y0), QPointF(x1, y1)) : QRectF()};
+    return m_pathBounds.box;
 }
 
 BodyDisplay SceneCanvas::shownBodyDisplay() const {
@@ -490,7 +490,7 @@ void SceneCanvas::wheelEvent(QWheelEvent* e) {
 void SceneCanvas::mousePressEvent(QMouseEvent* e) {
     // a click on a body's edge marker frames that body
     if (e->button() == Qt::LeftButton)
-        for (const EdgeMarker& marker : m_edgeMarkers)
+        for (const EdgeMarker& marker : m_edgeMarkers.markers())
             if (marker.box.contains(e->position())) {
                 frameBody(marker.worldBox);
                 e->accept();

@@ -74,7 +74,7 @@ class SceneCanvas : public QWidget {
     QSize sizeHint() const override { return {800, 500}; }
     /// The markers at the drawing area's edge of the bodies out of view, as last painted: a
     /// click on one frames its body.
-    const std::vector<EdgeMarker>& edgeMarkers() const { return m_edgeMarkers; }
+    const std::vector<EdgeMarker>& edgeMarkers() const { return m_edgeMarkers.markers(); }
     /// The arrows of View > Vectors as last painted.
     const VectorLayer& vectorLayer() const { return m_vectors; }
     /// The layer itself: tests move its scale bars to a corner of their choice.
@@ -296,27 +296,19 @@ class SceneCanvas : public QWidget {
     PushTool* m_pushTool;
     PlanTool* m_planTool;
     PanTool* m_panTool;
-    mutable const Solution* m_boundsOf = nullptr; // the solution m_pathBounds belongs to
-    mutable QRectF m_pathBounds;
+    struct PathBounds {
+        const Solution* of = nullptr; // the solution box belongs to
+        QRectF box;                   // [m]
+    };
+    mutable PathBounds m_pathBounds;
     QRect m_movingPainted; // the box of what moves, as last painted
     LayerCache m_layers;
     bool m_pathOverBodiesFromLayer = false;
     VectorLayer m_vectors;
-    struct ScaleBarsKey {
-        const Solution* solution = nullptr;
-        double scale = 0;
-        QRectF area;
-        QPointF cell; // the view's place, to a quarter of the area
-        QSize box;
-        bool vakonomic = false, openLoop = false, closedLoop = false;
-        bool operator==(const ScaleBarsKey&) const = default;
-    };
-    ScaleBarsKey m_scaleBarsKey;
     BodySprites m_bodies;
     mutable CanvasCurves m_curves;
     BodyClipShapes m_bodyClips;
-    std::vector<EdgeMarker> m_edgeMarkers;
-    QRegion m_edgeMarkersPainted; // the markers' boxes as last painted
+    PaintedEdgeMarkers m_edgeMarkers;
 };
 
 } // namespace chaplygin::ui

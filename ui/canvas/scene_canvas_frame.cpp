@@ -139,18 +139,17 @@ void SceneCanvas::placeScaleBars(const Solution& solution) {
     if (here.isEmpty())
         return;
     const QTransform world = worldTransform();
-    const ScaleBarsKey key{&solution,
-                           m_view.scale(),
-                           area,
-                           QPointF(std::floor(world.dx() * 4 / std::max(1.0, area.width())),
-                                   std::floor(world.dy() * 4 / std::max(1.0, area.height()))),
-                           here.size(),
-                           m_look.vakonomic,
-                           drawsOpenLoop(),
-                           drawsClosedLoop()};
-    if (key == m_scaleBarsKey)
+    const ScaleBarsPlacement key{&solution,
+                                 m_view.scale(),
+                                 area,
+                                 QPointF(std::floor(world.dx() * 4 / std::max(1.0, area.width())),
+                                         std::floor(world.dy() * 4 / std::max(1.0, area.height()))),
+                                 here.size(),
+                                 m_look.vakonomic,
+                                 drawsOpenLoop(),
+                                 drawsClosedLoop()};
+    if (!m_vectors.placeBarsAnew(key))
         return;
-    m_scaleBarsKey = key;
     // the bodies at 49 times of the run against each corner's box
     constexpr int kSamples = 48;
     constexpr Qt::Corner kCorners[] = {Qt::BottomRightCorner, Qt::BottomLeftCorner,
@@ -255,8 +254,8 @@ void SceneCanvas::updateMoving(double from, QPointF centre) {
     const MotionSample now = solution->at(m_time);
     dirty += movingBounds(*solution, now, from);
     // the edge markers where they were (and where scrolling moved them) and where they go
-    dirty += m_edgeMarkersPainted;
-    dirty += m_edgeMarkersPainted.translated(shift);
+    dirty += m_edgeMarkers.painted();
+    dirty += m_edgeMarkers.painted().translated(shift);
     for (const EdgeMarker& marker : edgeMarkersAt(now))
         dirty += marker.box.toAlignedRect().adjusted(-2, -2, 2, 2);
     dirty += QRect(0, 0, width(), topBandPx()); // the time read-out
@@ -338,11 +337,7 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform());
         p.restore();
         // where the bodies out of view went
-        m_edgeMarkers = edgeMarkersAt(*now);
-        paintEdgeMarkers(p, m_edgeMarkers, edgeMarkerFont(), m_look.style.lineScale);
-        m_edgeMarkersPainted = {};
-        for (const EdgeMarker& marker : m_edgeMarkers)
-            m_edgeMarkersPainted += marker.box.toAlignedRect().adjusted(-2, -2, 2, 2);
+        m_edgeMarkers.paint(p, edgeMarkersAt(*now), edgeMarkerFont(), m_look.style.lineScale);
         // a planned motion played: its time along it and its arrival (docs/physics.md §10)
         const int played = m_planMode && m_planTool->playTime() >= 0 ? m_planTool->chosen() : -1;
         if (played >= 0)
@@ -354,7 +349,6 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
     } else {
         m_movingPainted = {};
         m_edgeMarkers.clear();
-        m_edgeMarkersPainted = {};
     }
     // what the gestures show: a push being dragged, the drawn path's points, a stroke
     m_pushTool->paint(p);

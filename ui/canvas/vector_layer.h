@@ -4,11 +4,24 @@
 
 #include <QRectF>
 #include <QRegion>
+#include <QSize>
 
 #include <memory>
 #include <vector>
 
 namespace chaplygin::ui {
+
+/// What the scale bars' corner was chosen for: the run, the view (its scale, area and place, to a
+/// quarter of the area), the bars' box and the bodies drawn.
+struct ScaleBarsPlacement {
+    const Solution* solution = nullptr;
+    double scale = 0;
+    QRectF area;
+    QPointF cell;
+    QSize box;
+    bool vakonomic = false, openLoop = false, closedLoop = false;
+    bool operator==(const ScaleBarsPlacement&) const = default;
+};
 
 /// The canvas's View > Vectors layer: the shown arrows on the controlled body and on the free
 /// ghost, and their scale bars. A quantity without its own scale in the scene is scaled so
@@ -39,6 +52,13 @@ class VectorLayer {
     /// the canvas moves them off the bodies' way).
     void setBarsCorner(Qt::Corner corner) { m_barsCorner = corner; }
     Qt::Corner barsCorner() const { return m_barsCorner; }
+    /// Whether the bars' corner must be chosen again for placement (then kept as chosen for it).
+    bool placeBarsAnew(const ScaleBarsPlacement& placement) {
+        if (placement == m_placedFor)
+            return false;
+        m_placedFor = placement;
+        return true;
+    }
 
     /// The effective scales (the scene's, else automatic) for a solution.
     VectorScales scales(const std::shared_ptr<const Solution>& solution,
@@ -67,6 +87,7 @@ class VectorLayer {
     int m_barsText = 104; // the scale bars' text column [px] (scaleBarsTextWidth)
     double m_lineScale = 1;
     Qt::Corner m_barsCorner = Qt::BottomRightCorner;
+    ScaleBarsPlacement m_placedFor;
 };
 
 } // namespace chaplygin::ui
