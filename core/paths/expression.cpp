@@ -6,6 +6,7 @@
 #include <ginac/ginac.h>
 #include <muParser.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cerrno>
@@ -15,6 +16,7 @@
 #include <new>
 #include <set>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace chaplygin {
@@ -281,6 +283,93 @@ TreeSize treeSize(const GiNaC::ex& e, double& budget) {
     return {size, 3 * size + derivatives + 8};
 }
 
+// e in muparser's syntax, with the terms of every sum and the factors of every product sorted by
+// their text: GiNaC keeps them in an order of hash values seeded from addresses, and its own
+// printing would make the summation order, and so the last bits of a derivative's value, change
+// from run to run (docs/numerics.md §11). Otherwise as GiNaC prints: a product's numeric
+// coefficient first, sqrt for the power 1/2, rationals and floats in parentheses where a product
+// or a power holds them.
+enum class Precedence { Sum, Product, Power };
+
+std::string muparserText(const GiNaC::ex& e, Precedence within);
+
+std::string defaultText(const GiNaC::ex& e) {
+    std::ostringstream out;
+    out << e;
+    return out.str();
+}
+
+std::string numericText(const GiNaC::numeric& n, Precedence within) {
+    const std::string text = defaultText(n);
+    const bool plain = n.is_integer() && n.is_nonneg_integer();
+    return plain || (within == Precedence::Sum && n.is_integer()) ? text : "(" + text + ")";
+}
+
+std::string sortedJoin(std::vector<std::string> parts, const char* separator) {
+    std::sort(parts.begin(), parts.end());
+    std::string out;
+    for (const std::string& part : parts) {
+        if (!out.empty() && !(separator[0] == '+' && part.front() == '-'))
+            out += separator;
+        out += part;
+    }
+    return out;
+}
+
+std::string muparserText(const GiNaC::ex& e, Precedence within) {
+    using namespace GiNaC;
+    if (is_a<add>(e)) {
+        std::vector<std::string> terms;
+        for (std::size_t i = 0; i < e.nops(); ++i)
+            terms.push_back(muparserText(e.op(i), Precedence::Sum));
+        const std::string sum = sortedJoin(std::move(terms), "+");
+        return within == Precedence::Sum ? sum : "(" + sum + ")";
+    }
+    if (is_a<mul>(e)) {
+        // the numeric coefficient first, as GiNaC prints it: -x, 3*x, (1/3)*x
+        numeric coefficient = 1;
+        std::vector<std::string> factors;
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            if (is_a<numeric>(e.op(i)))
+                coefficient *= ex_to<numeric>(e.op(i));
+            else
+                factors.push_back(muparserText(e.op(i), Precedence::Product));
+        }
+        std::string product = sortedJoin(std::move(factors), "*");
+        if (coefficient.is_equal(-1))
+            product = "-" + product;
+        else if (!coefficient.is_equal(1))
+            product = (coefficient.is_negative() && coefficient.is_integer()
+                           ? defaultText(coefficient)
+                           : numericText(coefficient, Precedence::Product)) +
+                      "*" + product;
+        const bool bare =
+            within == Precedence::Sum || (within == Precedence::Product && product.front() != '-');
+        return bare ? product : "(" + product + ")";
+    }
+    if (is_a<power>(e)) {
+        const ex base = e.op(0), exponent = e.op(1);
+        if (exponent.is_equal(numeric(1, 2)))
+            return "sqrt(" + muparserText(base, Precedence::Sum) + ")";
+        std::string text = muparserText(base, Precedence::Power) + "^";
+        if (is_a<numeric>(exponent) && ex_to<numeric>(exponent).is_pos_integer())
+            text += defaultText(exponent);
+        else
+            text += "(" + muparserText(exponent, Precedence::Sum) + ")";
+        return within == Precedence::Power ? "(" + text + ")" : text;
+    }
+    if (is_a<numeric>(e))
+        return numericText(ex_to<numeric>(e), within);
+    if (is_a<function>(e)) {
+        std::string text = ex_to<function>(e).get_name() + "(";
+        for (std::size_t i = 0; i < e.nops(); ++i)
+            text += (i > 0 ? "," : "") + muparserText(e.op(i), Precedence::Sum);
+        return text + ")";
+    }
+    // a symbol or a constant (Pi)
+    return defaultText(e);
+}
+
 void defineCommon(mu::Parser& p) {
     p.DefineConst("pi", M_PI);
     p.DefineConst("e", M_E);
@@ -348,7 +437,7 @@ Expression Expression::compile(const std::string& text, const std::string& varia
             throwGinacError(e, label);
         }
         std::ostringstream printed;
-        printed << f;
+        printed << muparserText(f, Precedence::Sum);
         if (printed.str().size() > kMaxDerivativeLength)
             throw InputError(
                 label, "too complex to differentiate: derivative " + std::to_string(k) + " has " +

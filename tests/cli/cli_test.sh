@@ -344,6 +344,21 @@ reversed_parametric_circle)
   below "$(max_abs "$work/c.csv" psi 'atan2(2, -1)')" 1e-12 "psi"
   below "$(max_abs "$work/c.csv" lambda '0.5/sqrt(5)')" 1e-12 "lambda"
   ;;
+bit_identical_runs)
+  # docs/numerics.md §11: the same scene twice gives the same bytes, whatever the addresses (the
+  # derivatives printed for muparser with their terms in an order of their own, not GiNaC's)
+  for i in 1 2 3; do
+    run 0 --preset catenary --csv "$work/cat$i.csv" --summary "$work/cat$i.json"
+    run 0 --path "y=exp(-x^2/3)*sin(3*x)/(1+x^2)+sqrt(1+x^4)/7" --x-range -2,2 \
+      --csv "$work/expr$i.csv"
+  done
+  for f in cat expr; do
+    for i in 2 3; do
+      cmp -s "$work/${f}1.csv" "$work/$f$i.csv" || fail "$f: run $i differs from run 1"
+    done
+  done
+  cmp -s "$work/cat1.json" "$work/cat2.json" || fail "catenary summary: run 2 differs from run 1"
+  ;;
 expression_blowup)
   # a typo that once took seconds and gigabytes inside the symbolic differentiation
   expr='exp((x^(2+(x)^(1123356))*+2)^(2^(11233523356))*x)'
