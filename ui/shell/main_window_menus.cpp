@@ -152,7 +152,7 @@ void MainWindow::buildMenus() {
     m_followAction = view->addAction(tr("F&ollow body"));
     m_followAction->setCheckable(true);
     m_followAction->setShortcut(QKeySequence(tr("Ctrl+B")));
-    connect(m_followAction, &QAction::toggled, m_canvas, &SceneCanvas::setFollowBody);
+    connect(m_followAction, &QAction::toggled, m_canvas, &SceneCanvas::setFollowing);
     connect(m_canvas, &SceneCanvas::followBodyChanged, m_followAction, &QAction::setChecked);
     QAction* vakonomic = m_vakonomicAction = view->addAction(tr("Genuine &vakonomic body"));
     vakonomic->setObjectName(QStringLiteral("showVakonomicAction"));
