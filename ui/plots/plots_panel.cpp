@@ -123,8 +123,12 @@ void PlotsPanel::makeTimeZoomable(QCustomPlot* plot) {
         QCPAxisRect* rect = rectAt(plot, e->position().x());
         if (!rect || e->angleDelta().y() == 0)
             return;
-        m_timeWindow.wheel(rect->axis(QCPAxis::atBottom)->pixelToCoord(e->position().x()),
-                           e->angleDelta().y());
+        // about the time under the mouse; following, about the time cursor, which stays put
+        const double at = m_timeWindow.mode() == TimeWindow::Mode::Following
+                              ? cursorTime()
+                              : rect->axis(QCPAxis::atBottom)->pixelToCoord(e->position().x());
+        m_timeWindow.wheel(at, e->angleDelta().y());
+        m_timeWindow.followCursor(cursorTime());
         showTimeWindow();
         e->accept();
     });

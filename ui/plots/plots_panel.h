@@ -22,7 +22,8 @@ class SceneDocument;
 /// that is a thin child widget, so that moving it repaints two narrow strips. Clicking seeks.
 /// The time plots share one time range (TimeWindow): the wheel zooms it about the time under the
 /// mouse, a middle or Shift drag pans it, a double click shows the whole run again, and "Follow
-/// the cursor" moves a window of it along with the time cursor; the value axes fit what is shown.
+/// the cursor" moves a window of it along with the time cursor (the wheel then zooms about the
+/// cursor); the value axes fit what is shown.
 class PlotsPanel : public QWidget {
     Q_OBJECT
   public:

@@ -244,9 +244,16 @@ void TestPlotTime::windowFollowsTheCursorDuringPlayback() {
     }
     // page by page: the window moves on about every 0.88 of its span (8 windows a run)
     QVERIFY2(moves >= 7 && moves <= 12, qPrintable(QString::number(moves)));
-    // a notch of the wheel while following: the span is 0.8 as wide, following still
+    // a notch of the wheel while following, the mouse far from the cursor: the span is 0.8 as
+    // wide about the time cursor, which stays where it was on the axis; following still
     QCustomPlot* chi = plots()->plot(1);
-    wheel(chi, chi->axisRect()->center(), 120);
+    const double cursorX = timeAxis(chi)->coordToPixel(playback->time());
+    wheel(chi, QPointF(chi->axisRect()->right() - 2, chi->axisRect()->center().y()), 120);
+    plots()->replotNow();
+    QVERIFY2(std::abs(timeAxis(chi)->coordToPixel(playback->time()) - cursorX) < 1e-6,
+             qPrintable(QStringLiteral("%1 against %2")
+                            .arg(timeAxis(chi)->coordToPixel(playback->time()))
+                            .arg(cursorX)));
     QCOMPARE(plots()->timeWindow().mode(), TimeWindow::Mode::Following);
     playback->seek(0.3 * playback->tEnd());
     plots()->replotNow();
