@@ -1916,6 +1916,10 @@ realimentação: %2</translation>
         <source>CSV written to %1, its parameters to %2</source>
         <translation>CSV gravado em %1, seus parâmetros em %2</translation>
     </message>
+    <message>
+        <source>Plots&apos; &amp;time</source>
+        <translation>&amp;Tempo dos gráficos</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::MethodsPanel</name>
@@ -2470,8 +2474,32 @@ O que os estudantes devem observar…</translation>
 <context>
     <name>chaplygin::ui::PlotsPanel</name>
     <message>
-        <source> — click or drag to move the animation to that time</source>
-        <translation> — clique ou arraste para levar a animação a esse instante</translation>
+        <source> — click or drag to move the animation to that time; wheel: zoom the time, Shift+drag or middle drag: pan it, double click: the whole run</source>
+        <translation> — clique ou arraste para levar a animação a esse instante; roda: zoom no tempo, Shift+arrastar ou arrastar com o botão do meio: deslocá-lo, clique duplo: a execução inteira</translation>
+    </message>
+    <message>
+        <source>&amp;Follow the cursor</source>
+        <translation>&amp;Seguir o cursor</translation>
+    </message>
+    <message>
+        <source>The time plots show a window of the run that moves on with the time cursor</source>
+        <translation>Os gráficos no tempo mostram uma janela da execução que avança com o cursor do tempo</translation>
+    </message>
+    <message>
+        <source>&amp;Whole run</source>
+        <translation>&amp;Execução inteira</translation>
+    </message>
+    <message>
+        <source>The time plots show the whole run (a double click on a plot)</source>
+        <translation>Os gráficos no tempo mostram a execução inteira (um clique duplo num gráfico)</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;in on the time</source>
+        <translation>&amp;Aproximar o tempo</translation>
+    </message>
+    <message>
+        <source>Zoom &amp;out the time</source>
+        <translation>A&amp;fastar o tempo</translation>
     </message>
 </context>
 <context>

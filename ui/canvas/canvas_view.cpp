@@ -71,8 +71,35 @@ bool CanvasView::setFollows(bool on) {
     if (on == m_follow)
         return false;
     m_follow = on;
-    if (m_follow)
+    if (m_follow) {
+        m_beforeFollow = {m_scale, m_centre, m_autoFit};
         m_autoFit = false;
+    }
+    return true;
+}
+
+void CanvasView::setFollowScale(double readable) {
+    if (!m_follow || !std::isfinite(readable) || !(readable > 0))
+        return;
+    m_readable = std::max(readable, m_beforeFollow.scale);
+    m_scale = std::clamp(m_readable * m_followZoom, kMinScale, kMaxScale);
+}
+
+void CanvasView::zoomFollow(double factor) {
+    if (!std::isfinite(factor) || !(factor > 0))
+        return;
+    m_scale = std::clamp(m_scale * factor, kMinScale, kMaxScale);
+    if (m_follow && m_readable > 0)
+        m_followZoom = m_scale / m_readable;
+}
+
+bool CanvasView::returnFromFollow() {
+    if (!m_follow)
+        return false;
+    m_follow = false;
+    m_scale = m_beforeFollow.scale;
+    m_centre = m_beforeFollow.centre;
+    m_autoFit = m_beforeFollow.autoFit;
     return true;
 }
 

@@ -63,8 +63,21 @@ class CanvasView {
     bool keepsViewForNextPath() const { return m_keepView; }
     void setKeepViewForNextPath(bool on) { m_keepView = on; }
     bool follows() const { return m_follow; }
-    /// Starts or stops following the body; returns whether that changed anything.
+    /// Starts or stops following the body; returns whether that changed anything. Starting
+    /// remembers the view, which returnFromFollow restores; stopping here keeps the view.
     bool setFollows(bool on);
+    /// Following: the scale at which the body is readable [px/m], or the view's before following
+    /// where that was larger, times the user's follow zoom (1 until the user zooms while
+    /// following; kept for the next follow).
+    void setFollowScale(double readable);
+    /// Following: zooms by factor (within the zoom range) about the centre; the follow zoom from
+    /// then on.
+    void zoomFollow(double factor);
+    /// The user's zoom of the follow scale.
+    double followZoom() const { return m_followZoom; }
+    /// Stops following and returns to the view before it (its scale, centre and whether it
+    /// refits); returns whether it was following.
+    bool returnFromFollow();
     /// The path the view was last fitted to (a new one is fitted again).
     const std::shared_ptr<const Path>& fittedPath() const { return m_fittedPath; }
     void setFittedPath(std::shared_ptr<const Path> path) { m_fittedPath = std::move(path); }
@@ -77,6 +90,13 @@ class CanvasView {
     bool m_fitAll = false;
     bool m_keepView = false;
     bool m_follow = false;
+    double m_readable = 0;   // px per metre at which the followed body is readable
+    double m_followZoom = 1; // the user's zoom of it
+    struct SavedView {
+        double scale = 50;
+        QPointF centre;
+        bool autoFit = true;
+    } m_beforeFollow;
     std::shared_ptr<const Path> m_fittedPath;
 };
 

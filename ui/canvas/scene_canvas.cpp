@@ -344,10 +344,12 @@ void SceneCanvas::frameBody(const QRectF& box) {
 }
 
 void SceneCanvas::refit() {
-    if (m_view.follows())
+    if (m_view.follows()) {
+        m_view.setFollowScale(readableBodyScale());
         centreOnBody();
-    else if (m_view.autoFit())
+    } else if (m_view.autoFit()) {
         m_view.fitsEverything() ? fitEverything() : fitScene();
+    }
 }
 
 void SceneCanvas::keepPathInView() {
@@ -365,12 +367,37 @@ void SceneCanvas::keepPathInView() {
     fitScene();
 }
 
+double SceneCanvas::readableBodyScale() const {
+    const auto& solution = m_document->solution();
+    if (!solution)
+        return 0;
+    const double body = 2 * bodyExtent(solution->scene().system, solution->system());
+    const QRectF area = drawingArea();
+    const double side = std::max(std::min(area.width(), area.height()), 100.0);
+    return body > 0 && std::isfinite(body) ? kFollowBodyPart * side / body : 0;
+}
+
 void SceneCanvas::setFollowBody(bool follow) {
     if (!m_view.setFollows(follow))
         return;
-    if (follow)
+    if (follow) {
+        m_view.setFollowScale(readableBodyScale());
         centreOnBody();
+    }
     emit followBodyChanged(follow);
+    update();
+}
+
+void SceneCanvas::setFollowing(bool on) {
+    if (on) {
+        setFollowBody(true);
+        return;
+    }
+    if (!m_view.returnFromFollow())
+        return;
+    if (m_view.autoFit()) // the fit, for the canvas's size now
+        m_view.fitsEverything() ? fitEverything() : fitScene();
+    emit followBodyChanged(false);
     update();
 }
 
@@ -464,7 +491,12 @@ PushTool::Grab SceneCanvas::grabAt(QPointF pixel) const {
 }
 
 void SceneCanvas::zoomBy(double factor) {
-    m_view.zoomBy(factor);
+    if (m_view.follows()) {
+        m_view.zoomFollow(factor);
+        centreOnBody();
+    } else {
+        m_view.zoomBy(factor);
+    }
     update();
 }
 
@@ -480,9 +512,14 @@ std::vector<std::pair<double, double>> SceneCanvas::drawnPoints() const {
 }
 
 void SceneCanvas::wheelEvent(QWheelEvent* e) {
-    // zoom about the point under the cursor
-    m_view.zoomAbout(e->position(), std::pow(1.0015, e->angleDelta().y()));
-    setFollowBody(false);
+    // zoom about the point under the cursor; following, the follow zoom about the body
+    const double factor = std::pow(1.0015, e->angleDelta().y());
+    if (m_view.follows()) {
+        zoomBy(factor);
+        e->accept();
+        return;
+    }
+    m_view.zoomAbout(e->position(), factor);
     update();
     e->accept();
 }
@@ -534,7 +571,7 @@ void SceneCanvas::keyPressEvent(QKeyEvent* e) {
             fitScene();
         break;
     case Qt::Key_B:
-        setFollowBody(!m_view.follows());
+        setFollowing(!m_view.follows());
         break;
     case Qt::Key_L:
         setLegendVisible(!m_look.legend);

@@ -89,6 +89,14 @@ class SceneCanvas : public QWidget {
     bool legendVisible() const { return m_look.legend; }
     /// The part of the widget the scene is drawn in: between the time line and the legend.
     QRectF drawingArea() const;
+    /// Following: the body's size (the diameter of the circle that holds it) is this part of
+    /// the drawing area's smaller side at the follow zoom 1.
+    static constexpr double kFollowBodyPart = 1.0 / 6;
+    /// The scale [px/m] at which the controlled body's size is kFollowBodyPart of the drawing
+    /// area's smaller side; 0 without a solution.
+    double readableBodyScale() const;
+    /// The user's zoom of readableBodyScale while following (kept for the next follow).
+    double followZoom() const { return m_view.followZoom(); }
     /// The box of the draw-mode hint's text under the time line; empty outside draw mode.
     QRectF drawHintBounds() const;
     /// The box of the pinned runs' key of colours and labels; empty without pins.
@@ -128,10 +136,17 @@ class SceneCanvas : public QWidget {
     /// The next new path (a stroke, a moved point, other corners) keeps the view
     /// (keepPathInView) instead of being fitted.
     void keepViewForNextPath() { m_view.setKeepViewForNextPath(true); }
+    /// Following the body: centred on it, at the scale where it is kFollowBodyPart of the
+    /// drawing area's smaller side (or the scale before, where the body was larger), times the
+    /// user's follow zoom; stopping here keeps the view.
     void setFollowBody(bool follow);
+    /// The user's follow (B, View > Follow body): as setFollowBody, but stopping returns to the
+    /// view before following (the fit, refitted to the canvas's size, or the user's view).
+    void setFollowing(bool on);
     void setDrawMode(bool on);
     /// The Plan tool and panning take the mouse; ends draw mode.
     void setPlanMode(bool on);
+    /// Zooms about the centre; following, the follow zoom (the body stays centred).
     void zoomBy(double factor);
     void setShowVakonomic(bool show);
     void setShowOpenLoop(bool show);

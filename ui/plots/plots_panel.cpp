@@ -5,8 +5,11 @@
 #include "plots/flat_plot.h"
 #include "plots/pinned_plots.h"
 #include "plots/plot_context_menu.h"
+#include "plots/time_axes.h"
 
+#include <QAction>
 #include <QGridLayout>
+#include <QMenu>
 #include <QPalette>
 
 #include <cmath>
@@ -19,15 +22,19 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
     m_grid = new QGridLayout(this);
     m_grid->setContentsMargins(2, 2, 2, 2);
     m_grid->setSpacing(2);
+    makeTimeActions();
     for (int i = 0; i < 4; ++i) {
         auto* plot = new FlatPlot;
         plot->setObjectName(plotFileStem(kKinds[i]));
         plot->setMinimumSize(120, 110);
-        plot->setToolTip(plotTitle(kKinds[i]) +
-                         tr(" \u2014 click or drag to move the animation to that time"));
+        plot->setToolTip(plotTitle(kKinds[i]) + tr(" \u2014 click or drag to move the animation "
+                                                   "to that time; wheel: zoom the time, Shift+drag "
+                                                   "or middle drag: pan it, double click: the "
+                                                   "whole run"));
         plot->setNotAntialiasedElements(QCP::aeAll);
         m_cursors[i] = makeCursor(plot);
         makeSeekable(plot);
+        makeTimeZoomable(plot);
         m_grid->addWidget(plot, i / 2, i % 2);
         m_plots[i] = plot;
         plot->installEventFilter(this); // the legend follows the plot's width
@@ -35,21 +42,25 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
             plot, [i] { return plotFileStem(kKinds[i]); },
             [this](const QString& error) { emit exportFailed(error); });
         m_fitAll[i] = installFitAllAction(plot, *m_menus[i]);
+        addTimeActions(*m_menus[i]);
     }
     m_errorPlot = new FlatPlot;
     m_errorPlot->setObjectName(plotFileStem(PlotKind::TrackingError));
     m_errorPlot->setMinimumSize(200, 130);
     m_errorPlot->setToolTip(plotTitle(PlotKind::TrackingError) +
-                            tr(" \u2014 click or drag to move the animation to that time"));
+                            tr(" \u2014 click or drag to move the animation to that time; wheel: "
+                               "zoom the time, Shift+drag or middle drag: pan it, double click: "
+                               "the whole run"));
     m_errorPlot->setNotAntialiasedElements(QCP::aeAll);
     m_errorPlot->hide();
     for (QWidget*& cursor : m_errorCursors)
         cursor = makeCursor(m_errorPlot);
     makeSeekable(m_errorPlot);
+    makeTimeZoomable(m_errorPlot);
     arrange();
-    installPlotExportMenu(
+    addTimeActions(*installPlotExportMenu(
         m_errorPlot, [] { return plotFileStem(PlotKind::TrackingError); },
-        [this](const QString& error) { emit exportFailed(error); });
+        [this](const QString& error) { emit exportFailed(error); }));
     connect(document, &SceneDocument::solutionChanged, this, &PlotsPanel::refresh);
 }
 
@@ -69,7 +80,8 @@ QWidget* PlotsPanel::makeCursor(QCustomPlot* plot) {
 void PlotsPanel::makeSeekable(QCustomPlot* plot) {
     // press seeks, dragging with the button down scrubs; the time of the panel under the mouse
     auto seek = [this, plot](QMouseEvent* e) {
-        if (!(e->buttons() & Qt::LeftButton))
+        if (!(e->buttons() & Qt::LeftButton) || (e->modifiers() & Qt::ShiftModifier) ||
+            m_timePan.active)
             return;
         for (QCPAxisRect* rect : plot->axisRects())
             if (e->position().x() >= rect->left() - 1 && e->position().x() <= rect->right() + 1)
@@ -84,6 +96,156 @@ void PlotsPanel::makeSeekable(QCustomPlot* plot) {
     };
     connect(plot, &QCustomPlot::mousePress, this, seek);
     connect(plot, &QCustomPlot::mouseMove, this, seek);
+}
+
+namespace {
+
+// the axis rectangle of plot at (or nearest to) pixel column x
+QCPAxisRect* rectAt(QCustomPlot* plot, double x) {
+    QCPAxisRect* nearest = nullptr;
+    double best = INFINITY;
+    for (QCPAxisRect* rect : plot->axisRects()) {
+        const double d = x < rect->left()    ? rect->left() - x
+                         : x > rect->right() ? x - rect->right()
+                                             : 0;
+        if (d < best) {
+            best = d;
+            nearest = rect;
+        }
+    }
+    return nearest && nearest->width() > 0 ? nearest : nullptr;
+}
+
+} // namespace
+
+void PlotsPanel::makeTimeZoomable(QCustomPlot* plot) {
+    connect(plot, &QCustomPlot::mouseWheel, this, [this, plot](QWheelEvent* e) {
+        QCPAxisRect* rect = rectAt(plot, e->position().x());
+        if (!rect || e->angleDelta().y() == 0)
+            return;
+        // about the time under the mouse; following, about the time cursor, which stays put
+        const double at = m_timeWindow.mode() == TimeWindow::Mode::Following
+                              ? cursorTime()
+                              : rect->axis(QCPAxis::atBottom)->pixelToCoord(e->position().x());
+        m_timeWindow.wheel(at, e->angleDelta().y());
+        m_timeWindow.followCursor(cursorTime());
+        showTimeWindow();
+        e->accept();
+    });
+    // a middle or a Shift drag pans the time; the left button alone seeks (makeSeekable)
+    connect(plot, &QCustomPlot::mousePress, this, [this, plot](QMouseEvent* e) {
+        const bool pan = e->button() == Qt::MiddleButton ||
+                         (e->button() == Qt::LeftButton && (e->modifiers() & Qt::ShiftModifier));
+        QCPAxisRect* rect = rectAt(plot, e->position().x());
+        if (!pan || !rect)
+            return;
+        const QCPRange shown = rect->axis(QCPAxis::atBottom)->range();
+        m_timePan = {true, e->position().x(), shown, shown.size() / rect->width()};
+        plot->setCursor(Qt::ClosedHandCursor);
+    });
+    connect(plot, &QCustomPlot::mouseMove, this, [this](QMouseEvent* e) {
+        // the whole run has nowhere to move
+        if (!m_timePan.active || m_timeWindow.mode() == TimeWindow::Mode::WholeRun)
+            return;
+        m_timeWindow.pan(m_timePan.from,
+                         -(e->position().x() - m_timePan.startX) * m_timePan.secondsPerPixel);
+        showTimeWindow();
+    });
+    connect(plot, &QCustomPlot::mouseRelease, this, [this, plot](QMouseEvent*) {
+        if (m_timePan.active)
+            plot->unsetCursor();
+        m_timePan.active = false;
+    });
+    connect(plot, &QCustomPlot::mouseDoubleClick, this, [this](QMouseEvent* e) {
+        if (e->button() == Qt::LeftButton && !(e->modifiers() & Qt::ShiftModifier))
+            m_wholeRun->trigger();
+    });
+}
+
+void PlotsPanel::makeTimeActions() {
+    m_followCursor = new QAction(tr("&Follow the cursor"), this);
+    m_followCursor->setObjectName(QStringLiteral("followTimeCursor"));
+    m_followCursor->setCheckable(true);
+    m_followCursor->setToolTip(tr("The time plots show a window of the run that moves on with the "
+                                  "time cursor"));
+    connect(m_followCursor, &QAction::toggled, this, [this](bool on) {
+        m_timeWindow.setFollowing(on, cursorTime());
+        showTimeWindow();
+    });
+    m_wholeRun = new QAction(tr("&Whole run"), this);
+    m_wholeRun->setObjectName(QStringLiteral("wholeRunTime"));
+    m_wholeRun->setToolTip(tr("The time plots show the whole run (a double click on a plot)"));
+    connect(m_wholeRun, &QAction::triggered, this, [this] {
+        m_timeWindow.showWholeRun();
+        showTimeWindow();
+    });
+    m_zoomInTime = new QAction(tr("Zoom &in on the time"), this);
+    m_zoomInTime->setObjectName(QStringLiteral("zoomInTime"));
+    connect(m_zoomInTime, &QAction::triggered, this, [this] { zoomTimeAboutCursor(kWheelZoom); });
+    m_zoomOutTime = new QAction(tr("Zoom &out the time"), this);
+    m_zoomOutTime->setObjectName(QStringLiteral("zoomOutTime"));
+    connect(m_zoomOutTime, &QAction::triggered, this,
+            [this] { zoomTimeAboutCursor(1 / kWheelZoom); });
+}
+
+void PlotsPanel::addTimeActions(QMenu& menu) {
+    menu.addSeparator();
+    menu.addAction(m_followCursor);
+    menu.addAction(m_wholeRun);
+    menu.addAction(m_zoomInTime);
+    menu.addAction(m_zoomOutTime);
+}
+
+void PlotsPanel::zoomTimeAboutCursor(double factor) {
+    // about the time cursor where it is shown, else about the middle of the time shown
+    const QCPRange shown = m_timeWindow.range();
+    const double t = cursorTime();
+    m_timeWindow.zoomAbout(shown.contains(t) ? t : shown.center(), factor);
+    showTimeWindow();
+}
+
+QList<QCPAxisRect*> PlotsPanel::timeRects() const {
+    QList<QCPAxisRect*> rects;
+    for (QCustomPlot* plot : m_plots)
+        rects << plot->axisRects();
+    if (m_errorsShown)
+        rects << m_errorPlot->axisRects();
+    return rects;
+}
+
+void PlotsPanel::measureRun() {
+    // the union of the whole-run time axes; the sample interval of the first curve
+    double lo = INFINITY, hi = -INFINITY;
+    for (QCPAxisRect* rect : timeRects()) {
+        const QCPRange r = rect->axis(QCPAxis::atBottom)->range();
+        lo = std::min(lo, r.lower);
+        hi = std::max(hi, r.upper);
+    }
+    double interval = NAN;
+    if (m_plots[0]->graphCount() > 0 && m_plots[0]->graph(0)->dataCount() > 1) {
+        const auto data = m_plots[0]->graph(0)->data();
+        interval = (data->constEnd() - 1)->key - data->constBegin()->key;
+        interval /= data->size() - 1;
+    }
+    m_timeWindow.setRun(QCPRange(lo, hi), interval);
+}
+
+void PlotsPanel::showTimeWindow() {
+    {
+        const QSignalBlocker quiet(m_followCursor);
+        m_followCursor->setChecked(m_timeWindow.mode() == TimeWindow::Mode::Following);
+    }
+    if (m_timeWindow.mode() == TimeWindow::Mode::WholeRun) {
+        refresh(); // drawn afresh: the whole run exactly as before any zoom
+        return;
+    }
+    const QCPRange shown = m_timeWindow.range();
+    for (QCPAxisRect* rect : timeRects())
+        fitTimeAxes(*rect, shown);
+    for (QCustomPlot* plot : m_plots)
+        plot->replot(QCustomPlot::rpQueuedReplot);
+    if (m_errorsShown)
+        m_errorPlot->replot(QCustomPlot::rpQueuedReplot);
 }
 
 void PlotsPanel::resizeEvent(QResizeEvent* e) {
@@ -144,6 +306,12 @@ void PlotsPanel::refresh() {
         drawPlot(*m_errorPlot, PlotKind::TrackingError, m_document->series());
         m_errorPlot->replot(QCustomPlot::rpQueuedReplot);
     }
+    // the time shown is kept, within the new run
+    measureRun();
+    if (m_timeWindow.mode() != TimeWindow::Mode::WholeRun) {
+        m_timeWindow.followCursor(cursorTime());
+        showTimeWindow();
+    }
 }
 
 void PlotsPanel::placeCursor(QCustomPlot* plot, int rectIndex, QWidget* cursor) {
@@ -169,6 +337,8 @@ void PlotsPanel::placeCursors() {
 
 void PlotsPanel::setTime(double t) {
     m_time = t;
+    if (m_timeWindow.followCursor(cursorTime()))
+        showTimeWindow();
     placeCursors();
 }
 
@@ -179,6 +349,8 @@ void PlotsPanel::showPlan(const PlotSeries& series) {
 
 void PlotsPanel::setPlanTime(double t) {
     m_planTime = t;
+    if (m_timeWindow.followCursor(cursorTime()))
+        showTimeWindow();
     placeCursors();
 }
 

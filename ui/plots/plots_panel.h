@@ -1,5 +1,6 @@
 #pragma once
 #include "plots/plot_figures.h"
+#include "plots/time_window.h"
 
 #include <QWidget>
 
@@ -7,6 +8,7 @@
 #include <optional>
 
 class QAction;
+class QCPAxisRect;
 class QCustomPlot;
 class QMenu;
 class QGridLayout;
@@ -18,6 +20,10 @@ class SceneDocument;
 /// The plots dock: Psi, chi, lambda and the kinetic energy against t, each drawn by drawPlot
 /// (so they look like the exported plots) with the free motion alongside, and a time cursor
 /// that is a thin child widget, so that moving it repaints two narrow strips. Clicking seeks.
+/// The time plots share one time range (TimeWindow): the wheel zooms it about the time under the
+/// mouse, a middle or Shift drag pans it, a double click shows the whole run again, and "Follow
+/// the cursor" moves a window of it along with the time cursor (the wheel then zooms about the
+/// cursor); the value axes fit what is shown.
 class PlotsPanel : public QWidget {
     Q_OBJECT
   public:
@@ -31,6 +37,14 @@ class PlotsPanel : public QWidget {
     /// curves" action.
     QMenu* contextMenu(int index) const { return m_menus[index]; }
     QAction* fitAllAction(int index) const { return m_fitAll[index]; }
+    /// The time the time plots show, shared by all of them.
+    const TimeWindow& timeWindow() const { return m_timeWindow; }
+    /// "Follow the cursor" (checkable), "Whole run", "Zoom in on the time" and "Zoom out the
+    /// time" (about the time cursor): in every time plot's context menu and the View menu.
+    QAction* followCursorAction() const { return m_followCursor; }
+    QAction* wholeRunAction() const { return m_wholeRun; }
+    QAction* zoomInTimeAction() const { return m_zoomInTime; }
+    QAction* zoomOutTimeAction() const { return m_zoomOutTime; }
     /// The time the cursor shows: the scene's, or the planned motion's while one is shown.
     double cursorTime() const { return m_plan ? m_planTime : m_time; }
     /// Whether the plots show a planned motion (showPlan) rather than the scene's.
@@ -72,6 +86,16 @@ class PlotsPanel : public QWidget {
     void arrange();
     QWidget* makeCursor(QCustomPlot* plot);
     void makeSeekable(QCustomPlot* plot);
+    void makeTimeZoomable(QCustomPlot* plot);
+    void makeTimeActions();
+    void addTimeActions(QMenu& menu);
+    /// The time plots' axis rectangles (the error plot's when it is shown).
+    QList<QCPAxisRect*> timeRects() const;
+    /// The run's range and sample interval handed to the TimeWindow after drawing.
+    void measureRun();
+    /// The TimeWindow's range on every time plot, the value axes fitted to it.
+    void showTimeWindow();
+    void zoomTimeAboutCursor(double factor);
     void placeCursor(QCustomPlot* plot, int rect, QWidget* cursor);
     void placeCursors();
 
@@ -81,6 +105,17 @@ class PlotsPanel : public QWidget {
     std::array<QAction*, 4> m_fitAll{};
     std::array<QWidget*, 4> m_cursors{};
     QCustomPlot* m_errorPlot = nullptr;
+    TimeWindow m_timeWindow;
+    QAction* m_followCursor = nullptr;
+    QAction* m_wholeRun = nullptr;
+    QAction* m_zoomInTime = nullptr;
+    QAction* m_zoomOutTime = nullptr;
+    struct TimePan {
+        bool active = false;
+        double startX = 0;
+        QCPRange from;
+        double secondsPerPixel = 0;
+    } m_timePan;
     std::array<QWidget*, 2> m_errorCursors{};
     bool m_errorsShown = false;
     double m_time = 0;

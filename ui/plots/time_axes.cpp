@@ -79,8 +79,8 @@ void removeMarks(QCPAxisRect& rect) {
 // "↑ free" where the curve first leaves through the top, "↓ free" through the bottom
 using Marks = QList<QPair<double, QCPItemText*>>;
 
-void addMarks(QCPAxisRect& rect, QCPGraph& g, const QCPRange& range, Marks* topMarks,
-              Marks* bottomMarks) {
+void addMarks(QCPAxisRect& rect, QCPGraph& g, const QCPRange& range, const QCPRange& time,
+              Marks* topMarks, Marks* bottomMarks) {
     const QString name = g.property(kClipName).toString();
     if (name.isEmpty())
         return;
@@ -93,13 +93,24 @@ void addMarks(QCPAxisRect& rect, QCPGraph& g, const QCPRange& range, Marks* topM
             lastKey = lastValue = NAN;
             continue;
         }
+        if (d.key < time.lower) { // before the time shown
+            lastKey = d.key;
+            lastValue = d.value;
+            continue;
+        }
         const bool top = d.value > range.upper, bottom = d.value < range.lower;
         if ((top && !doneTop) || (bottom && !doneBottom)) {
             const double edge = top ? range.upper : range.lower;
-            // where the line crosses the edge, or the first point when it starts outside
+            // where the line crosses the edge, or the first point when it starts outside (the
+            // left edge of the time shown when it was outside before it)
             double at = d.key;
             if (std::isfinite(lastValue) && range.contains(lastValue))
                 at = lastKey + (d.key - lastKey) * (edge - lastValue) / (d.value - lastValue);
+            else if (std::isfinite(lastKey) && lastKey < time.lower)
+                at = time.lower;
+            at = std::max(at, time.lower);
+            if (at > time.upper)
+                break;
             Marks& marks = top ? *topMarks : *bottomMarks;
             // a mark near another on the same edge goes under (over) it
             QCPItemText* near = nullptr;
@@ -142,7 +153,43 @@ void addMarks(QCPAxisRect& rect, QCPGraph& g, const QCPRange& range, Marks* topM
         }
         lastKey = d.key;
         lastValue = d.value;
+        if (d.key > time.upper)
+            break;
     }
+}
+
+// the finite values of g at the times of `time`: its points inside and the line at its edges
+void addVisible(const QCPGraph& g, const QCPRange& time, Extent& values) {
+    const QCPGraphData* last = nullptr;
+    const auto end = g.data()->findEnd(time.upper);
+    for (auto it = g.data()->findBegin(time.lower); it != end; ++it) {
+        if (!std::isfinite(it->key) || !std::isfinite(it->value)) {
+            last = nullptr;
+            continue;
+        }
+        if (time.contains(it->key))
+            values.add(it->value);
+        if (last)
+            for (double edge : {time.lower, time.upper})
+                if (last->key < edge && edge < it->key)
+                    values.add(last->value + (it->value - last->value) * (edge - last->key) /
+                                                 (it->key - last->key));
+        last = &*it;
+    }
+}
+
+// the value axis and the clip marks for the extents of the curves
+void fitValues(QCPAxisRect& rect, const QList<QCPGraph*>& graphs, const Extent& controlled,
+               const Extent& all, const QCPRange& time) {
+    const bool everything = fitAllCurves(*rect.parentPlot());
+    const QCPRange range = everything ? paddedRange(all.lo, all.hi) : valueRange(controlled, all);
+    rect.axis(QCPAxis::atLeft)->setRange(range);
+    if (everything)
+        return;
+    Marks top, bottom;
+    for (QCPGraph* g : graphs)
+        if (!g->property(kRole).toBool())
+            addMarks(rect, *g, range, time, &top, &bottom);
 }
 
 } // namespace
@@ -182,15 +229,28 @@ void fitTimeAxes(QCPAxisRect& rect) {
         }
     }
     rect.axis(QCPAxis::atBottom)->setRange(paddedRange(keys.lo, keys.hi));
-    const bool everything = fitAllCurves(*rect.parentPlot());
-    const QCPRange range = everything ? paddedRange(all.lo, all.hi) : valueRange(controlled, all);
-    rect.axis(QCPAxis::atLeft)->setRange(range);
-    if (everything)
-        return;
-    Marks top, bottom;
-    for (QCPGraph* g : graphs)
-        if (!g->property(kRole).toBool())
-            addMarks(rect, *g, range, &top, &bottom);
+    const double inf = std::numeric_limits<double>::infinity();
+    fitValues(rect, graphs, controlled, all, QCPRange(-inf, inf));
+}
+
+void fitTimeAxes(QCPAxisRect& rect, const QCPRange& time) {
+    removeMarks(rect);
+    Extent controlled, all;
+    const QList<QCPGraph*> graphs = graphsOf(rect);
+    for (QCPGraph* g : graphs) {
+        Extent values;
+        addVisible(*g, time, values);
+        if (values.empty())
+            continue;
+        all.add(values.lo);
+        all.add(values.hi);
+        if (g->property(kRole).toBool()) {
+            controlled.add(values.lo);
+            controlled.add(values.hi);
+        }
+    }
+    rect.axis(QCPAxis::atBottom)->setRange(time);
+    fitValues(rect, graphs, controlled, all, time);
 }
 
 void placeClipMarks(QCPAxisRect& rect) {

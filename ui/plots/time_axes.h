@@ -5,6 +5,7 @@
 
 class QCPAxisRect;
 class QCPGraph;
+class QCPRange;
 class QCustomPlot;
 
 namespace chaplygin::ui {
@@ -27,6 +28,11 @@ constexpr double kFlatFactor = 10;
 /// curve and edge). With fitAllCurves(plot) every finite value is in view and no mark is drawn.
 /// NaN and infinite values are left out of every range.
 void fitTimeAxes(QCPAxisRect& rect);
+/// The same for the times of `time` alone (a zoomed time axis): the key axis shows `time`, the
+/// value axis what the curves reach within it (their points inside and the lines at its edges),
+/// and a clip mark stands where a curve first leaves within it (at its left edge when it comes
+/// in from outside).
+void fitTimeAxes(QCPAxisRect& rect, const QCPRange& time);
 
 /// Turns each clip mark of rect so that its text stays inside the frame: "↑ free" to the right
 /// of the exit, "free ↑" to its left, or against the left edge; in a frame narrower than the text

@@ -152,7 +152,7 @@ void MainWindow::buildMenus() {
     m_followAction = view->addAction(tr("F&ollow body"));
     m_followAction->setCheckable(true);
     m_followAction->setShortcut(QKeySequence(tr("Ctrl+B")));
-    connect(m_followAction, &QAction::toggled, m_canvas, &SceneCanvas::setFollowBody);
+    connect(m_followAction, &QAction::toggled, m_canvas, &SceneCanvas::setFollowing);
     connect(m_canvas, &SceneCanvas::followBodyChanged, m_followAction, &QAction::setChecked);
     QAction* vakonomic = m_vakonomicAction = view->addAction(tr("Genuine &vakonomic body"));
     vakonomic->setObjectName(QStringLiteral("showVakonomicAction"));
@@ -164,6 +164,13 @@ void MainWindow::buildMenus() {
     view->addAction(tr("Zoom &in"), QKeySequence::ZoomIn, this, [this] { m_canvas->zoomBy(1.25); });
     view->addAction(tr("Zoom &out"), QKeySequence::ZoomOut, this,
                     [this] { m_canvas->zoomBy(0.8); });
+    // the time plots' time axis: follow the cursor, the whole run, zoom about the cursor
+    QMenu* plotTime = view->addMenu(tr("Plots' &time"));
+    plotTime->setObjectName(QStringLiteral("plotTimeMenu"));
+    plotTime->addAction(m_plots->followCursorAction());
+    plotTime->addAction(m_plots->wholeRunAction());
+    plotTime->addAction(m_plots->zoomInTimeAction());
+    plotTime->addAction(m_plots->zoomOutTimeAction());
     view->addSeparator();
     m_bodyMenu = new BodyDisplayMenu(this);
     view->addMenu(m_bodyMenu);
