@@ -2,6 +2,7 @@
 
 #include "canvas/canvas_style.h"
 #include "canvas/canvas_view.h"
+#include "canvas/curve_flattening.h"
 #include "document/scene_document.h"
 
 #include <QFontMetricsF>
@@ -23,56 +24,84 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kDegrees = 180 / std::numbers::pi;
 
-// a path or trail as drawn: its samples' times and points, up to time tMax
-struct Curve {
+// a path or trail as drawn, up to the parameter `limit` (arc length along the path, time along a
+// trail)
+struct Drawn {
     MeasureTool::Body body;
-    const QVector<double>* t;
-    const QVector<double>* x;
-    const QVector<double>* y;
-    double tMax;
+    const FlatCurve* curve;
+    double limit;
 };
 
-// the point of a curve nearest a pixel: its segment i, the fraction u along it, the distance [px]
+// the point of a polyline nearest a pixel: its segment i, the fraction u along it, the distance
+// [px]
 struct Nearest {
-    const Curve* curve = nullptr;
+    int index = -1; // of the curve
     int i = 0;
     double u = 0, distance = std::numeric_limits<double>::infinity();
 };
 
-std::vector<Curve> curvesOf(const PlotSeries& s, const MeasureTool::Shown& shown) {
+std::vector<Drawn> drawnCurves(const MeasureTool::Shown& shown) {
+    if (!shown.curves)
+        return {};
     constexpr double kAll = std::numeric_limits<double>::infinity();
     using B = MeasureTool::Body;
-    // the path over the whole horizon; the trails as far as they are drawn now
-    std::vector<Curve> out{{B::Controlled, &s.t, &s.x, &s.y, kAll},
-                           {B::Free, &s.freeT, &s.freeX, &s.freeY, shown.time}};
+    const CanvasCurves& c = *shown.curves;
+    // the path whole; the trails as far as they are drawn now
+    std::vector<Drawn> out{{B::Controlled, &c.path(), kAll}, {B::Free, &c.free(), shown.time}};
     if (shown.vakonomic)
-        out.push_back({B::Vakonomic, &s.vakT, &s.vakX, &s.vakY, shown.time});
-    if (s.perturbed && shown.openLoop)
-        out.push_back({B::OpenLoop, &s.pertT, &s.pertX, &s.pertY, shown.time});
-    if (s.perturbed && shown.closedLoop)
-        out.push_back({B::ClosedLoop, &s.pertT, &s.fbX, &s.fbY, shown.time});
+        out.push_back({B::Vakonomic, &c.vakonomic(), shown.time});
+    if (shown.openLoop)
+        out.push_back({B::OpenLoop, &c.openLoop(), shown.time});
+    if (shown.closedLoop)
+        out.push_back({B::ClosedLoop, &c.closedLoop(), shown.time});
     return out;
 }
 
-Nearest nearestOn(const std::vector<Curve>& curves, const QTransform& map, QPointF pixel) {
+// the nearest point of polylines given by their parameters and points, each up to its limit
+template <class Param, class Point>
+Nearest nearestOn(int count, const Param& param, const Point& point, const QTransform& map,
+                  QPointF pixel) {
     Nearest best;
-    for (const Curve& c : curves) {
-        const int n = int(std::min({c.t->size(), c.x->size(), c.y->size()}));
-        for (int i = 0; i + 1 < n && (*c.t)[i] <= c.tMax; ++i) {
-            const QPointF a = map.map(QPointF((*c.x)[i], (*c.y)[i]));
-            const QPointF b = map.map(QPointF((*c.x)[i + 1], (*c.y)[i + 1]));
-            const double dt = (*c.t)[i + 1] - (*c.t)[i];
-            const double uMax = dt > 0 ? std::clamp((c.tMax - (*c.t)[i]) / dt, 0.0, 1.0) : 1.0;
+    for (int k = 0; k < count; ++k) {
+        const auto [n, limit] = param(k, -1);
+        for (int i = 0; i + 1 < n && param(k, i).second <= limit; ++i) {
+            const double p0 = param(k, i).second, p1 = param(k, i + 1).second;
+            const QPointF a = map.map(point(k, i)), b = map.map(point(k, i + 1));
+            const double uMax = p1 > p0 ? std::clamp((limit - p0) / (p1 - p0), 0.0, 1.0) : 1.0;
             const QPointF ab = b - a;
             const double len2 = QPointF::dotProduct(ab, ab);
             const double u =
                 len2 > 0 ? std::clamp(QPointF::dotProduct(pixel - a, ab) / len2, 0.0, uMax) : 0.0;
             const double d = QLineF(a + u * ab, pixel).length();
             if (std::isfinite(d) && d < best.distance)
-                best = {&c, i, u, d};
+                best = {k, i, u, d};
         }
     }
     return best;
+}
+
+Nearest nearestDrawn(const std::vector<Drawn>& drawn, const QTransform& map, QPointF pixel) {
+    return nearestOn(
+        int(drawn.size()),
+        [&](int k, int i) -> std::pair<int, double> {
+            const FlatCurve& c = *drawn[k].curve;
+            if (i < 0)
+                return {int(std::min(c.param.size(), c.points.size())), drawn[k].limit};
+            return {0, c.param[i]};
+        },
+        [&](int k, int i) { return drawn[k].curve->points[i]; }, map, pixel);
+}
+
+// the controlled body's samples (t, x, y) nearest a pixel: a bracket of its time
+Nearest nearestSample(const PlotSeries& s, const QTransform& map, QPointF pixel) {
+    const int n = int(std::min({s.t.size(), s.x.size(), s.y.size()}));
+    return nearestOn(
+        1,
+        [&](int, int i) -> std::pair<int, double> {
+            return i < 0 ? std::pair{n, std::numeric_limits<double>::infinity()}
+                         : std::pair{0, s.t[i]};
+        },
+        [&](int, int i) { return QPointF(s.x[i], s.y[i]); }, map, pixel);
 }
 
 // the parts of Solution::at a body needs
@@ -185,12 +214,12 @@ MeasureTool::Snap MeasureTool::snap(QPointF pixel) const {
     for (const PathNode& end : {path.start(), path.end()})
         if (near({end.x, end.y}) <= radius)
             return {{end.x, end.y}, {}};
-    // the path and the trails
-    const std::vector<Curve> curves = curvesOf(m_document->series(), shown);
-    const Nearest n = nearestOn(curves, m_view.transform(), pixel);
-    if (n.curve && n.distance <= radius) {
-        const Curve& c = *n.curve;
-        const QPointF a((*c.x)[n.i], (*c.y)[n.i]), b((*c.x)[n.i + 1], (*c.y)[n.i + 1]);
+    // the path and the trails as drawn
+    const std::vector<Drawn> drawn = drawnCurves(shown);
+    const Nearest n = nearestDrawn(drawn, m_view.transform(), pixel);
+    if (n.index >= 0 && n.distance <= radius) {
+        const FlatCurve& c = *drawn[std::size_t(n.index)].curve;
+        const QPointF a = c.points[std::size_t(n.i)], b = c.points[std::size_t(n.i) + 1];
         return {a + n.u * (b - a), {}};
     }
     return {m_view.toWorld(pixel), {}};
@@ -200,17 +229,31 @@ std::optional<MeasureTool::Probe> MeasureTool::probeAt(QPointF pixel) const {
     const auto& solution = m_document->solution();
     if (!solution)
         return {};
-    const std::vector<Curve> curves = curvesOf(m_document->series(), m_shown());
-    const Nearest n = nearestOn(curves, m_view.transform(), pixel);
-    if (!n.curve || n.distance > 1.5 * snapPx())
+    const Shown shown = m_shown();
+    const std::vector<Drawn> drawn = drawnCurves(shown);
+    const Nearest n = nearestDrawn(drawn, m_view.transform(), pixel);
+    if (n.index < 0 || n.distance > 1.5 * snapPx())
         return {};
-    // the nearest time by a golden-section search between the neighbouring samples, on the
-    // distance to the exact motion
-    const Curve& c = *n.curve;
-    const int last = int(c.t->size()) - 1;
-    const double tEnd = std::min(c.tMax, solution->tEnd());
-    double lo = std::clamp((*c.t)[std::max(n.i - 1, 0)], 0.0, tEnd);
-    double hi = std::clamp((*c.t)[std::min(n.i + 2, last)], lo, tEnd);
+    // the nearest time by a golden-section search between the neighbouring samples (the
+    // controlled body's: the path is drawn by arc length), on the distance to the exact motion
+    const Drawn& c = drawn[std::size_t(n.index)];
+    const double tEnd = std::min(c.limit, solution->tEnd());
+    double lo = 0, hi = 0;
+    if (c.body == Body::Controlled) {
+        const PlotSeries& series = m_document->series();
+        const Nearest sample = nearestSample(series, m_view.transform(), pixel);
+        if (sample.index < 0)
+            return {};
+        const int last = int(series.t.size()) - 1;
+        lo = series.t[std::max(sample.i - 1, 0)];
+        hi = series.t[std::min(sample.i + 2, last)];
+    } else {
+        const int last = int(c.curve->param.size()) - 1;
+        lo = c.curve->param[std::size_t(std::max(n.i - 1, 0))];
+        hi = c.curve->param[std::size_t(std::min(n.i + 2, last))];
+    }
+    lo = std::clamp(lo, 0.0, tEnd);
+    hi = std::clamp(hi, lo, tEnd);
     const QPointF target = m_view.toWorld(pixel);
     const MotionParts parts = partsOf(c.body);
     auto distance = [&](double t) {
@@ -321,8 +364,11 @@ std::optional<double> MeasureTool::headingAngle() const {
 QStringList MeasureTool::rulerText() const {
     if (!m_ruler)
         return {};
-    QStringList lines{
-        tr("%1 m at %2°").arg(number(m_ruler->length()), degrees(m_ruler->direction()))};
+    QStringList lines;
+    // the protractor's first arm, then the ruler (its second arm)
+    for (const auto& arm : {m_first, m_ruler})
+        if (arm)
+            lines << tr("%1 m at %2°").arg(number(arm->length()), degrees(arm->direction()));
     if (const auto angle = protractorAngle())
         lines << tr("angle %1°").arg(degrees(*angle));
     if (const auto angle = headingAngle())
@@ -362,20 +408,25 @@ QStringList MeasureTool::probeText() const {
     return lines;
 }
 
-void MeasureTool::paintLabel(QPainter& p, QPointF at, const QStringList& lines) const {
-    QFont font = p.font();
-    font.setPointSizeF(font.pointSizeF() * m_style.lineScale);
-    p.setFont(font);
-    const QFontMetricsF metrics(font);
+void MeasureTool::paintLabel(QPainter& p, QPointF at, double gap, const QStringList& lines,
+                             bool awayFromMiddle) const {
+    const QFontMetricsF metrics(p.font());
     double w = 0;
     for (const QString& line : lines)
         w = std::max(w, metrics.horizontalAdvance(line));
     const double pad = 4 * m_style.lineScale;
     QRectF box(at, QSizeF(w + 2 * pad, lines.size() * metrics.lineSpacing() + 2 * pad));
-    // kept inside the widget
     if (const QPaintDevice* device = p.device()) {
         const QRectF room(0, 0, device->width() / device->devicePixelRatioF(),
                           device->height() / device->devicePixelRatioF());
+        // away from the middle, where the ruler's read-out usually is
+        if (awayFromMiddle) {
+            if (at.x() < room.center().x())
+                box.moveRight(at.x() - 2 * gap);
+            if (at.y() < room.center().y())
+                box.moveBottom(at.y() - 2 * gap);
+        }
+        // kept inside the widget
         box.moveLeft(std::clamp(box.left(), room.left(), std::max(room.right() - box.width(), 0.)));
         box.moveTop(std::clamp(box.top(), room.top(), std::max(room.bottom() - box.height(), 0.)));
     }
@@ -395,6 +446,10 @@ void MeasureTool::paint(QPainter& p) const {
         return;
     p.save();
     p.setRenderHint(QPainter::Antialiasing);
+    // the read-outs in the canvas's font, scaled as its lines
+    QFont font = p.font();
+    font.setPointSizeF(font.pointSizeF() * m_style.lineScale);
+    p.setFont(font);
     const QColor ink(20, 20, 20);
     const double ls = m_style.lineScale;
     auto drawArm = [&](const Arm& arm) {
@@ -436,13 +491,14 @@ void MeasureTool::paint(QPainter& p) const {
             drawArc(vertex, h, std::remainder(m_ruler->direction() - h, 2 * std::numbers::pi),
                     22 * ls);
         }
-        paintLabel(p, m_view.toPixel(m_ruler->to) + QPointF(10, 6) * ls, rulerText());
+        paintLabel(p, m_view.toPixel(m_ruler->to) + QPointF(10, 6) * ls, 10 * ls, rulerText(),
+                   false);
     }
     if (m_probe) {
         p.setPen(m_style.pen(ink, 2));
         p.setBrush(Qt::NoBrush);
         p.drawEllipse(m_probe->pixel, 6 * ls, 6 * ls);
-        paintLabel(p, m_probe->pixel + QPointF(12, 12) * ls, probeText());
+        paintLabel(p, m_probe->pixel + QPointF(12, 12) * ls, 12 * ls, probeText(), true);
     }
     p.restore();
 }

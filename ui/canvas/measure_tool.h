@@ -10,6 +10,7 @@
 
 namespace chaplygin::ui {
 
+class CanvasCurves;
 class CanvasView;
 class SceneDocument;
 struct CanvasStyle;
@@ -23,10 +24,12 @@ struct CanvasStyle;
 class MeasureTool : public CanvasTool {
     Q_OBJECT
   public:
-    /// What the canvas shows now: its time [s] and which of the other bodies are drawn.
+    /// What the canvas shows now: its time [s], which of the other bodies are drawn, and the
+    /// curves as drawn (the path and the trails flattened at the view's scale).
     struct Shown {
         double time = 0;
         bool vakonomic = true, openLoop = false, closedLoop = false;
+        const CanvasCurves* curves = nullptr;
     };
     /// The bodies whose path or trail a probe reads: the controlled body along the path, the
     /// free ghost, the genuine vakonomic body and the two perturbed bodies.
@@ -90,7 +93,10 @@ class MeasureTool : public CanvasTool {
     /// The nearest point of the path or a drawn trail within the probing distance, if any.
     std::optional<Probe> probeAt(QPointF pixel) const;
     double snapPx() const;
-    void paintLabel(QPainter& p, QPointF at, const QStringList& lines) const;
+    /// A read-out's box with its top left corner at `at` [px], `gap` [px] right of and below its
+    /// point; awayFromMiddle: on the side of the point away from the widget's middle.
+    void paintLabel(QPainter& p, QPointF at, double gap, const QStringList& lines,
+                    bool awayFromMiddle) const;
 
     const CanvasView& m_view;
     const CanvasStyle& m_style;

@@ -39,7 +39,7 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
           m_view, m_look.style, document,
           [this] {
               return MeasureTool::Shown{m_time, m_look.vakonomic, m_look.openLoop,
-                                        m_look.closedLoop};
+                                        m_look.closedLoop, &curves()};
           },
           this)),
       m_panTool(new PanTool(m_view, this)) {

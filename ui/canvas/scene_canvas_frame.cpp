@@ -366,7 +366,8 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         m_editTool->paint(p);
         m_drawTool->paint(p);
     }
-    // the ruler, the protractor and the probe over everything
+    // the ruler, the protractor and the probe over everything, in the widget's font
+    p.setFont(font());
     m_measureTool->paint(p);
 }
 
