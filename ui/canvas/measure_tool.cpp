@@ -8,7 +8,6 @@
 #include <QFontMetricsF>
 #include <QLineF>
 #include <QMouseEvent>
-#include <QPaintDevice>
 #include <QPainter>
 
 #include <algorithm>
@@ -416,20 +415,17 @@ void MeasureTool::paintLabel(QPainter& p, QPointF at, double gap, const QStringL
         w = std::max(w, metrics.horizontalAdvance(line));
     const double pad = 4 * m_style.lineScale;
     QRectF box(at, QSizeF(w + 2 * pad, lines.size() * metrics.lineSpacing() + 2 * pad));
-    if (const QPaintDevice* device = p.device()) {
-        const QRectF room(0, 0, device->width() / device->devicePixelRatioF(),
-                          device->height() / device->devicePixelRatioF());
-        // away from the middle, where the ruler's read-out usually is
-        if (awayFromMiddle) {
-            if (at.x() < room.center().x())
-                box.moveRight(at.x() - 2 * gap);
-            if (at.y() < room.center().y())
-                box.moveBottom(at.y() - 2 * gap);
-        }
-        // kept inside the widget
-        box.moveLeft(std::clamp(box.left(), room.left(), std::max(room.right() - box.width(), 0.)));
-        box.moveTop(std::clamp(box.top(), room.top(), std::max(room.bottom() - box.height(), 0.)));
+    const QRectF room = m_shown().area;
+    // away from the middle, where the ruler's read-out usually is
+    if (awayFromMiddle) {
+        if (at.x() < room.center().x())
+            box.moveRight(at.x() - 2 * gap);
+        if (at.y() < room.center().y())
+            box.moveBottom(at.y() - 2 * gap);
     }
+    // kept inside the drawing area where it fits
+    box.moveLeft(std::max(std::min(box.left(), room.right() - box.width()), room.left()));
+    box.moveTop(std::max(std::min(box.top(), room.bottom() - box.height()), room.top()));
     p.setPen(Qt::NoPen);
     p.setBrush(QColor(255, 255, 255, 225));
     p.drawRect(box);

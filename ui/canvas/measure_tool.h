@@ -2,6 +2,7 @@
 #include "canvas/canvas_tool.h"
 
 #include <QPointF>
+#include <QRectF>
 #include <QString>
 #include <QStringList>
 
@@ -30,6 +31,7 @@ class MeasureTool : public CanvasTool {
         double time = 0;
         bool vakonomic = true, openLoop = false, closedLoop = false;
         const CanvasCurves* curves = nullptr;
+        QRectF area; ///< the drawing area [px]: the read-outs stay inside it
     };
     /// The bodies whose path or trail a probe reads: the controlled body along the path, the
     /// free ghost, the genuine vakonomic body and the two perturbed bodies.

@@ -38,8 +38,9 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
       m_measureTool(new MeasureTool(
           m_view, m_look.style, document,
           [this] {
-              return MeasureTool::Shown{m_time, m_look.vakonomic, m_look.openLoop,
-                                        m_look.closedLoop, &curves()};
+              return MeasureTool::Shown{m_time,          m_look.vakonomic,
+                                        m_look.openLoop, m_look.closedLoop,
+                                        &curves(),       drawingArea()};
           },
           this)),
       m_panTool(new PanTool(m_view, this)) {

@@ -22,6 +22,7 @@ ValuesPanel::ValuesPanel(SceneDocument* document, QWidget* parent)
     m_table->setHorizontalHeaderLabels({tr("Column"), tr("Value"), tr("Unit")});
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->verticalHeader()->hide();
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     m_table->horizontalHeader()->setStretchLastSection(true);
     m_table->setAccessibleName(tr("Values at the shown time"));
     m_copy->setObjectName(QStringLiteral("copyValuesButton"));
