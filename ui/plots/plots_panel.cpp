@@ -5,6 +5,7 @@
 #include "plots/flat_plot.h"
 #include "plots/pinned_plots.h"
 #include "plots/plot_context_menu.h"
+#include "plots/plot_crosshair.h"
 
 #include <QGridLayout>
 #include <QPalette>
@@ -35,6 +36,7 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
             plot, [i] { return plotFileStem(kKinds[i]); },
             [this](const QString& error) { emit exportFailed(error); });
         m_fitAll[i] = installFitAllAction(plot, *m_menus[i]);
+        new PlotCrosshair(plot); // hovering reads every curve at that time
     }
     m_errorPlot = new FlatPlot;
     m_errorPlot->setObjectName(plotFileStem(PlotKind::TrackingError));
@@ -46,6 +48,7 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
     for (QWidget*& cursor : m_errorCursors)
         cursor = makeCursor(m_errorPlot);
     makeSeekable(m_errorPlot);
+    new PlotCrosshair(m_errorPlot);
     arrange();
     installPlotExportMenu(
         m_errorPlot, [] { return plotFileStem(PlotKind::TrackingError); },

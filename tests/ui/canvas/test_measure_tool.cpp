@@ -8,6 +8,8 @@
 #include "document/scene_document.h"
 #include "gui_test_support.h"
 #include "panels/values_panel.h"
+#include "plots/plot_crosshair.h"
+#include "plots/plots_panel.h"
 #include "scene/csv_columns.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
@@ -23,6 +25,7 @@
 #include <QTableWidget>
 #include <QUndoStack>
 #include <QtTest>
+#include <qcustomplot.h>
 
 #include <cmath>
 #include <memory>
@@ -75,6 +78,7 @@ class TestMeasureTool : public QObject {
     void theProbeReadsTheCircleAtTheNearestPoint();
     void measuringLeavesTheSceneUnchanged();
     void theValuesDockCopiesTheSolutionAtTheShownTime();
+    void hoveringAPlotReadsEveryCurveAtThatTime();
 
   private:
     MeasureTool* startMeasuring();
@@ -306,6 +310,47 @@ void TestMeasureTool::theValuesDockCopiesTheSolutionAtTheShownTime() {
     // the table shows the same rows
     QCOMPARE(values->table()->rowCount(), int(columns.size()));
     QCOMPARE(values->table()->item(0, 0)->text(), QStringLiteral("t"));
+}
+
+void TestMeasureTool::hoveringAPlotReadsEveryCurveAtThatTime() {
+    // the circle preset: the controlled body's Psi is constant, atan2(1, b kappa) with b = 1,
+    // kappa = 1/2; the free body's Psi from the core's closed form (docs/physics.md §4)
+    m_window->document()->loadNow(presetScene("circle"));
+    m_window->plotsPanel()->replotNow();
+    QCustomPlot* plot = m_window->plotsPanel()->plot(0); // Psi
+    auto* crosshair = plot->findChild<PlotCrosshair*>();
+    QVERIFY(crosshair);
+    QCPAxisRect* rect = plot->axisRect(0);
+    QVERIFY(rect->width() > 50);
+    const QPointF at(rect->left() + 0.62 * rect->width(), rect->center().y());
+    sendMove(plot, at, Qt::NoButton);
+    QVERIFY(crosshair->time());
+    const double t = rect->axis(QCPAxis::atBottom)->pixelToCoord(at.x());
+    QCOMPARE(*crosshair->time(), t);
+    QVERIFY(crosshair->readout()->isVisible());
+    const auto solution = m_window->document()->solution();
+    const MotionSample m = solution->at(t);
+    bool controlled = false, free = false, vakonomic = false;
+    for (const PlotCrosshair::Value& v : crosshair->values()) {
+        if (v.name.startsWith(QStringLiteral("controlled"))) {
+            controlled = true;
+            QCOMPARE_LT(std::abs(v.value - std::atan2(1.0, 0.5)), 1e-9);
+        } else if (v.name.startsWith(QStringLiteral("free"))) {
+            free = true;
+            // the plotted curve, linear between samples 0.035 s apart
+            QCOMPARE_LT(std::abs(v.value - m.free.psi), 1e-3);
+        } else if (v.name.startsWith(QStringLiteral("vakonomic"))) {
+            vakonomic = true;
+            QCOMPARE_LT(std::abs(v.value - m.vak.psi), 1e-3);
+        }
+    }
+    QVERIFY(controlled && free && vakonomic);
+    QVERIFY(crosshair->readout()->text().contains(QString::number(std::atan2(1.0, 0.5), 'g', 5)));
+    // leaving the plot hides it
+    QEvent leave(QEvent::Leave);
+    QApplication::sendEvent(plot, &leave);
+    QVERIFY(!crosshair->time());
+    QVERIFY(!crosshair->readout()->isVisible());
 }
 
 QTEST_MAIN(TestMeasureTool)
