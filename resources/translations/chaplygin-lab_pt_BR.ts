@@ -2551,6 +2551,13 @@ O que os estudantes devem observar…</translation>
     </message>
 </context>
 <context>
+    <name>chaplygin::ui::PlotCrosshair</name>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+</context>
+<context>
     <name>chaplygin::ui::PlotsPanel</name>
     <message>
         <source> — click or drag to move the animation to that time</source>
