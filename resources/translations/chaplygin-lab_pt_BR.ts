@@ -1827,7 +1827,7 @@ realimentação: %2</translation>
     </message>
     <message>
         <source>Play plan</source>
-        <translation>Reproduzir plano</translation>
+        <translation>Tocar plano</translation>
     </message>
     <message>
         <source>Ctrl+Shift+Space</source>

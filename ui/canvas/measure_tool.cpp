@@ -441,6 +441,7 @@ void MeasureTool::paint(QPainter& p) const {
     if (!m_enabled)
         return;
     p.save();
+    p.setClipRect(m_shown().area);
     p.setRenderHint(QPainter::Antialiasing);
     // the read-outs in the canvas's font, scaled as its lines
     QFont font = p.font();

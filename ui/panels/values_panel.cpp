@@ -63,8 +63,6 @@ void ValuesPanel::refresh() {
                 m_table->setItem(row, col, item);
             }
             item->setText(text);
-            item->setToolTip(
-                QString::fromUtf8(column.meaning.data(), qsizetype(column.meaning.size())));
         };
         cell(0, QString::fromUtf8(column.name.data(), qsizetype(column.name.size())));
         cell(1, QString::number(column.value(m), 'g', 6));

@@ -90,6 +90,8 @@ void PlotCrosshair::hoverAt(QPointF pixel) {
                      .arg(graph.pen().color().name(), graph.name().toHtmlEscaped(),
                           QString::number(*v, 'g', 5));
     }
+    // in the axes' type, which presentation mode enlarges
+    m_readout->setFont(axis->tickLabelFont());
     m_readout->setText(lines.join(QStringLiteral("<br>")));
     m_readout->adjustSize();
     const int x = int(std::lround(pixel.x()));
