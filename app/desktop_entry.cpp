@@ -32,6 +32,7 @@
 #include <QJsonObject>
 #include <QLocale>
 #include <QMessageBox>
+#include <QMouseEvent>
 #include <QPixmap>
 #include <QTimer>
 #include <QUrl>
@@ -82,6 +83,8 @@ struct ScreenshotOptions {
     std::string language;      ///< --language en|pt_BR: that catalogue instead of the system's
     std::string viewReport;    ///< --view-report FILE.json: the canvas's place and map
     std::optional<BodyDisplay> body; ///< --body scale|outline|marker
+    std::vector<QPointF> measure;    ///< --measure: the ruler's (and protractor's) points [m]
+    std::optional<QPointF> probe;    ///< --probe: where the probe hovers [m]
     Scene scene;
 };
 
@@ -96,15 +99,40 @@ Scene sceneOf(const app::OptionValues& given) {
 
 void readPanel(const std::string& panel, ScreenshotOptions& o) {
     if (panel != "path" && panel != "parameters" && panel != "methods" && panel != "sweep" &&
-        panel != "notes" && panel != "equations")
-        throw InputError("--panel", "expected path, parameters, methods, sweep, notes or "
-                                    "equations, got '" +
+        panel != "notes" && panel != "equations" && panel != "values")
+        throw InputError("--panel", "expected path, parameters, methods, sweep, notes, "
+                                    "equations or values, got '" +
                                         panel + "'");
     o.showSweep = panel == "sweep";
-    if (panel == "notes" || panel == "equations")
+    if (panel == "notes" || panel == "equations" || panel == "values")
         o.dock = panel + "Dock";
     o.showParameters = panel == "parameters";
     o.showMethods = panel == "methods";
+}
+
+// "X,Y" [m], finite
+QPointF readWorldPoint(const std::string& text, const std::string& where) {
+    const auto comma = text.find(',');
+    if (comma == std::string::npos || text.find(',', comma + 1) != std::string::npos)
+        throw InputError(where, "expects X,Y, got '" + text + "'");
+    return {parseNumber(text.substr(0, comma), where), parseNumber(text.substr(comma + 1), where)};
+}
+
+// "X0,Y0 X1,Y1 [X2,Y2]": two or three points [m]
+std::vector<QPointF> readMeasure(const std::string& text) {
+    std::vector<QPointF> points;
+    std::size_t at = 0;
+    while (at < text.size()) {
+        const std::size_t end = std::min(text.find(' ', at), text.size());
+        if (end > at)
+            points.push_back(
+                readWorldPoint(text.substr(at, end - at),
+                               "--measure, point " + std::to_string(points.size() + 1)));
+        at = end + 1;
+    }
+    if (points.size() < 2 || points.size() > 3)
+        throw InputError("--measure", "expects two or three points X,Y, got '" + text + "'");
+    return points;
 }
 
 std::pair<int, int> readWindowSize(const std::string& size) {
@@ -146,6 +174,10 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
         checkBodyOption(*body);
         o.body = bodyDisplayNamed(*body);
     }
+    if (auto measure = given.value("--measure"))
+        o.measure = readMeasure(*measure);
+    if (auto probe = given.value("--probe"))
+        o.probe = readWorldPoint(*probe, "--probe");
     o.scene = sceneOf(given);
     if (auto sweep = given.value("--sweep")) {
         o.sweep = parseSweepSpec(*sweep);
@@ -170,6 +202,27 @@ void writeViewReport(const std::string& file, MainWindow& window, const QImage& 
                              {"scale", k * canvas->scale()},
                              {"origin", QJsonArray{k * origin.x(), k * origin.y()}}};
     writeFileAtomically(file, QJsonDocument(report).toJson().toStdString());
+}
+
+// the Measure tool as the mouse drives it: the ruler dragged between the first two points [m],
+// the protractor's second arm from the second to the third, then the probe hovering
+void showMeasuring(SceneCanvas& canvas, const std::vector<QPointF>& measure,
+                   const std::optional<QPointF>& probe) {
+    canvas.setMeasureMode(true);
+    auto send = [&canvas](QEvent::Type type, QPointF world, Qt::MouseButton button,
+                          Qt::MouseButtons buttons) {
+        const QPointF pixel = canvas.toPixel(world);
+        QMouseEvent e(type, pixel, canvas.mapToGlobal(pixel), button, buttons, {});
+        QCoreApplication::sendEvent(&canvas, &e);
+    };
+    for (std::size_t i = 0; i + 1 < measure.size(); ++i) {
+        send(QEvent::MouseButtonPress, measure[i], Qt::LeftButton, Qt::LeftButton);
+        send(QEvent::MouseMove, measure[i + 1], Qt::NoButton, Qt::LeftButton);
+        send(QEvent::MouseButtonRelease, measure[i + 1], Qt::LeftButton, Qt::NoButton);
+    }
+    if (probe)
+        send(QEvent::MouseMove, *probe, Qt::NoButton, Qt::NoButton);
+    QCoreApplication::processEvents();
 }
 
 int renderScreenshot(const ScreenshotOptions& o) {
@@ -226,6 +279,8 @@ int renderScreenshot(const ScreenshotOptions& o) {
     window.accuracyReadout()->refresh();
     window.plotsPanel()->replotNow();
     QCoreApplication::processEvents();
+    if (!o.measure.empty() || o.probe)
+        showMeasuring(*window.canvas(), o.measure, o.probe);
     QImage image = window.grab().toImage();
     if (image.isNull() || !image.save(QString::fromStdString(o.file), "PNG")) {
         std::fprintf(stderr, "chaplygin-lab: cannot write the screenshot '%s'\n", o.file.c_str());

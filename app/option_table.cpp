@@ -38,9 +38,18 @@ const std::array kOptions = {
     OptionSpec{.name = "--at", .argument = "T",
                .help = "the moment shown [s] (default 0)",
                .modes = Screenshot, .section = S::Screenshot},
-    OptionSpec{.name = "--panel", .argument = "path|parameters|methods|sweep|notes|equations",
+    OptionSpec{.name = "--panel",
+               .argument = "path|parameters|methods|sweep|notes|equations|values",
                .help = "the dock raised (methods computes the work-precision diagram;\n"
                        "sweep runs --sweep)",
+               .modes = Screenshot, .section = S::Screenshot},
+    OptionSpec{.name = "--measure", .argument = "\"X0,Y0 X1,Y1 [X2,Y2]\"",
+               .help = "the Measure tool's ruler dragged from X0,Y0 to X1,Y1 [m]; a\n"
+                       "third point drags the protractor's second arm from X1,Y1",
+               .modes = Screenshot, .section = S::Screenshot},
+    OptionSpec{.name = "--probe", .argument = "X,Y",
+               .help = "the Measure tool's probe hovering X,Y [m] (the path or a trail\n"
+                       "near it)",
                .modes = Screenshot, .section = S::Screenshot},
     OptionSpec{.name = "--view-report", .argument = "FILE.json",
                .help = "also write the canvas's rectangle in the screenshot's pixels and\n"

@@ -1827,7 +1827,7 @@ realimentação: %2</translation>
     </message>
     <message>
         <source>Play plan</source>
-        <translation>Reproduzir plano</translation>
+        <translation>Tocar plano</translation>
     </message>
     <message>
         <source>Ctrl+Shift+Space</source>
@@ -1919,6 +1919,89 @@ realimentação: %2</translation>
     <message>
         <source>Plots&apos; &amp;time</source>
         <translation>&amp;Tempo dos gráficos</translation>
+    </message>
+    <message>
+        <source>&amp;Measure (ruler, protractor, probe)</source>
+        <translation>&amp;Medir (régua, transferidor, sonda)</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+M</source>
+        <translation>Ctrl+Shift+M</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>Medir</translation>
+    </message>
+    <message>
+        <source>Measure (M on the canvas): drag for a ruler, drag again from its end for an angle, start on a body to measure from its heading; hover the path or a trail for its values. Esc clears; the scene is not changed</source>
+        <translation>Medir (M na tela de desenho): arraste para uma régua, arraste de novo a partir da ponta dela para um ângulo, comece num corpo para medir a partir do seu rumo; passe o mouse sobre o caminho ou um rastro para ver seus valores. Esc apaga; a cena não é alterada</translation>
+    </message>
+    <message>
+        <source>Values</source>
+        <translation>Valores</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+V</source>
+        <translation>Ctrl+Shift+V</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::MeasureTool</name>
+    <message>
+        <source>%1 m at %2°</source>
+        <translation>%1 m a %2°</translation>
+    </message>
+    <message>
+        <source>angle %1°</source>
+        <translation>ângulo %1°</translation>
+    </message>
+    <message>
+        <source>%1° from the heading</source>
+        <translation>%1° a partir do rumo</translation>
+    </message>
+    <message>
+        <source>Path (controlled body)</source>
+        <translation>Caminho (corpo controlado)</translation>
+    </message>
+    <message>
+        <source>Free body&apos;s trail</source>
+        <translation>Rastro do corpo livre</translation>
+    </message>
+    <message>
+        <source>Vakonomic body&apos;s trail</source>
+        <translation>Rastro do corpo vakonômico</translation>
+    </message>
+    <message>
+        <source>Open-loop body&apos;s trail</source>
+        <translation>Rastro do corpo em malha aberta</translation>
+    </message>
+    <message>
+        <source>Feedback body&apos;s trail</source>
+        <translation>Rastro do corpo com realimentação</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>s = %1 m</source>
+        <translation>s = %1 m</translation>
+    </message>
+    <message>
+        <source>x = %1 m, y = %2 m</source>
+        <translation>x = %1 m, y = %2 m</translation>
+    </message>
+    <message>
+        <source>φ = %1 rad (%2°)</source>
+        <translation>φ = %1 rad (%2°)</translation>
+    </message>
+    <message>
+        <source>κ = %1 1/m, ρ = %2 m</source>
+        <translation>κ = %1 1/m, ρ = %2 m</translation>
+    </message>
+    <message>
+        <source>Ψ = %1 rad (%2°)</source>
+        <translation>Ψ = %1 rad (%2°)</translation>
     </message>
 </context>
 <context>
@@ -2472,6 +2555,13 @@ O que os estudantes devem observar…</translation>
     </message>
 </context>
 <context>
+    <name>chaplygin::ui::PlotCrosshair</name>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+</context>
+<context>
     <name>chaplygin::ui::PlotsPanel</name>
     <message>
         <source> — click or drag to move the animation to that time; wheel: zoom the time, Shift+drag or middle drag: pan it, double click: the whole run</source>
@@ -2791,6 +2881,33 @@ O que os estudantes devem observar…</translation>
     <message>
         <source>Spee&amp;d</source>
         <translation>&amp;Velocidade</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::ValuesPanel</name>
+    <message>
+        <source>&amp;Copy</source>
+        <translation>&amp;Copiar</translation>
+    </message>
+    <message>
+        <source>Column</source>
+        <translation>Coluna</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Valor</translation>
+    </message>
+    <message>
+        <source>Unit</source>
+        <translation>Unidade</translation>
+    </message>
+    <message>
+        <source>Values at the shown time</source>
+        <translation>Valores no instante mostrado</translation>
+    </message>
+    <message>
+        <source>Copy the values as tab-separated lines (column, value, unit)</source>
+        <translation>Copia os valores como linhas separadas por tabulação (coluna, valor, unidade)</translation>
     </message>
 </context>
 <context>

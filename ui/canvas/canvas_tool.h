@@ -18,6 +18,9 @@ class CanvasTool : public QObject {
     virtual bool press(const QMouseEvent& e) = 0;
     /// A move during the gesture; false when this tool leaves it to the next.
     virtual bool move(const QMouseEvent& e) = 0;
+    /// A move with no gesture under way (the canvas tracks the mouse while a tool needs it):
+    /// true when this tool shows something for it.
+    virtual bool hover(const QMouseEvent&) { return false; }
     /// The end of the gesture (the tool checks the button).
     virtual void release(const QMouseEvent& e) = 0;
     /// Whether a gesture is under way.

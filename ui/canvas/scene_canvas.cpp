@@ -3,6 +3,7 @@
 #include "canvas/body_painter.h"
 #include "canvas/draw_tool.h"
 #include "canvas/edit_points_tool.h"
+#include "canvas/measure_tool.h"
 #include "canvas/pan_tool.h"
 #include "canvas/plan_tool.h"
 #include "document/scene_document.h"
@@ -34,6 +35,14 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
       m_pushTool(new PushTool(
           m_view, m_look.style, [this](QPointF p) { return grabAt(p); }, this)),
       m_planTool(new PlanTool(m_view, m_look.style, document, this)),
+      m_measureTool(new MeasureTool(
+          m_view, m_look.style, document,
+          [this] {
+              return MeasureTool::Shown{m_time,          m_look.vakonomic,
+                                        m_look.openLoop, m_look.closedLoop,
+                                        &curves(),       drawingArea()};
+          },
+          this)),
       m_panTool(new PanTool(m_view, this)) {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
@@ -404,8 +413,10 @@ void SceneCanvas::setFollowing(bool on) {
 void SceneCanvas::setDrawMode(bool on) {
     m_drawMode = on;
     m_drawTool->cancel();
-    if (on)
+    if (on) {
         setPlanMode(false);
+        setMeasureMode(false);
+    }
     setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
     update();
 }
@@ -417,6 +428,7 @@ void SceneCanvas::setPlanMode(bool on) {
     m_planTool->cancel();
     m_planTool->stopPlaying();
     if (on) {
+        setMeasureMode(false);
         m_drawTool->cancel();
         m_editTool->cancel();
         m_planTool->syncFromDocument();
@@ -429,11 +441,30 @@ void SceneCanvas::setPlanMode(bool on) {
     emit planModeChanged(on);
 }
 
-std::array<CanvasTool*, 5> SceneCanvas::allTools() const {
-    return {m_editTool, m_drawTool, m_planTool, m_pushTool, m_panTool};
+bool SceneCanvas::measureMode() const {
+    return m_measureTool->enabled();
+}
+
+void SceneCanvas::setMeasureMode(bool on) {
+    if (on == measureMode())
+        return;
+    if (on)
+        setPlanMode(false);
+    m_measureTool->setEnabled(on);
+    // the probe follows the mouse without a button
+    setMouseTracking(on);
+    updateCursor();
+    update();
+    emit measureModeChanged(on);
+}
+
+std::array<CanvasTool*, 6> SceneCanvas::allTools() const {
+    return {m_editTool, m_drawTool, m_planTool, m_measureTool, m_pushTool, m_panTool};
 }
 
 std::vector<CanvasTool*> SceneCanvas::tools() const {
+    if (measureMode())
+        return {m_measureTool, m_panTool};
     if (m_planMode)
         return {m_planTool, m_panTool};
     if (m_drawMode)
@@ -447,7 +478,7 @@ void SceneCanvas::updateCursor() {
             setCursor(tool->cursor());
             return;
         }
-    setCursor(m_drawMode ? Qt::CrossCursor : Qt::ArrowCursor);
+    setCursor(m_drawMode || measureMode() ? Qt::CrossCursor : Qt::ArrowCursor);
 }
 
 void SceneCanvas::setShowVakonomic(bool show) {
@@ -546,6 +577,11 @@ void SceneCanvas::mouseMoveEvent(QMouseEvent* e) {
     for (CanvasTool* tool : allTools())
         if (tool->active() && tool->move(*e))
             return;
+    // no gesture under way: the mode's tools may show something where the mouse is
+    if (e->buttons() == Qt::NoButton)
+        for (CanvasTool* tool : tools())
+            if (tool->hover(*e))
+                return;
 }
 
 void SceneCanvas::mouseReleaseEvent(QMouseEvent* e) {
@@ -575,6 +611,18 @@ void SceneCanvas::keyPressEvent(QKeyEvent* e) {
         break;
     case Qt::Key_L:
         setLegendVisible(!m_look.legend);
+        break;
+    case Qt::Key_M:
+        setMeasureMode(!measureMode());
+        break;
+    case Qt::Key_Escape:
+    case Qt::Key_Delete:
+    case Qt::Key_Backspace:
+        // forget what was measured
+        if (measureMode())
+            m_measureTool->clear();
+        else
+            QWidget::keyPressEvent(e);
         break;
     case Qt::Key_Left:
     case Qt::Key_Right:

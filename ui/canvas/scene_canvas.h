@@ -33,6 +33,7 @@ class SceneDocument;
 class CanvasTool;
 class DrawTool;
 class EditPointsTool;
+class MeasureTool;
 class PanTool;
 class PlanTool;
 
@@ -52,6 +53,10 @@ class SceneCanvas : public QWidget {
     /// Whether the Plan tool is the mouse's (docs/physics.md §10).
     bool planMode() const { return m_planMode; }
     PlanTool* planTool() const { return m_planTool; }
+    /// Whether the Measure tool is the mouse's: ruler, protractor and probe (docs/user-guide.md,
+    /// Measuring); the scene is left unchanged.
+    bool measureMode() const;
+    MeasureTool* measureTool() const { return m_measureTool; }
     /// Whether the genuine vakonomic body (a third body) is drawn.
     bool showsVakonomic() const { return m_look.vakonomic; }
     /// Whether the perturbed bodies are drawn when the scene has a perturbation
@@ -146,6 +151,8 @@ class SceneCanvas : public QWidget {
     void setDrawMode(bool on);
     /// The Plan tool and panning take the mouse; ends draw mode.
     void setPlanMode(bool on);
+    /// The Measure tool and panning take the mouse (M on the canvas); ends plan mode.
+    void setMeasureMode(bool on);
     /// Zooms about the centre; following, the follow zoom (the body stays centred).
     void zoomBy(double factor);
     void setShowVakonomic(bool show);
@@ -161,6 +168,7 @@ class SceneCanvas : public QWidget {
     void pointsEdited(const std::vector<std::pair<double, double>>& points);
     void followBodyChanged(bool follow);
     void planModeChanged(bool on);
+    void measureModeChanged(bool on);
     /// The user dragged the controlled body sideways at time t: a push of pushDy [m] to the
     /// left of its heading (docs/physics.md §9).
     void pushDragged(double t, double pushDy);
@@ -204,8 +212,8 @@ class SceneCanvas : public QWidget {
     /// The tools the mouse reaches in the current mode, in the order they are offered a press.
     std::vector<CanvasTool*> tools() const;
     /// Every tool, in the order of their gestures' priority: editing a point, a stroke, a plan's
-    /// handle, a push, panning.
-    std::array<CanvasTool*, 5> allTools() const;
+    /// handle, a measurement, a push, panning.
+    std::array<CanvasTool*, 6> allTools() const;
     /// After a gesture began or ended: the cursor of the gesture under way, else the mode's.
     void updateCursor();
     /// The path's band, the controlled trail and the knife point P again over the bodies drawn
@@ -310,6 +318,7 @@ class SceneCanvas : public QWidget {
     EditPointsTool* m_editTool;
     PushTool* m_pushTool;
     PlanTool* m_planTool;
+    MeasureTool* m_measureTool;
     PanTool* m_panTool;
     struct PathBounds {
         const Solution* of = nullptr; // the solution box belongs to

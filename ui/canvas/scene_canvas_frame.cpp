@@ -5,6 +5,7 @@
 #include "canvas/draw_tool.h"
 #include "canvas/edit_points_tool.h"
 #include "canvas/masked_layer.h"
+#include "canvas/measure_tool.h"
 #include "canvas/pin_painter.h"
 #include "canvas/plan_tool.h"
 #include "canvas/trail_stroke.h"
@@ -363,6 +364,9 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         m_editTool->paint(p);
         m_drawTool->paint(p);
     }
+    // the ruler, the protractor and the probe over everything, in the widget's font
+    p.setFont(font());
+    m_measureTool->paint(p);
 }
 
 double SceneCanvas::planReadoutHeight() const {

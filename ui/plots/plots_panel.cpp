@@ -6,6 +6,7 @@
 #include "plots/pinned_plots.h"
 #include "plots/plot_context_menu.h"
 #include "plots/time_axes.h"
+#include "plots/plot_crosshair.h"
 
 #include <QAction>
 #include <QGridLayout>
@@ -43,6 +44,7 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
             [this](const QString& error) { emit exportFailed(error); });
         m_fitAll[i] = installFitAllAction(plot, *m_menus[i]);
         addTimeActions(*m_menus[i]);
+        new PlotCrosshair(plot); // hovering reads every curve at that time
     }
     m_errorPlot = new FlatPlot;
     m_errorPlot->setObjectName(plotFileStem(PlotKind::TrackingError));
@@ -57,6 +59,7 @@ PlotsPanel::PlotsPanel(SceneDocument* document, QWidget* parent)
         cursor = makeCursor(m_errorPlot);
     makeSeekable(m_errorPlot);
     makeTimeZoomable(m_errorPlot);
+    new PlotCrosshair(m_errorPlot);
     arrange();
     addTimeActions(*installPlotExportMenu(
         m_errorPlot, [] { return plotFileStem(PlotKind::TrackingError); },

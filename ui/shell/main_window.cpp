@@ -30,6 +30,7 @@
 #include "shell/instruments.h"
 #include "shell/introduction_window.h"
 #include "shell/language_menu.h"
+#include "shell/measuring.h"
 #include "shell/perturbation_controls.h"
 #include "shell/plan_readouts.h"
 #include "shell/playback.h"
@@ -143,6 +144,7 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     connect(m_parameters, &ParametersPanel::sceneEdited, this, editParameters);
     connect(m_sweep, &SweepPanel::sceneEdited, this, editParameters);
     installInstruments(this, *m_viewMenu, *m_docks.accuracy);
+    installValuesDock(this, *m_viewMenu, *m_docks.accuracy);
     installPerturbationControls(this, *m_viewMenu, *m_vakonomicAction, *m_docks.parameters);
     installPlanReadouts(*m_canvas, *m_plots, *m_accuracy);
 

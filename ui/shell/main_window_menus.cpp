@@ -32,6 +32,7 @@
 #include "shell/instruments.h"
 #include "shell/introduction_window.h"
 #include "shell/language_menu.h"
+#include "shell/measuring.h"
 #include "shell/perturbation_controls.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
@@ -132,6 +133,7 @@ void MainWindow::buildMenus() {
     m_timeline->addAction(m_planAction);
     m_timeline->addAction(playPlan);
     m_timeline->addAction(trackPlan);
+    installMeasureAction(this, *edit);
 
     QMenu* view = m_viewMenu = menuBar()->addMenu(tr("&View"));
     view->setObjectName(QStringLiteral("viewMenu"));
