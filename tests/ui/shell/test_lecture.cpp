@@ -1,6 +1,8 @@
 // A lecture of one's own: made from the window (add, reorder, remove), saved, opened again like a
 // scene, and stepped through with Page Down / Page Up, also in presentation mode. Offscreen.
 #include "canvas/scene_canvas.h"
+#include "desktop_entry.h"
+#include "document/scene_files.h"
 #include "lab/gallery.h"
 #include "scene/lecture.h"
 #include "scene/scene_json.h"
@@ -32,6 +34,7 @@ class TestLecture : public QObject, private test::WindowFixture {
     void lectureSteppedInPresentationMode();
     void badLectureKeepsTheSceneAndTheLecture();
     void withoutALecturePageDownStepsTheGallery();
+    void lectureScreenshotOption();
 
   private:
     QAction* action(const char* name) const {
@@ -241,6 +244,34 @@ void TestLecture::withoutALecturePageDownStepsTheGallery() {
     press(Qt::Key_PageDown);
     QVERIFY(shown() == before);
     QVERIFY(m_window->statusBar()->currentMessage().contains(QStringLiteral("no scenes yet")));
+}
+
+void TestLecture::lectureScreenshotOption() {
+    Lecture l;
+    for (const Scene& s : threeScenes())
+        l.entries.push_back({"", s});
+    const QString lecture = m_dir.filePath(QStringLiteral("shot.json"));
+    saveLectureFile(lecture.toStdString(), l);
+    const QString image = m_dir.filePath(QStringLiteral("lecture.png"));
+    const QByteArray file = lecture.toUtf8(), png = image.toUtf8();
+    auto run = [&](std::vector<const char*> extra) {
+        std::vector<const char*> args = {"chaplygin-lab", "--screenshot", png.constData(), "--size",
+                                         "1200x750"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        return runScreenshot(int(args.size()), const_cast<char**>(args.data()));
+    };
+    QCOMPARE(run({"--lecture", file.constData(), "--lecture-entry", "2"}), 0);
+    QCOMPARE(QImage(image).size(), QSize(1200, 750));
+    QFile::remove(image);
+    // past its last scene, with scene options, without --lecture, a scene file: exit 2, no image
+    QCOMPARE(run({"--lecture", file.constData(), "--lecture-entry", "4"}), 2);
+    QCOMPARE(run({"--lecture", file.constData(), "--preset", "circle"}), 2);
+    QCOMPARE(run({"--preset", "circle", "--lecture-entry", "2"}), 2);
+    QCOMPARE(run({"--lecture", file.constData(), "--lecture-entry", "0"}), 2);
+    const QString scene = m_dir.filePath(QStringLiteral("scene.json"));
+    saveSceneFile(scene, presetScene("circle"));
+    QCOMPARE(run({"--lecture", scene.toUtf8().constData()}), 2);
+    QVERIFY(!QFile::exists(image));
 }
 
 QTEST_MAIN(TestLecture)
