@@ -2044,10 +2044,6 @@ realimentação: %2</translation>
         <translation>Aula: %1</translation>
     </message>
     <message>
-        <source>Lecture %1%2</source>
-        <translation>Aula %1%2</translation>
-    </message>
-    <message>
         <source>Notes (%1)</source>
         <translation>Notas (%1)</translation>
     </message>
@@ -2102,6 +2098,10 @@ realimentação: %2</translation>
     <message>
         <source>The lecture has unsaved changes. Save them?</source>
         <translation>A aula tem alterações não salvas. Salvá-las?</translation>
+    </message>
+    <message>
+        <source>Lecture: %1%2</source>
+        <translation>Aula: %1%2</translation>
     </message>
 </context>
 <context>

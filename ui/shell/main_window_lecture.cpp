@@ -152,8 +152,8 @@ void MainWindow::showLecturePosition() {
         const QString name = m_lecture->fileName().isEmpty()
                                  ? tr("untitled")
                                  : QFileInfo(m_lecture->fileName()).fileName();
-        title =
-            tr("Lecture %1%2").arg(name, m_lecture->isModified() ? QStringLiteral("*") : QString());
+        title = tr("Lecture: %1%2")
+                    .arg(name, m_lecture->isModified() ? QStringLiteral("*") : QString());
     }
     m_lectureDock->setWindowTitle(title);
     // presenting, the status bar is hidden: the notes beside the scene say where the lecture is
