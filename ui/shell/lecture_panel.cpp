@@ -30,7 +30,8 @@ LecturePanel::LecturePanel(QWidget* parent)
     layout->addWidget(m_buttons);
     connect(m_title, &QLineEdit::textEdited, this, [this](const QString& text) {
         m_lecture.title = text.toStdString();
-        setModified();
+        m_modified = true;
+        emit changed();
     });
     connect(m_list, &QListWidget::itemActivated, this,
             [this](QListWidgetItem* item) { emit entryActivated(m_list->row(item)); });
@@ -50,7 +51,9 @@ LecturePanel::LecturePanel(QWidget* parent)
             title.resize(kMaxLectureTitleBytes);
         if (title != m_lecture.entries[std::size_t(row)].title) {
             m_lecture.entries[std::size_t(row)].title = title;
-            setModified();
+            m_modified = true;
+            // the list is rebuilt once the edited item is no longer in use ("Scene N" for none)
+            QMetaObject::invokeMethod(this, &LecturePanel::refresh, Qt::QueuedConnection);
         }
     });
     refresh();

@@ -12,6 +12,7 @@
 
 #include <QAction>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QStatusBar>
 #include <QUndoStack>
@@ -123,6 +124,17 @@ void TestLecture::lectureMadeSavedReopenedAndStepped() {
     QVERIFY(panel()->lecture().entries[0].scene == scenes[2]);
     QVERIFY(panel()->lecture().entries[1].scene == scenes[1]);
     QVERIFY(panel()->isModified());
+    // renamed in the list (F2), and the lecture's title typed
+    panel()->list()->item(1)->setText(QStringLiteral("  Arrows  "));
+    QCOMPARE(panel()->lecture().entries[1].title, std::string("Arrows"));
+    QTest::qWait(0);
+    QCOMPARE(panel()->list()->item(1)->text(), QStringLiteral("Arrows"));
+    panel()->list()->item(1)->setText(QString());
+    QTest::qWait(0);
+    QCOMPARE(panel()->list()->item(1)->text(), QStringLiteral("Scene 2"));
+    auto* title = panel()->findChild<QLineEdit*>(QStringLiteral("lectureTitle"));
+    QTest::keyClicks(title, QStringLiteral("Sleighs"));
+    QCOMPARE(panel()->lecture().title, std::string("Sleighs"));
 
     // save: the file holds C then B, read by the core's reader
     const QString path = m_dir.filePath(QStringLiteral("my-lecture.json"));
@@ -135,6 +147,7 @@ void TestLecture::lectureMadeSavedReopenedAndStepped() {
     QCOMPARE(written.entries.size(), std::size_t(2));
     QVERIFY(written.entries[0].scene == scenes[2]);
     QVERIFY(written.entries[1].scene == scenes[1]);
+    QCOMPARE(written.title, std::string("Sleighs"));
 
     // reopen as a scene is opened (File > Open, the command line): its first scene is shown
     action("closeLectureAction")->trigger();
