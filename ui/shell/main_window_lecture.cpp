@@ -23,6 +23,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QStatusBar>
+#include <QTimer>
 
 namespace chaplygin::ui {
 namespace {
@@ -250,6 +251,11 @@ bool MainWindow::openLecture(const QString& path) {
         rebuildRecentMenu();
     }
     bringDockForward(this, m_lectureDock);
+    if (!isVisible()) // given at start: in front once the window's docks are laid out
+        QTimer::singleShot(0, this, [this] {
+            if (m_lecture->isOpen())
+                bringDockForward(this, m_lectureDock);
+        });
     if (!m_lecture->lecture().entries.empty())
         showLectureEntry(0);
     return true;
