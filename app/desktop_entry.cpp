@@ -11,8 +11,10 @@
 #include "panels/sweep_panel.h"
 #include "plots/plots_panel.h"
 #include "runtime_directory.h"
+#include "scene/lecture.h"
 #include "scene/scene_link.h"
 #include "shell/language_menu.h"
+#include "shell/lecture_panel.h"
 #include "shell/main_window.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
@@ -85,6 +87,8 @@ struct ScreenshotOptions {
     std::optional<BodyDisplay> body; ///< --body scale|outline|marker
     std::vector<QPointF> measure;    ///< --measure: the ruler's (and protractor's) points [m]
     std::optional<QPointF> probe;    ///< --probe: where the probe hovers [m]
+    std::string lecture;             ///< --lecture FILE.json: a lecture instead of a scene
+    int lectureEntry = 1;            ///< --lecture-entry N: its scene shown, from 1
     Scene scene;
 };
 
@@ -178,6 +182,23 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
         o.measure = readMeasure(*measure);
     if (auto probe = given.value("--probe"))
         o.probe = readWorldPoint(*probe, "--probe");
+    if (auto lecture = given.value("--lecture")) {
+        if (given.hasAnyOf(app::OptionSection::Scene) ||
+            given.hasAnyOf(app::OptionSection::System) || given.has("--sweep"))
+            throw InputError("--lecture", "give a lecture or scene options, not both");
+        o.lecture = *lecture;
+    }
+    if (auto entry = given.value("--lecture-entry")) {
+        if (o.lecture.empty())
+            throw InputError("--lecture-entry", "needs --lecture FILE.json");
+        const double n = parseNumber(*entry, "--lecture-entry");
+        if (!(n >= 1 && n <= double(kMaxLectureScenes) && n == int(n)))
+            throw InputError("--lecture-entry", "must be a whole number from 1 to " +
+                                                    std::to_string(kMaxLectureScenes));
+        o.lectureEntry = int(n);
+    }
+    if (!o.lecture.empty())
+        return o;
     o.scene = sceneOf(given);
     if (auto sweep = given.value("--sweep")) {
         o.sweep = parseSweepSpec(*sweep);
@@ -227,7 +248,20 @@ void showMeasuring(SceneCanvas& canvas, const std::vector<QPointF>& measure,
 
 int renderScreenshot(const ScreenshotOptions& o) {
     MainWindow window(false);
-    window.loadScene(o.scene);
+    if (o.lecture.empty()) {
+        window.loadScene(o.scene);
+    } else {
+        // its first scene shown, or the one asked for; a refusal names the file or the scene
+        if (!window.openLecture(QString::fromStdString(o.lecture)))
+            throw InputError("--lecture", window.lastFileError().toStdString());
+        const std::size_t n = window.lecturePanel()->lecture().entries.size();
+        if (std::size_t(o.lectureEntry) > n)
+            throw InputError("--lecture-entry", std::to_string(o.lectureEntry) +
+                                                    " is past the lecture's last scene, " +
+                                                    std::to_string(n));
+        if (!window.showLectureEntry(o.lectureEntry - 1))
+            throw InputError("--lecture", window.lastFileError().toStdString());
+    }
     if (!window.document()->error().isEmpty())
         throw InputError("scene", window.document()->error().toStdString());
     double tEnd = window.document()->solution()->tEnd();
@@ -262,8 +296,9 @@ int renderScreenshot(const ScreenshotOptions& o) {
             sweep->waitForFinished();
         }
     }
-    if (auto* dock = window.findChild<QDockWidget*>(QString::fromStdString(o.dock));
-        dock && !o.dock.empty()) {
+    const std::string raised = o.dock.empty() && !o.lecture.empty() ? "lectureDock" : o.dock;
+    if (auto* dock = window.findChild<QDockWidget*>(QString::fromStdString(raised));
+        dock && !raised.empty()) {
         dock->show();
         dock->raise();
     }

@@ -64,6 +64,14 @@ const std::array kOptions = {
                .help = "that catalogue instead of the system's (exit 2 when it is not\n"
                        "installed)",
                .modes = Screenshot, .section = S::Screenshot},
+    OptionSpec{.name = "--lecture", .argument = "FILE.json",
+               .help = "a lecture file instead of a scene: its scene --lecture-entry\n"
+                       "with the Lecture dock in front",
+               .modes = Screenshot, .section = S::Screenshot},
+    OptionSpec{.name = "--lecture-entry", .argument = "N",
+               .help = "the lecture's scene shown, 1 (the default) ... its number of\n"
+                       "scenes",
+               .modes = Screenshot, .section = S::Screenshot},
     OptionSpec{.name = "--preset", .argument = "line|circle|catenary|sinusoid",
                .help = "the paper's examples with the paper's parameters",
                .modes = kAllModes, .section = S::Scene},

@@ -53,4 +53,13 @@ const GalleryEntry& galleryEntry(const std::string& name) {
     throw InputError("gallery", "unknown gallery scene '" + name + "'");
 }
 
+Lecture galleryLecture() {
+    Lecture lecture;
+    lecture.title = "Gallery";
+    for (const GalleryEntry& e : galleryEntries())
+        if (!e.rejected)
+            lecture.entries.push_back({e.title, e.scene});
+    return lecture;
+}
+
 } // namespace chaplygin

@@ -1,6 +1,7 @@
 #pragma once
 // The gallery: the scenes where a method or a model fails, read from resources/scenes/gallery
 // (docs/numerics.md §4).
+#include "scene/lecture.h"
 #include "scene/scene.h"
 
 #include <string>
@@ -22,5 +23,10 @@ struct GalleryEntry {
 const std::vector<GalleryEntry>& galleryEntries();
 /// Throws InputError for unknown names.
 const GalleryEntry& galleryEntry(const std::string& name);
+
+/// The gallery as a lecture (the one Page Down steps through when no lecture is open): the
+/// entries the app runs, in the gallery's order, each titled as in the menu; the refused ones
+/// are lessons of their own, in the menu only.
+Lecture galleryLecture();
 
 } // namespace chaplygin

@@ -1,6 +1,7 @@
 #include "scene/scene_json.h"
 
 #include "common/input_error.h"
+#include "scene/lecture.h"
 #include "scene/perturbation.h"
 #include "scene/pinned_runs.h"
 
@@ -399,6 +400,10 @@ Scene sceneFromJson(const std::string& text) {
                                            ")");
     }
     object(j, "");
+    if (auto it = j.find("format"); it != j.end() && *it == kLectureFormatName)
+        bad("/format", "the file is a lecture (\"" + std::string(kLectureFormatName) +
+                           "\"), not a scene: open it in the window, or save one of its scenes "
+                           "from there");
     if (auto it = j.find("format"); it == j.end() || !it->is_string() || *it != kFormatName)
         bad("/format",
             std::string("must be \"") + kFormatName + "\" (is this a Chaplygin Lab scene?)");

@@ -1468,6 +1468,25 @@ realimentação: %2</translation>
     </message>
 </context>
 <context>
+    <name>chaplygin::ui::LecturePanel</name>
+    <message>
+        <source>Title of the lecture</source>
+        <translation>Título da aula</translation>
+    </message>
+    <message>
+        <source>The lecture&apos;s scenes in order: Page Down and Page Up step through them; double click shows one, F2 renames it</source>
+        <translation>As cenas da aula em ordem: Page Down e Page Up passam por elas; um duplo clique mostra uma, F2 a renomeia</translation>
+    </message>
+    <message>
+        <source>Scene %1</source>
+        <translation>Cena %1</translation>
+    </message>
+    <message>
+        <source>Scene %1 of %2</source>
+        <translation>Cena %1 de %2</translation>
+    </message>
+</context>
+<context>
     <name>chaplygin::ui::MainWindow</name>
     <message>
         <source>Type a path</source>
@@ -1638,10 +1657,6 @@ realimentação: %2</translation>
         <translation>Abrir cena</translation>
     </message>
     <message>
-        <source>Scenes (*.json);;All files (*)</source>
-        <translation>Cenas (*.json);;Todos os arquivos (*)</translation>
-    </message>
-    <message>
         <source>Save scene</source>
         <translation>Salvar cena</translation>
     </message>
@@ -1716,14 +1731,6 @@ realimentação: %2</translation>
     <message>
         <source>Preset %1: %2</source>
         <translation>Predefinição %1: %2</translation>
-    </message>
-    <message>
-        <source>Ne&amp;xt gallery scene</source>
-        <translation>&amp;Próxima cena da galeria</translation>
-    </message>
-    <message>
-        <source>Pre&amp;vious gallery scene</source>
-        <translation>Cena &amp;anterior da galeria</translation>
     </message>
     <message>
         <source>&amp;Help for this part of the window</source>
@@ -2002,6 +2009,186 @@ realimentação: %2</translation>
     <message>
         <source>Ψ = %1 rad (%2°)</source>
         <translation>Ψ = %1 rad (%2°)</translation>
+    </message>
+    <message>
+        <source>Scenes and lectures (*.json);;All files (*)</source>
+        <translation>Cenas e aulas (*.json);;Todos os arquivos (*)</translation>
+    </message>
+    <message>
+        <source>Lecture, %1 — %2</source>
+        <translation>Aula, %1 — %2</translation>
+    </message>
+    <message>
+        <source>Lecture</source>
+        <translation>Aula</translation>
+    </message>
+    <message>
+        <source>&amp;Lecture</source>
+        <translation>Au&amp;la</translation>
+    </message>
+    <message>
+        <source>&amp;New lecture</source>
+        <translation>&amp;Nova aula</translation>
+    </message>
+    <message>
+        <source>&amp;Open lecture…</source>
+        <translation>&amp;Abrir aula…</translation>
+    </message>
+    <message>
+        <source>Start from the &amp;gallery</source>
+        <translation>Começar pela &amp;galeria</translation>
+    </message>
+    <message>
+        <source>Gallery</source>
+        <translation>Galeria</translation>
+    </message>
+    <message>
+        <source>A new lecture with the gallery&apos;s scenes, to reorder and add to</source>
+        <translation>Uma nova aula com as cenas da galeria, para reordenar e completar</translation>
+    </message>
+    <message>
+        <source>&amp;Save lecture</source>
+        <translation>&amp;Salvar aula</translation>
+    </message>
+    <message>
+        <source>Save lecture &amp;as…</source>
+        <translation>Salvar aula c&amp;omo…</translation>
+    </message>
+    <message>
+        <source>&amp;Close lecture</source>
+        <translation>&amp;Fechar aula</translation>
+    </message>
+    <message>
+        <source>Page Down then steps through the gallery again</source>
+        <translation>Page Down volta então a passar pela galeria</translation>
+    </message>
+    <message>
+        <source>A&amp;dd the current scene</source>
+        <translation>A&amp;dicionar a cena atual</translation>
+    </message>
+    <message>
+        <source>Ctrl+L</source>
+        <translation>Ctrl+L</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Adicionar</translation>
+    </message>
+    <message>
+        <source>Add the current scene after the highlighted one (Ctrl+L)</source>
+        <translation>Adicionar a cena atual depois da destacada (Ctrl+L)</translation>
+    </message>
+    <message>
+        <source>&amp;Replace with the current scene</source>
+        <translation>Substitui&amp;r pela cena atual</translation>
+    </message>
+    <message>
+        <source>The highlighted entry becomes the scene as it is now</source>
+        <translation>A entrada destacada passa a ser a cena como está agora</translation>
+    </message>
+    <message>
+        <source>Re&amp;move from the lecture</source>
+        <translation>Re&amp;mover da aula</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Remover</translation>
+    </message>
+    <message>
+        <source>Move &amp;up</source>
+        <translation>Mover para &amp;cima</translation>
+    </message>
+    <message>
+        <source>Up</source>
+        <translation>Subir</translation>
+    </message>
+    <message>
+        <source>Move do&amp;wn</source>
+        <translation>Mover para &amp;baixo</translation>
+    </message>
+    <message>
+        <source>Down</source>
+        <translation>Descer</translation>
+    </message>
+    <message>
+        <source>Ne&amp;xt scene</source>
+        <translation>&amp;Próxima cena</translation>
+    </message>
+    <message>
+        <source>The lecture&apos;s next scene, or the gallery&apos;s when no lecture is open</source>
+        <translation>A próxima cena da aula, ou a da galeria quando nenhuma aula está aberta</translation>
+    </message>
+    <message>
+        <source>Pre&amp;vious scene</source>
+        <translation>Cena an&amp;terior</translation>
+    </message>
+    <message>
+        <source>scene %1 of %2</source>
+        <translation>cena %1 de %2</translation>
+    </message>
+    <message>
+        <source>Lecture: %1</source>
+        <translation>Aula: %1</translation>
+    </message>
+    <message>
+        <source>Notes (%1)</source>
+        <translation>Notas (%1)</translation>
+    </message>
+    <message>
+        <source>The lecture has no scenes yet: Lecture ▸ Add the current scene (Ctrl+L)</source>
+        <translation>A aula ainda não tem cenas: Aula ▸ Adicionar a cena atual (Ctrl+L)</translation>
+    </message>
+    <message>
+        <source>The lecture&apos;s scene %1 does not run: %2</source>
+        <translation>A cena %1 da aula não roda: %2</translation>
+    </message>
+    <message>
+        <source>A lecture has at most %1 scenes; this one is full</source>
+        <translation>Uma aula tem no máximo %1 cenas; esta está cheia</translation>
+    </message>
+    <message>
+        <source>Added to the lecture as scene %1 of %2</source>
+        <translation>Adicionada à aula como cena %1 de %2</translation>
+    </message>
+    <message>
+        <source>A new lecture: add scenes to it with Lecture ▸ Add the current scene (Ctrl+L)</source>
+        <translation>Uma nova aula: adicione cenas a ela com Aula ▸ Adicionar a cena atual (Ctrl+L)</translation>
+    </message>
+    <message>
+        <source>Saved the lecture in %1</source>
+        <translation>Aula salva em %1</translation>
+    </message>
+    <message>
+        <source>Open lecture</source>
+        <translation>Abrir aula</translation>
+    </message>
+    <message>
+        <source>Lectures (*.json);;All files (*)</source>
+        <translation>Aulas (*.json);;Todos os arquivos (*)</translation>
+    </message>
+    <message>
+        <source>No lecture is open: Lecture ▸ New lecture</source>
+        <translation>Nenhuma aula está aberta: Aula ▸ Nova aula</translation>
+    </message>
+    <message>
+        <source>lecture</source>
+        <translation>aula</translation>
+    </message>
+    <message>
+        <source>Save lecture</source>
+        <translation>Salvar aula</translation>
+    </message>
+    <message>
+        <source>Lectures (*.json)</source>
+        <translation>Aulas (*.json)</translation>
+    </message>
+    <message>
+        <source>The lecture has unsaved changes. Save them?</source>
+        <translation>A aula tem alterações não salvas. Salvá-las?</translation>
+    </message>
+    <message>
+        <source>Lecture: %1%2</source>
+        <translation>Aula: %1%2</translation>
     </message>
 </context>
 <context>

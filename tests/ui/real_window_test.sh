@@ -195,6 +195,32 @@ zoom_extremes)
     fail "warnings on stderr"
   fi
   ;;
+lecture_keys)
+  # a lecture given as the window's argument: its first scene; Page Down and Page Up step through
+  # it, also in presentation mode (F11), and the window's title says where the lecture is
+  lecture=$(dirname "$0")/../../docs/images/scenes/lecture-sleigh.json
+  [ -f "$lecture" ] || fail "no lecture $lecture"
+  "$app" "$lecture" >"$work/app.log" 2>&1 &
+  pids+=($!)
+  window=$(timeout 30 xdotool search --sync --onlyvisible --name '^Lecture, scene 1 of 4 — ' | head -1)
+  [ -n "$window" ] || fail "no window on the lecture's first scene: $(head -c 500 "$work/app.log")"
+  sleep 1
+  at() { timeout 10 xdotool search --sync --name "^Lecture, scene $1 of 4 — " >/dev/null; }
+  xdotool mousemove --sync 700 250 click 1 key Next
+  at 2 || fail "Page Down did not show the lecture's second scene"
+  xdotool key F11
+  sleep 1
+  xdotool key Next
+  at 3 || fail "Page Down in presentation mode did not show the third scene"
+  xdotool key Next Next
+  at 1 || fail "Page Down after the last scene did not go round to the first"
+  xdotool key Prior
+  at 4 || fail "Page Up did not show the last scene"
+  kill -0 "${pids[1]}" || fail "the program ended: $(head -c 500 "$work/app.log")"
+  if grep -E "QWidget|QLayout|QPainter|Segmentation|terminate" "$work/app.log"; then
+    fail "warnings on stderr"
+  fi
+  ;;
 *)
   fail "unknown case"
   ;;

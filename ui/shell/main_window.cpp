@@ -18,6 +18,7 @@
 #include "panels/sweep_panel.h"
 #include "plots/plot_export.h"
 #include "plots/plots_panel.h"
+#include "scene/lecture.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
 #include "shell/animation_dialog.h"
@@ -399,6 +400,15 @@ void MainWindow::newScene() {
 }
 
 bool MainWindow::openFile(const QString& path) {
+    // a lecture opens wherever a scene file does (File > Open, the recent files, the command line)
+    bool lecture = false;
+    try {
+        lecture = isLectureText(readLectureOrSceneText(path.toStdString()));
+    } catch (const InputError&) {
+        // unreadable: the scene reader says why
+    }
+    if (lecture)
+        return openLecture(path);
     try {
         m_document->open(path);
     } catch (const std::exception& e) {
@@ -454,7 +464,7 @@ void MainWindow::openDialog() {
     if (!maybeSave())
         return;
     QString path = chooseOpenFile(this, tr("Open scene"), QStringLiteral("scene"),
-                                  tr("Scenes (*.json);;All files (*)"));
+                                  tr("Scenes and lectures (*.json);;All files (*)"));
     if (!path.isEmpty())
         openFile(path);
 }
@@ -538,12 +548,15 @@ void MainWindow::showFileError(const QString& message) {
 void MainWindow::updateTitle() {
     QString name = m_document->fileName().isEmpty() ? tr("untitled")
                                                     : QFileInfo(m_document->fileName()).fileName();
-    setWindowTitle(tr("%1%2 \u2014 Chaplygin Lab")
-                       .arg(name, m_document->isModified() ? QStringLiteral("*") : QString()));
+    QString title = tr("%1%2 \u2014 Chaplygin Lab")
+                        .arg(name, m_document->isModified() ? QStringLiteral("*") : QString());
+    if (const QString position = lecturePosition(); !position.isEmpty())
+        title = tr("Lecture, %1 \u2014 %2").arg(position, title);
+    setWindowTitle(title);
 }
 
 void MainWindow::closeEvent(QCloseEvent* e) {
-    if (!maybeSave()) {
+    if (!maybeSave() || !maybeSaveLecture()) {
         e->ignore();
         return;
     }

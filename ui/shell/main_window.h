@@ -25,6 +25,7 @@ class ElidedLabel;
 class ExportReport;
 class HelpWindow;
 class IntroductionWindow;
+class LecturePanel;
 class PresentationMode;
 class MethodsPanel;
 class ParametersPanel;
@@ -126,6 +127,23 @@ class MainWindow : public QMainWindow {
     void choosePresetNumber(int index);
     /// Loads the next (+1) or previous (-1) gallery scene (Page Down / Page Up).
     void stepGallery(int direction);
+
+    // The lecture (main_window_lecture.cpp): scenes in an order of one's own
+
+    /// The Lecture dock's list and the open lecture.
+    LecturePanel* lecturePanel() const { return m_lecture; }
+    /// Page Down (+1) and Page Up (-1): the open lecture's next or previous scene, else the
+    /// gallery's.
+    void stepScene(int direction);
+    /// Shows the lecture's entry index as one undo step (as a gallery scene); a scene that does
+    /// not solve keeps the current one, says why and returns false.
+    bool showLectureEntry(int index);
+    /// Lecture > Add the current scene: after the current entry (a new lecture when none is open).
+    void addSceneToLecture();
+    /// Opens a lecture file and shows its first scene; false, showing why, when it cannot be read.
+    bool openLecture(const QString& path);
+    /// Writes the lecture atomically; false, showing why, on failure.
+    bool saveLecture(const QString& path);
     /// The About text (version from the build, licence, credits, the paper).
     static QString aboutText();
 
@@ -143,6 +161,17 @@ class MainWindow : public QMainWindow {
 
   private:
     void buildMenus();
+    /// The Lecture menu and dock.
+    void buildLectureMenu();
+    void newLecture();
+    void openLectureDialog();
+    bool saveLectureDialog(bool askName);
+    /// Asks to save the lecture's unsaved changes; false when the user cancels.
+    bool maybeSaveLecture();
+    /// "Scene i of n" in the status bar, the window title and the Notes dock's title.
+    void showLecturePosition();
+    /// The words "scene i of n", empty when no lecture entry is shown.
+    QString lecturePosition() const;
     void rebuildRecentMenu();
     /// The panels show a scene the document has applied.
     void showScene(const Scene& scene, bool pathChanged);
@@ -198,6 +227,9 @@ class MainWindow : public QMainWindow {
     QAction* m_redoAction = nullptr;
     QAction* m_playNewScenes = nullptr;
     int m_galleryIndex = -1;
+    LecturePanel* m_lecture = nullptr;
+    QDockWidget* m_lectureDock = nullptr;
+    QLabel* m_lecturePosition = nullptr;
     QString m_lastFileError;
 };
 

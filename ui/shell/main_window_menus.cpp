@@ -1,5 +1,5 @@
 // The main window's menus and their actions (File, Edit, View, Animation, Methods, Gallery,
-// Compare, Help), kept apart from main_window.cpp, which builds and wires the docks.
+// Lecture, Compare, Help), kept apart from main_window.cpp, which builds and wires the docks.
 #include "shell/main_window.h"
 
 #include "canvas/plan_tool.h"
@@ -201,15 +201,11 @@ void MainWindow::buildMenus() {
             QSettings().setValue(QStringLiteral("animation/playNewScenes"), on);
     });
     play->addSeparator();
-    // keyboard control of a demo: the paper's presets on 1 ... 4, the gallery on Page Up/Down
+    // keyboard control of a demo: the paper's presets on 1 ... 4 (Page Up/Down: the Lecture menu)
     const std::vector<std::string> presets = presetNames();
     for (int i = 0; i < int(presets.size()) && i < 9; ++i)
         play->addAction(tr("Preset %1: %2").arg(i + 1).arg(sceneText(presets[i])),
                         QKeySequence(Qt::Key_1 + i), this, [this, i] { choosePresetNumber(i); });
-    play->addAction(tr("Ne&xt gallery scene"), QKeySequence(Qt::Key_PageDown), this,
-                    [this] { stepGallery(1); });
-    play->addAction(tr("Pre&vious gallery scene"), QKeySequence(Qt::Key_PageUp), this,
-                    [this] { stepGallery(-1); });
 
     QMenu* methods = menuBar()->addMenu(tr("&Methods"));
     methods->addAction(tr("Compute &work-precision"), QKeySequence(tr("Ctrl+Shift+W")), this,
@@ -221,6 +217,7 @@ void MainWindow::buildMenus() {
     auto* gallery = new GalleryMenu(this);
     menuBar()->addMenu(gallery);
     connect(gallery, &GalleryMenu::entryChosen, this, &MainWindow::loadGalleryEntry);
+    buildLectureMenu();
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&Help for this part of the window"), QKeySequence::HelpContents, this,
