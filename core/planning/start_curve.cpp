@@ -27,7 +27,7 @@ struct StartAngle {
 };
 StartAngle startAngle(double psi0) {
     const double h = std::sin(0.5 * psi0), g = std::cos(0.5 * psi0);
-    return {std::sin(psi0), std::cos(psi0), 2 * h * h, 2 * g * g};
+    return {2 * h * g, (g - h) * (g + h), 2 * h * h, 2 * g * g};
 }
 
 // c1^2 - 1 = (c1 - 1)(c1 + 1), c1 = cos Psi0 + shift: no cancellation where c1 = +-1

@@ -9,7 +9,15 @@ answer does not depend on it). It then checks the answer by integrating (19)-(21
 mpmath.odefun at 30 digits, and prints one row of the table embedded in test_pose_planner.cpp:
 X, Y, Phi, t, Psi0, 1 - k^2 = cos^2 Psi0 - Lambda0^2, Lambda0, and the end error of the ODE check.
 
-usage: far_target_reference.py X Y PHI T0 PSI0 LAMBDA0 [--no-ode]
+With --bound it prints instead the end error that the test's tolerances allow at most: the sum
+of the columns of the end's Jacobian in (Psi0, log |1 - k^2|, t) times 1e-12, 1e-11, 1e-11.
+
+With --end T PSI0 GAP SIGN it prints the end error at 40 digits of the motion of Psi0 with
+1 - k^2 = GAP, Lambda0 of the sign SIGN, at T (the planner's t, psi0, modulusGap and the sign of
+psidot0): how far the planner's own motion ends from the target.
+
+usage: far_target_reference.py X Y PHI T0 PSI0 LAMBDA0 [--no-ode] [--bound]
+       far_target_reference.py X Y PHI --end T PSI0 GAP SIGN
 """
 import sys
 
@@ -87,10 +95,39 @@ def ode_end(psi0, lam0, t):
     return u[0], u[1], u[2]
 
 
+def bound(p, l, t):
+    """|J_Psi0| 1e-12 + |J_log gap| 1e-11 + |J_t| 1e-11, the 1-norms of the end's columns."""
+    gap = (mp.cos(p) - l) * (mp.cos(p) + l)
+    sigma = 1 if l > 0 else -1
+
+    def end(psi0, log_gap, time):
+        g = mp.sign(gap) * mp.exp(log_gap)
+        return end_pose(psi0, sigma * mp.sqrt(mp.cos(psi0)**2 - g), time)
+
+    h = mp.mpf(10)**-12
+    lg = mp.log(abs(gap))
+    total = 0
+    for d, tol in (((h, 0, 0), 1e-12), ((0, h, 0), 1e-11), ((0, 0, h), 1e-11)):
+        a = end(p + d[0], lg + d[1], t + d[2])
+        b = end(p - d[0], lg - d[1], t - d[2])
+        total += sum(abs(u - v) for u, v in zip(a, b)) / (2 * h) * tol
+    return total
+
+
 def main():
+    if sys.argv[4] == '--end':
+        X, Y, Phi, t, psi0, gap, sign = (mp.mpf(a) for a in sys.argv[1:4] + sys.argv[5:9])
+        x, y, phi = end_pose(psi0, sign * mp.sqrt(mp.cos(psi0)**2 - gap), t)
+        print('(%s, %s, %s): end error %s' % (sys.argv[1], sys.argv[2], sys.argv[3], mp.nstr(
+            abs(x - X) + abs(y - Y) + abs(wrap(phi - Phi)), 3)))
+        return
     X, Y, Phi, t0, psi0, lam0 = (mp.mpf(a) for a in sys.argv[1:7])
     p, l, t = solve(X, Y, Phi, t0, psi0, lam0)
     gap = (mp.cos(p) - l) * (mp.cos(p) + l)
+    if '--bound' in sys.argv:
+        print('(%s, %s, %s): the tolerances allow an end error of at most %s' % (
+            sys.argv[1], sys.argv[2], sys.argv[3], mp.nstr(bound(p, l, t), 3)))
+        return
     err = mp.nan
     if '--no-ode' not in sys.argv:
         x, y, phi = ode_end(p, l, t)
