@@ -177,7 +177,7 @@ UnitSolution refineSeed(SeedPiece piece, const UnitTarget& tg) {
     for (int i = 0; i < 60; ++i) {
         const double ga = a.along + n * a.drift;
         if (ga == 0 ||
-            std::fabs(wrapAngle(b.psi0 - a.psi0)) + std::fabs(b.lambda0 - a.lambda0) < 1e-14)
+            std::fabs(wrapAngle(b.psi0 - a.psi0)) + std::fabs(b.lambda0 - a.lambda0) < 1e-10)
             break;
         const auto onCurve = projectOnCurve(a.psi0 + 0.5 * wrapAngle(b.psi0 - a.psi0),
                                             0.5 * (a.lambda0 + b.lambda0), tg);
