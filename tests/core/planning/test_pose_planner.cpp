@@ -338,6 +338,8 @@ constexpr FarReference farReferences[] = {
      -1.568346439746710779e-8}, // mpmath.odefun: 3.58e-28
     {5.699318, -18.424347, -0.3832, 20.440330863944448253, 2.9355955909729945324,
      -9.2209012597867916489e-9}, // mpmath.odefun: 1.49e-27
+    {17.689785, -9.331211, 0.7168, 20.807336897112873903, 2.1306701095578240681,
+     -3.1376661151981954827e-9}, // mpmath.odefun: 5.13e-28
 };
 
 TEST(PosePlanner, FarTargetsEndOnTheTargetAgainstA40DigitReference) {
