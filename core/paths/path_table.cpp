@@ -476,7 +476,11 @@ PathNode PathTable::interpolatedAt(double u) const {
 
 PathNode PathTable::interpolatedAt(int k, double xi) const {
     const PathNode &start = m_nodes[k], &end = m_nodes[k + 1];
-    const double u = 0.5 * (start.u + end.u) + 0.5 * (end.u - start.u) * xi;
+    // xi = +-1 are the panel's ends exactly: within rounding of a cusp end, where r' is rounding,
+    // the heading would be atan2's of noise
+    const double u = xi == 1    ? end.u
+                     : xi == -1 ? start.u
+                                : 0.5 * (start.u + end.u) + 0.5 * (end.u - start.u) * xi;
     if (m_uniform) {
         // constant ds/du and kappa: phi is linear in s and P moves on a line or a circle; the
         // chord 2 sin(dphi/2)/kappa is written s sinc(dphi/2) so kappa = 0 needs no case

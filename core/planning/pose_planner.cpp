@@ -1,6 +1,7 @@
 #include "planning/pose_planner.h"
 
 #include "common/input_error.h"
+#include "planning/complementary_elliptic.h"
 #include "planning/cut_time.h"
 #include "planning/start_curve.h"
 #include "planning/unit_geodesic.h"
@@ -23,15 +24,49 @@ Eigen::Vector3d endResidual(const UnitGeodesicPoint& p, const UnitTarget& tg) {
     return {p.x - tg.X, p.y - tg.Y, wrapAngle(p.phi - tg.Phi)};
 }
 
+// the geodesic of a solution, with its 1 - k^2 when that is carried exactly
+UnitGeodesic geodesicOf(const UnitSolution& s) {
+    return std::isnan(s.gap) ? UnitGeodesic(s.psi0, s.lambda0)
+                             : UnitGeodesic(s.psi0, s.lambda0, s.gap);
+}
+
 double endError(const UnitSolution& s, const UnitTarget& tg) {
-    return endResidual(UnitGeodesic(s.psi0, s.lambda0).at(s.t), tg).lpNorm<1>();
+    return endResidual(geodesicOf(s).at(s.t), tg).lpNorm<1>();
+}
+
+// Newton's step from the Jacobian J and residual r, halved while the residual does not decrease;
+// `move` makes the trial solution from a fraction of the step. False when nothing improves.
+template <class Move>
+bool dampedStep(UnitSolution& s, double& norm, const Eigen::Matrix3d& J, const Eigen::Vector3d& r,
+                const UnitTarget& tg, Move&& move) {
+    const Eigen::FullPivLU<Eigen::Matrix3d> lu(J);
+    if (!lu.isInvertible())
+        return false;
+    const Eigen::Vector3d step = lu.solve(-r);
+    if (!step.allFinite())
+        return false;
+    for (double damping = 1; damping > 1e-3; damping *= 0.5) {
+        const std::optional<UnitSolution> trial = move(damping * step);
+        if (!trial || trial->t < 0)
+            continue;
+        const double trialNorm = endError(*trial, tg);
+        if (trialNorm < norm) {
+            s = *trial;
+            norm = trialNorm;
+            return true;
+        }
+    }
+    return false;
+}
+
+// the t column of the Jacobian: the end's velocity
+Eigen::Vector3d endVelocity(const UnitGeodesicPoint& p) {
+    return {p.sinPsi * std::cos(p.phi), p.sinPsi * std::sin(p.phi), p.cosPsi};
 }
 
 // Newton's method on (Psi0, Lambda0, t) -> end pose, the Jacobian's t column exact (the velocity)
 // and the others central differences; steps halved while the residual does not decrease.
-std::optional<UnitSolution> polish(UnitSolution s, const UnitTarget& tg) {
-    constexpr double converged = 1e-14, accepted = 1e-11;
-    double norm = endError(s, tg);
+void newtonOnLambda(UnitSolution& s, double& norm, const UnitTarget& tg, double converged) {
     for (int iter = 0; iter < 40 && norm > converged * (1 + s.t); ++iter) {
         const UnitGeodesic g(s.psi0, s.lambda0);
         const UnitGeodesicPoint p = g.at(s.t);
@@ -52,35 +87,81 @@ std::optional<UnitSolution> polish(UnitSolution s, const UnitTarget& tg) {
         J.col(1) = dLambda / (2 * h1);
         J(2, 0) = wrapAngle(dPsi(2)) / (2 * h0);
         J(2, 1) = wrapAngle(dLambda(2)) / (2 * h1);
-        J.col(2) << p.sinPsi * std::cos(p.phi), p.sinPsi * std::sin(p.phi), p.cosPsi;
-        const Eigen::FullPivLU<Eigen::Matrix3d> lu(J);
-        if (!lu.isInvertible())
-            break;
-        const Eigen::Vector3d step = lu.solve(-r);
-        if (!step.allFinite())
-            break;
-        bool improved = false;
-        for (double damping = 1; damping > 1e-3; damping *= 0.5) {
-            UnitSolution trial{wrapAngle(s.psi0 + damping * step(0)), s.lambda0 + damping * step(1),
-                               s.t + damping * step(2)};
-            if (trial.t < 0)
-                continue;
-            const double trialNorm = endError(trial, tg);
-            if (trialNorm < norm) {
-                s = trial;
-                norm = trialNorm;
-                improved = true;
-                break;
-            }
-        }
-        if (!improved)
+        J.col(2) = endVelocity(p);
+        const auto move = [&](const Eigen::Vector3d& d) -> std::optional<UnitSolution> {
+            return UnitSolution{wrapAngle(s.psi0 + d(0)), s.lambda0 + d(1), s.t + d(2)};
+        };
+        if (!dampedStep(s, norm, J, r, tg, move))
             break;
     }
-    // the closed form carries the rounding of k^2 (1e-16) into the phase as 1e-16/|1 - k^2|
-    // (docs/physics.md §8): next to the separatrix no end can be closer than that (up to 1e-5)
+}
+
+// Next to the separatrix a double Lambda0 fixes 1 - k^2 only to 1e-16, and the end moves by
+// 1e-16/|1 - k^2| (docs/physics.md §10): Newton on (Psi0, log |1 - k^2|, t) instead, the sign of
+// 1 - k^2 and of Lambda0 kept, Lambda0 = +-sqrt(cos^2 Psi0 - (1 - k^2)) following the start.
+void newtonOnGap(UnitSolution& s, double& norm, const UnitTarget& tg, double converged) {
     const double c0 = std::cos(s.psi0);
-    const double gap = std::fabs((c0 - s.lambda0) * (c0 + s.lambda0));
-    if (!(norm <= std::min(accepted + 4e-16 / gap, 1e-5)))
+    const double gap0 = std::isnan(s.gap) ? (c0 - s.lambda0) * (c0 + s.lambda0) : s.gap;
+    if (gap0 == 0 || s.lambda0 == 0)
+        return;
+    const double side = gap0 > 0 ? 1.0 : -1.0, sigma = s.lambda0 > 0 ? 1.0 : -1.0;
+    const auto solution = [&](double psi0, double logGap, double t) -> std::optional<UnitSolution> {
+        const double gap = side * std::exp(logGap), c = std::cos(psi0);
+        const double lambda2 = c * c - gap;
+        if (!(lambda2 > 0))
+            return std::nullopt;
+        return UnitSolution{wrapAngle(psi0), sigma * std::sqrt(lambda2), t, gap};
+    };
+    const auto start = solution(s.psi0, std::log(std::fabs(gap0)), s.t);
+    if (!start)
+        return;
+    UnitSolution g = *start;
+    double gNorm = endError(g, tg);
+    for (int iter = 0; iter < 20 && gNorm > converged * (1 + g.t); ++iter) {
+        const double logGap = std::log(std::fabs(g.gap));
+        const UnitGeodesicPoint p = geodesicOf(g).at(g.t);
+        const Eigen::Vector3d r = endResidual(p, tg);
+        // Psi0's step below the distance to the turning point Lambda0 = 0, where the start's
+        // Lambda0 folds
+        const double h0 = 1e-7 * std::min(1.0, std::fabs(g.lambda0)), h1 = 1e-6;
+        Eigen::Matrix3d J;
+        const auto endAt = [&](double psi0, double lg) -> std::optional<Eigen::Vector3d> {
+            const auto u = solution(psi0, lg, g.t);
+            if (!u)
+                return std::nullopt;
+            return endResidual(geodesicOf(*u).at(g.t), tg);
+        };
+        const auto pp = endAt(g.psi0 + h0, logGap), pm = endAt(g.psi0 - h0, logGap);
+        const auto lp = endAt(g.psi0, logGap + h1), lm = endAt(g.psi0, logGap - h1);
+        if (!pp || !pm || !lp || !lm)
+            break;
+        const Eigen::Vector3d dPsi = *pp - *pm, dLog = *lp - *lm;
+        J.col(0) = dPsi / (2 * h0);
+        J.col(1) = dLog / (2 * h1);
+        J(2, 0) = wrapAngle(dPsi(2)) / (2 * h0);
+        J(2, 1) = wrapAngle(dLog(2)) / (2 * h1);
+        J.col(2) = endVelocity(p);
+        const auto move = [&](const Eigen::Vector3d& d) {
+            return solution(g.psi0 + d(0), logGap + d(1), g.t + d(2));
+        };
+        if (!dampedStep(g, gNorm, J, r, tg, move))
+            break;
+    }
+    if (gNorm < norm) {
+        s = g;
+        norm = gNorm;
+    }
+}
+
+// Newton on (Psi0, Lambda0, t), then next to the separatrix on (Psi0, log |1 - k^2|, t)
+std::optional<UnitSolution> polish(UnitSolution s, const UnitTarget& tg) {
+    constexpr double converged = 1e-14, accepted = 1e-11;
+    double norm = endError(s, tg);
+    newtonOnLambda(s, norm, tg, converged);
+    const double c0 = std::cos(s.psi0);
+    if (norm > converged * (1 + s.t) && std::fabs((c0 - s.lambda0) * (c0 + s.lambda0)) < 1e-2)
+        newtonOnGap(s, norm, tg, converged);
+    if (!(norm <= accepted))
         return std::nullopt;
     return s;
 }
@@ -115,12 +196,16 @@ GeodesicFamily familyOf(const UnitGeodesic& g) {
 }
 
 Found classify(const UnitSolution& s) {
-    const UnitGeodesic g(s.psi0, s.lambda0);
+    const UnitGeodesic g = geodesicOf(s);
     Found f{s, familyOf(g), 0};
     switch (f.family) {
     case GeodesicFamily::Line:
     case GeodesicFamily::Separatrix:
         f.cut = std::numeric_limits<double>::infinity();
+        break;
+    case GeodesicFamily::Libration:
+        // 2 K, in the complementary parameter next to the separatrix
+        f.cut = g.gap() < 0.5 ? 2 * completeKComplementary(g.gap()) : unitCutTime(g.modulus());
         break;
     default:
         f.cut = unitCutTime(g.modulus());
@@ -280,10 +365,14 @@ Plan planVakonomic(const PlanRequest& request) {
         // lambda = m (b Psidot - a phidot), phidot(0) = v_T cos Psi0 / b (docs/physics.md §8)
         const double phidot0 = f.family == GeodesicFamily::Line ? 0 : v * std::cos(g.psi0) / b;
         g.lambda0 = m * (b * g.psidot0 - a * phidot0);
-        g.modulus =
-            std::hypot(f.family == GeodesicFamily::Line ? 1.0 : std::sin(f.s.psi0), f.s.lambda0);
-        if (f.family == GeodesicFamily::Pivot || f.family == GeodesicFamily::Rest)
-            g.modulus = 0;
+        if (f.family == GeodesicFamily::Line) {
+            g.modulus = 1;
+            g.modulusGap = 0;
+        } else if (f.family != GeodesicFamily::Pivot && f.family != GeodesicFamily::Rest) {
+            const UnitGeodesic unit = geodesicOf(f.s);
+            g.modulus = unit.modulus();
+            g.modulusGap = unit.gap();
+        }
         g.family = f.family;
         g.cutTime = f.cut * b / v;
         g.optimal = leastTime && withinCut(f);

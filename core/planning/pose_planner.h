@@ -31,6 +31,9 @@ struct PlannedGeodesic {
     double psidot0 = 0; ///< Psidot(0) [rad/s]
     double lambda0 = 0; ///< lambda(0) = m (b Psidot0 - a phidot0) [kg m/s]
     double modulus = 0; ///< the pendulum's k
+    /// 1 - k^2, exact: next to the separatrix the motion is the one of Psi0 with this 1 - k^2
+    /// (psidot0 is +-sqrt(cos^2 Psi0 - modulusGap) rounded, docs/physics.md §10); 1 pivoting
+    double modulusGap = 1;
     GeodesicFamily family = GeodesicFamily::Rest;
     double cutTime = 0;   ///< first Maxwell time [s] (infinity on the separatrix and the line)
     bool optimal = false; ///< a least-time motion, certified by t <= cutTime

@@ -20,10 +20,21 @@ using std::numbers::pi;
 // and sin^2 Psi1 + cos^2 Psi1 = 1 is the curve G(Psi0, Lambda0) = 0 on which every geodesic to the
 // target starts. On it the heading and the position across P come out right at every passage of
 // the pendulum through (Psi1, Lambda1); what is left is the position along P.
-double curveG(double s0, double c0, double lambda, const UnitTarget& tg) {
-    const double s1 = s0 * std::cos(tg.Phi) + lambda * std::sin(tg.Phi);
-    const double c1 = c0 + tg.Y * s0 - tg.X * lambda;
-    return s1 * s1 + c1 * c1 - 1;
+// sin Psi0, cos Psi0 and 1 -+ cos Psi0 = 2 sin^2(Psi0/2), 2 cos^2(Psi0/2): exact next to the pivot
+// points Psi0 = 0, pi, where G is a sum of terms as small as the target's distance
+struct StartAngle {
+    double s = 0, c = 1, oneMinusC = 0, onePlusC = 2;
+};
+StartAngle startAngle(double psi0) {
+    const double h = std::sin(0.5 * psi0), g = std::cos(0.5 * psi0);
+    return {2 * h * g, (g - h) * (g + h), 2 * h * h, 2 * g * g};
+}
+
+// c1^2 - 1 = (c1 - 1)(c1 + 1), c1 = cos Psi0 + shift: no cancellation where c1 = +-1
+double curveG(const StartAngle& a, double lambda, const UnitTarget& tg) {
+    const double s1 = a.s * std::cos(tg.Phi) + lambda * std::sin(tg.Phi);
+    const double shift = tg.Y * a.s - tg.X * lambda;
+    return s1 * s1 + (shift - a.oneMinusC) * (shift + a.onePlusC);
 }
 
 // G's root on the segment from (a, Ga) to (b, Gb), Ga and Gb of opposite signs (Illinois)
@@ -67,17 +78,21 @@ int pairedPassage(const StartPoint& a, const StartPoint& b, int n) {
 }
 
 // the point of G = 0 nearest to (psi0, lambda0), by Newton steps along G's gradient, until G is
-// at its rounding (about 1e-16 (1 + |X| + |Y|))
+// at its rounding (1e-15 times the size of its terms: next to the pivot points they are as small
+// as the target's distance)
 std::optional<std::pair<double, double>> projectOnCurve(double psi0, double lambda0,
                                                         const UnitTarget& tg) {
     const double cP = std::cos(tg.Phi), sP = std::sin(tg.Phi);
-    const double rounding =
-        1e-15 * (1 + std::fabs(tg.X) + std::fabs(tg.Y)) * (1 + std::fabs(lambda0));
-    double G = 1;
+    double G = 1, rounding = 0;
     for (int i = 0; i < 20; ++i) {
-        const double s0 = std::sin(psi0), c0 = std::cos(psi0);
+        const StartAngle a = startAngle(psi0);
+        const double s0 = a.s, c0 = a.c;
         const double s1 = s0 * cP + lambda0 * sP, c1 = c0 + tg.Y * s0 - tg.X * lambda0;
-        G = s1 * s1 + c1 * c1 - 1;
+        const double shift = tg.Y * s0 - tg.X * lambda0;
+        G = s1 * s1 + (shift - a.oneMinusC) * (shift + a.onePlusC);
+        const double size = std::fabs(tg.Y * s0) + std::fabs(tg.X * lambda0);
+        rounding = 1e-15 * (s1 * s1 + (size + a.oneMinusC) * (size + a.onePlusC)) *
+                   (1 + std::fabs(lambda0));
         if (std::fabs(G) <= rounding)
             break;
         const double gPsi = 2 * s1 * c0 * cP + 2 * c1 * (tg.Y * c0 - s0);
@@ -133,7 +148,7 @@ StartPoint startPoint(double psi0, double lambda0, const UnitTarget& tg) {
     const double s0 = std::sin(psi0), c0 = std::cos(psi0);
     const double k2 = s0 * s0 + lambda0 * lambda0;
     // the separatrix level and pivoting are found by Newton from their neighbours
-    if (k2 == 1 || k2 < 1e-18)
+    if (k2 == 1 || k2 < 1e-40)
         return cp;
     double s1 = s0 * std::cos(tg.Phi) + lambda0 * std::sin(tg.Phi);
     double c1 = c0 + tg.Y * s0 - tg.X * lambda0;
@@ -162,7 +177,7 @@ UnitSolution refineSeed(SeedPiece piece, const UnitTarget& tg) {
     for (int i = 0; i < 60; ++i) {
         const double ga = a.along + n * a.drift;
         if (ga == 0 ||
-            std::fabs(wrapAngle(b.psi0 - a.psi0)) + std::fabs(b.lambda0 - a.lambda0) < 1e-14)
+            std::fabs(wrapAngle(b.psi0 - a.psi0)) + std::fabs(b.lambda0 - a.lambda0) < 1e-10)
             break;
         const auto onCurve = projectOnCurve(a.psi0 + 0.5 * wrapAngle(b.psi0 - a.psi0),
                                             0.5 * (a.lambda0 + b.lambda0), tg);
@@ -198,16 +213,14 @@ void traceGrid(const UnitTarget& tg, double tMax, const std::vector<double>& psi
                const std::vector<double>& lam, std::vector<SeedPiece>& seeds, int& budget) {
     const int columns = static_cast<int>(psi.size()), rows = static_cast<int>(lam.size()) - 1;
     const int lastColumn = periodic ? columns : columns - 1; // cells and horizontal edges
-    std::vector<double> sinPsi(columns), cosPsi(columns);
-    for (int i = 0; i < columns; ++i) {
-        sinPsi[i] = std::sin(psi[i]);
-        cosPsi[i] = std::cos(psi[i]);
-    }
+    std::vector<StartAngle> angle(columns);
+    for (int i = 0; i < columns; ++i)
+        angle[i] = startAngle(psi[i]);
     std::vector<double> G((rows + 1) * columns);
     auto node = [&](int i, int j) -> double& { return G[j * columns + i]; };
     for (int j = 0; j <= rows; ++j)
         for (int i = 0; i < columns; ++i)
-            node(i, j) = curveG(sinPsi[i], cosPsi[i], lam[j], tg);
+            node(i, j) = curveG(angle[i], lam[j], tg);
 
     std::vector<StartPoint> points;
     std::vector<int> horizontal((rows + 1) * columns, -1), vertical(rows * columns, -1);
@@ -218,7 +231,7 @@ void traceGrid(const UnitTarget& tg, double tMax, const std::vector<double>& psi
             if ((g0 > 0) == (g1 > 0))
                 continue;
             const double l = lam[j];
-            auto along = [&](double p) { return curveG(std::sin(p), std::cos(p), l, tg); };
+            auto along = [&](double p) { return curveG(startAngle(p), l, tg); };
             const double p = edgeRoot(along, psi[i], g0, psi[i] + wrapAngle(psi[i1] - psi[i]), g1);
             horizontal[j * columns + i] = static_cast<int>(points.size());
             points.push_back(startPoint(wrapAngle(p), l, tg));
@@ -228,7 +241,7 @@ void traceGrid(const UnitTarget& tg, double tMax, const std::vector<double>& psi
             const double g0 = node(i, j), g1 = node(i, j + 1);
             if ((g0 > 0) == (g1 > 0))
                 continue;
-            auto along = [&](double l) { return curveG(sinPsi[i], cosPsi[i], l, tg); };
+            auto along = [&](double l) { return curveG(angle[i], l, tg); };
             const double l = edgeRoot(along, lam[j], g0, lam[j + 1], g1);
             vertical[j * columns + i] = static_cast<int>(points.size());
             points.push_back(startPoint(psi[i], l, tg));
@@ -308,15 +321,15 @@ std::vector<SeedPiece> curveSeeds(const UnitTarget& tg, double tMax, double kMax
     const double d = std::hypot(tg.X, tg.Y);
     if (d < 0.05) {
         constexpr int patch = 24;
-        const double h = 20 * d;
-        for (const double centre : {0.0, pi}) {
-            std::vector<double> p(patch + 1), l(patch + 1);
-            for (int i = 0; i <= patch; ++i) {
-                p[i] = wrapAngle(centre - h + (i + 0.3719) * 2 * h / patch);
-                l[i] = -h + (i + 0.2113) * 2 * h / patch;
+        for (const double h : {20 * d, 3 * d})
+            for (const double centre : {0.0, pi}) {
+                std::vector<double> p(patch + 1), l(patch + 1);
+                for (int i = 0; i <= patch; ++i) {
+                    p[i] = wrapAngle(centre - h + (i + 0.3719) * 2 * h / patch);
+                    l[i] = -h + (i + 0.2113) * 2 * h / patch;
+                }
+                traceGrid(tg, tMax, p, false, l, seeds, budget);
             }
-            traceGrid(tg, tMax, p, false, l, seeds, budget);
-        }
     }
     std::sort(seeds.begin(), seeds.end(),
               [](const SeedPiece& a, const SeedPiece& b) { return a.t < b.t; });

@@ -2,6 +2,7 @@
 // The curve of starts (docs/physics.md §10): the initial data (Psi0, Lambda0) from which a geodesic
 // of the normalised problem can reach a target, traced on a grid, and the pieces of it where Newton
 // starts.
+#include <limits>
 #include <vector>
 
 namespace chaplygin {
@@ -17,6 +18,9 @@ struct UnitTarget {
 /// A geodesic of the normalised problem: Psi0, Lambda0 = b Psidot0 / v_T and t v_T / b.
 struct UnitSolution {
     double psi0 = 0, lambda0 = 0, t = 0;
+    /// 1 - k^2 when it is carried exactly (next to the separatrix, where Lambda0 is then rounded
+    /// from +-sqrt(cos^2 Psi0 - gap)); NaN: from Psi0 and Lambda0
+    double gap = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// A point (Psi0, Lambda0) of the curve G = 0 with its passages: the n-th passage through the

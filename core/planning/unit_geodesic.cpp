@@ -1,6 +1,7 @@
 #include "planning/unit_geodesic.h"
 
 #include "numerics/gsl_callback.h"
+#include "planning/complementary_elliptic.h"
 
 #include <gsl/gsl_sf_ellint.h>
 
@@ -72,16 +73,96 @@ double positiveRemainder(double a, double period) {
 } // namespace
 
 UnitGeodesic::UnitGeodesic(double psi0, double lambda0)
-    : m_psi0(psi0), m_lambda0(lambda0), m_motion(unitSystem(), unitInitial(psi0, lambda0)) {}
+    : UnitGeodesic(psi0, lambda0, [&] {
+          const double c0 = unitInitial(psi0, lambda0).phidot;
+          return (c0 - lambda0) * (c0 + lambda0);
+      }()) {}
+
+UnitGeodesic::UnitGeodesic(double psi0, double lambda0, double gap)
+    : m_psi0(psi0), m_lambda0(lambda0), m_gap(gap) {
+    const VakonomicInitial init = unitInitial(psi0, lambda0);
+    const double S0 = init.sdot, C0 = init.phidot, L0 = lambda0;
+    const bool line = C0 == 0 && (L0 == 0 || S0 * S0 + L0 * L0 == 1);
+    if (line || gap == 0 || (S0 == 0 && L0 == 0)) {
+        m_motion.emplace(unitSystem(), init);
+        m_kind = m_motion->kind();
+        m_k = m_motion->modulus();
+        return;
+    }
+    // k from whichever of k^2 and 1 - k^2 is known to its last digits
+    m_k = gap > 0.5 ? std::sqrt(S0 * S0 + L0 * L0) : std::sqrt(1 - gap);
+    if (gap > 0) {
+        // libration: sn w = eps sin Psi/k, cn w = Lambda/k, w = w0 + t (docs/physics.md §8)
+        m_kind = VakonomicMotion::Case::Libration;
+        m_mc = gap;
+        m_sign = C0 >= 0 ? 1.0 : -1.0;
+        m_am0 = std::atan2(m_sign * S0, L0);
+        m_rate = 1;
+    } else {
+        // rotation: Psi = sigma am(W, 1/k), W = W0 + k t, parameter 1/k^2 = 1 - mc
+        m_kind = VakonomicMotion::Case::Rotation;
+        m_mc = -gap / (1 - gap);
+        m_sign = L0 >= 0 ? 1.0 : -1.0;
+        m_am0 = m_sign * std::atan2(S0, C0);
+        m_rate = m_k;
+    }
+    m_K = completeKComplementary(m_mc);
+    m_D = completeDComplementary(m_mc);
+    const double j = std::nearbyint(m_am0 / pi);
+    m_w0 = 2 * j * m_K + incompleteFComplementary(m_am0 - j * pi, m_mc);
+    m_d0 = 2 * j * m_D + incompleteDComplementary(m_am0 - j * pi, m_mc);
+    m_sn0 = std::sin(m_am0);
+    m_cn0 = std::cos(m_am0);
+    m_dn0 = std::sqrt(m_cn0 * m_cn0 + m_mc * m_sn0 * m_sn0);
+    m_heading0 = gap > 0 ? m_am0 : std::atan2(m_sn0 / m_k, m_dn0);
+}
 
 UnitGeodesicPoint UnitGeodesic::at(double t) const {
-    const VakonomicState s = m_motion.at(t);
-    return {s.x, s.y, s.phi, s.sdot, s.phidot};
+    if (m_motion) {
+        const VakonomicState s = m_motion->at(t);
+        return {s.x, s.y, s.phi, s.sdot, s.phidot};
+    }
+    // w reduced to [-K, K], where cn >= 0: sn(r + 2jK) = (-1)^j sn(r), likewise cn
+    const double w = m_w0 + m_rate * t;
+    const double j = std::nearbyint(w / (2 * m_K));
+    JacobiValues e = jacobiComplementary(w - 2 * j * m_K, m_mc);
+    const double am = j * pi + std::atan2(e.sn, e.cn);
+    // D(am w) = 2 j D(pi/2) + (sn^3/3) R_D(cn^2, dn^2, 1)
+    gsl_sf_result r;
+    const int status = gsl_sf_ellint_RD_e(e.cn * e.cn, e.dn * e.dn, 1.0, GSL_PREC_DOUBLE, &r);
+    const double d = 2 * j * m_D + e.sn * e.sn * e.sn / 3 * checked(status, r, "RD");
+    if (std::fmod(std::fabs(j), 2.0) == 1.0) {
+        e.sn = -e.sn;
+        e.cn = -e.cn;
+    }
+    UnitGeodesicPoint p;
+    if (m_kind == VakonomicMotion::Case::Libration) {
+        // phi = eps (am w - am w0); z = k e^{i alpha}[eps (sn^2 - sn0^2)/(dn + dn0)
+        // + i (D(am w) - D(am w0))], alpha = -eps am w0
+        const double eps = m_sign, alpha = -eps * m_am0;
+        const double re = eps * (e.sn - m_sn0) * (e.sn + m_sn0) / (e.dn + m_dn0), im = d - m_d0;
+        p.x = m_k * (std::cos(alpha) * re - std::sin(alpha) * im);
+        p.y = m_k * (std::sin(alpha) * re + std::cos(alpha) * im);
+        p.phi = eps * (am - m_am0);
+        p.sinPsi = eps * m_k * e.sn;
+        p.cosPsi = eps * e.dn;
+    } else {
+        // phi = beta - beta0, beta = asin(q sn W); z = sigma q e^{-i beta0}[-(cn - cn0)
+        // + i q (D(am W) - D(am W0))]
+        const double q = 1 / m_k, sigma = m_sign, beta0 = m_heading0;
+        const double re = -(e.cn - m_cn0), im = q * (d - m_d0);
+        p.x = sigma * q * (std::cos(beta0) * re + std::sin(beta0) * im);
+        p.y = sigma * q * (-std::sin(beta0) * re + std::cos(beta0) * im);
+        p.phi = std::atan2(q * e.sn, e.dn) - beta0;
+        p.sinPsi = sigma * e.sn;
+        p.cosPsi = e.cn;
+    }
+    return p;
 }
 
 std::optional<PendulumPassage> UnitGeodesic::passage(double sinPsi1, double cosPsi1,
                                                      double lambda1) const {
-    const auto kind = m_motion.kind();
+    const auto kind = m_kind;
     if (kind != VakonomicMotion::Case::Libration && kind != VakonomicMotion::Case::Rotation)
         return std::nullopt;
     return pendulumPassage(m_psi0, m_lambda0, sinPsi1, cosPsi1, lambda1);

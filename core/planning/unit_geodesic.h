@@ -1,7 +1,9 @@
 #pragma once
 // A geodesic of the normalised sub-Riemannian problem on SE(2) (b = v_T = 1, from the identity
 // pose): the genuine vakonomic motion's closed form (docs/physics.md §8) read as the exponential
-// map, with the pendulum's passage time through a given state (docs/physics.md §10).
+// map, with the pendulum's passage time through a given state (docs/physics.md §10). Libration
+// and rotation are evaluated in the complementary parameter 1 - k^2, carried exactly, so that
+// the end stays exact next to the separatrix.
 #include "motion/vakonomic_motion.h"
 
 #include <optional>
@@ -35,13 +37,21 @@ std::optional<PendulumPassage> pendulumPassage(double psi0, double lambda0, doub
 /// pendulum's modulus), and cos Psi + x P_y - y P_x is constant.
 class UnitGeodesic {
   public:
+    /// 1 - k^2 = (cos Psi0 - Lambda0)(cos Psi0 + Lambda0), from the start's doubles.
     UnitGeodesic(double psi0, double lambda0);
+    /// The geodesic of the start Psi0 whose 1 - k^2 is `gap` exactly; lambda0 gives the sign of
+    /// Psidot0 and the start's phase (next to the separatrix Lambda0 = +-sqrt(cos^2 Psi0 - gap)
+    /// rounded to a double no longer fixes k).
+    UnitGeodesic(double psi0, double lambda0, double gap);
 
     UnitGeodesicPoint at(double t) const;
     double psi0() const { return m_psi0; }
     double lambda0() const { return m_lambda0; }
-    double modulus() const { return m_motion.modulus(); }
-    VakonomicMotion::Case kind() const { return m_motion.kind(); }
+    /// The pendulum's modulus k.
+    double modulus() const { return m_k; }
+    /// 1 - k^2.
+    double gap() const { return m_gap; }
+    VakonomicMotion::Case kind() const { return m_kind; }
 
     /// The first passage through (Psi1 mod 2 pi, Lambda1), a state on the same energy level;
     /// none when it lies on the other libration orbit (about the other rest point), on another
@@ -50,8 +60,16 @@ class UnitGeodesic {
     std::optional<PendulumPassage> passage(double sinPsi1, double cosPsi1, double lambda1) const;
 
   private:
-    double m_psi0, m_lambda0;
-    VakonomicMotion m_motion;
+    double m_psi0, m_lambda0, m_gap;
+    VakonomicMotion::Case m_kind = VakonomicMotion::Case::Rest;
+    double m_k = 0;
+    /// the line, pivoting and the separatrix: the vakonomic body's own closed form
+    std::optional<VakonomicMotion> m_motion;
+    // libration and rotation (docs/physics.md §8): the complementary parameter mc, the sign
+    // eps (libration) or sigma (rotation), K, D(pi/2), the argument w0 at t = 0, its rate, and
+    // at t = 0 the amplitude, the heading term (am w0 or asin(q sn w0)), sn, cn, dn, D(am w0)
+    double m_mc = 0, m_sign = 1, m_K = 0, m_D = 0, m_w0 = 0, m_rate = 1;
+    double m_am0 = 0, m_heading0 = 0, m_sn0 = 0, m_cn0 = 0, m_dn0 = 0, m_d0 = 0;
 };
 
 } // namespace chaplygin

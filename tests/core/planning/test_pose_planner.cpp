@@ -238,10 +238,10 @@ TEST(PosePlanner, ListsEveryMotionAnIndependentSearchFinds) {
 }
 
 // Far targets: the optimum drives nearly straight, its pendulum dwelling next to the saddle
-// Psi = pi/2, so 1 - k^2 falls like e^{-d/b} and the closed form's phase carries 1e-16/|1 - k^2|
-// (docs/physics.md §8, §10). Up to about 10 b the ends stay within 1e-10 of rk8pd; at 20 b the
-// planner still certifies the least time of targets nearly ahead or behind, with the end error
-// it reports.
+// Psi = pi/2, so 1 - k^2 falls like e^{-d/b} (docs/physics.md §8, §10). The planner carries
+// 1 - k^2 itself: its own end is within 1e-10 at 20 b; rk8pd from the double Psidot0 checks the
+// ends only up to about 10 b (the saddle amplifies the start's rounding by e^t; the 40-digit
+// reference below checks the far ones).
 TEST(PosePlanner, FarTargetsAreCertified) {
     for (const Pose& to : {Pose{10, 1, 0.5}, Pose{-9, -2, -0.4}}) {
         const PlanRequest r = request(to);
@@ -261,12 +261,113 @@ TEST(PosePlanner, FarTargetsAreCertified) {
         const double d = std::hypot(to.x, to.y);
         EXPECT_GE(g.t, d);
         EXPECT_LE(g.t, d + 1.5 * pi);
-        EXPECT_LT(g.endError, 1e-5);
+        EXPECT_LE(g.endError, 1e-10);
         const Pose end = test::integratedEnd(r.system, r.vT, r.from, g.psi0, g.lambda0, g.t);
         std::printf("(%g, %g, %g): t = %.12g, 1 - k = %.2g, end error %.3g (closed form), %.3g "
                     "(rk8pd)\n",
                     to.x, to.y, to.phi, g.t, 1 - g.modulus, g.endError,
                     test::poseError(end, to, 1));
+    }
+}
+
+// Next to the start the starts of the least-time motion lie on a loop of the curve through the
+// pivot point, as small as the target's distance; these two sit at its fold, where the miss along
+// P changes sign only across the fold (docs/physics.md §10). The least time is at least |phi|
+// (|phidot| <= v_T/b); the independent search (GSL's hybrid Newton from 600 random starts) and
+// scipy's DOP853 shooting (tests/core/planning/next_to_start_reference.py) find the same motion.
+TEST(PosePlanner, NextToTheStartOnTheFoldOfTheLoop) {
+    struct Reference {
+        Pose to;
+        double t, psi0, psidot0; // scipy's multi-start shooting, 1e-12
+    };
+    for (const Reference& ref :
+         {Reference{{1e-4, -2e-4, -2}, 2.000000017514, 3.141546973355, -0.000152300029963},
+          Reference{{1e-9, 1e-9, 1}, 1.000000000000, -0.000000001115, 5.11481922115e-09}}) {
+        const PlanRequest r = request(ref.to);
+        const Plan plan = planVakonomic(r);
+        ASSERT_TRUE(plan.certified) << ref.to.x << ", " << ref.to.y;
+        const auto best = optima(plan);
+        ASSERT_EQ(best.size(), 1u);
+        EXPECT_EQ(best[0].family, GeodesicFamily::Libration);
+        EXPECT_GE(best[0].t, std::fabs(ref.to.phi) - 1e-15);
+        EXPECT_NEAR(best[0].t, ref.t, 2e-12);
+        EXPECT_NEAR(best[0].psi0, ref.psi0, 2e-12);
+        EXPECT_NEAR(best[0].psidot0, ref.psidot0, 1e-12);
+        const auto s = test::leastTimeByShooting(ref.to.x, ref.to.y, ref.to.phi, 600, 11);
+        if (s.converged > 0)
+            EXPECT_LE(best[0].t, s.t + 1e-9);
+        worstEndError(r, plan);
+        PlanRequest fast = r;
+        fast.optimalOnly = true;
+        const Plan quick = planVakonomic(fast);
+        ASSERT_TRUE(quick.certified);
+        ASSERT_EQ(quick.geodesics.size(), 1u);
+        EXPECT_NEAR(quick.geodesics[0].t, best[0].t, 1e-11);
+    }
+}
+
+// Far targets at 15 b to 21 b against 40-digit references (tests/core/planning/
+// far_target_reference.py: the end equations solved with mpmath's elliptic functions, each answer
+// checked by mpmath.odefun at 30 digits to 1e-26): X, Y, Phi, t, Psi0, 1 - k^2. rk8pd in double
+// cannot check these ends (the saddle amplifies the start's rounding by e^t), the reference can:
+// within these tolerances (Psi0 1e-12, log |1 - k^2| and t 1e-11) the end is within 1e-10 of the
+// target by the end's Jacobian there (far_target_reference.py --bound, at most 6.6e-11).
+struct FarReference {
+    double x, y, phi, t, psi0, gap;
+};
+constexpr FarReference farReferences[] = {
+    {20, 0.5, 0.3, 20.045822042983626841, 1.5594649399204376824,
+     2.5941070643728894849e-11}, // mpmath.odefun: 9.86e-33
+    {-20, 3, 0, 20.248287590806546483, -1.7359450036221062319,
+     -1.7622516735702094208e-10}, // mpmath.odefun: 1.58e-29
+    {3, -20, -1, 21.214056087671032053, 3.0655490813052294134,
+     -2.2922455215757624126e-9}, // mpmath.odefun: 3.85e-27
+    {14, -14, -2, 20.744585615138090629, 2.3439173672166413527,
+     4.4885077425353427195e-9}, // mpmath.odefun: 9.52e-28
+    {14.330047, 4.432803, -0.7000, 15.552140294956355299, 1.1868005089344380118,
+     -3.2983315583293414355e-7}, // mpmath.odefun: 1.39e-30
+    {7.331666, 13.899117, 0.4000, 16.55288975085016235, 0.38093555129174402055,
+     -2.9218572459808432511e-7}, // mpmath.odefun: 3.21e-29
+    {-4.854975, 15.694814, 1.5000, 17.846931871453119079, -0.38324751394973588415,
+     -9.7182627152442450239e-8}, // mpmath.odefun: 5.78e-29
+    {-15.162673, 7.998181, 2.6000, 19.036945898424291899, -1.1160848781711585239,
+     -1.62318399603776027e-8}, // mpmath.odefun: 5.14e-31
+    {-17.059580, -5.277147, -2.5832, 19.854183058868717234, -1.8399276321727254066,
+     -4.104821353138569205e-8}, // mpmath.odefun: 8.49e-30
+    {-8.664696, -16.426229, -1.4832, 20.2535440032394281, -2.5779578360429989867,
+     -1.568346439746710779e-8}, // mpmath.odefun: 3.58e-28
+    {5.699318, -18.424347, -0.3832, 20.440330863944448253, 2.9355955909729945324,
+     -9.2209012597867916489e-9}, // mpmath.odefun: 1.49e-27
+    {17.689785, -9.331211, 0.7168, 20.807336897112873903, 2.1306701095578240681,
+     -3.1376661151981954827e-9}, // mpmath.odefun: 5.13e-28
+};
+
+TEST(PosePlanner, FarTargetsEndOnTheTargetAgainstA40DigitReference) {
+    for (const FarReference& ref : farReferences) {
+        PlanRequest r = request({ref.x, ref.y, ref.phi});
+        r.optimalOnly = true;
+        const Plan plan = planVakonomic(r);
+        ASSERT_TRUE(plan.certified) << ref.x << ", " << ref.y << ", " << ref.phi;
+        ASSERT_EQ(plan.geodesics.size(), 1u) << ref.x << ", " << ref.y << ", " << ref.phi;
+        const PlannedGeodesic& g = plan.geodesics[0];
+        EXPECT_TRUE(g.optimal);
+        EXPECT_NEAR(g.t, ref.t, 1e-11) << ref.x << ", " << ref.y << ", " << ref.phi;
+        EXPECT_NEAR(g.psi0, ref.psi0, 1e-12) << ref.x << ", " << ref.y << ", " << ref.phi;
+        EXPECT_NEAR(std::log(std::fabs(g.modulusGap)), std::log(std::fabs(ref.gap)), 1e-11)
+            << ref.x << ", " << ref.y << ", " << ref.phi;
+        EXPECT_GT(g.modulusGap * ref.gap, 0);
+        EXPECT_NEAR(g.modulus, std::sqrt(1 - ref.gap), 1e-15);
+        EXPECT_LE(g.endError, 1e-10);
+    }
+    // the whole list within the default horizon: the same single optimum, every end within 1e-10
+    for (const Pose& to :
+         {Pose{20, 0.5, 0.3}, Pose{-20, 3, 0}, Pose{3, -20, -1}, Pose{14, -14, -2}}) {
+        const Plan plan = planVakonomic(request(to));
+        ASSERT_TRUE(plan.certified) << to.x << ", " << to.y << ", " << to.phi;
+        EXPECT_EQ(optima(plan).size(), 1u) << to.x << ", " << to.y << ", " << to.phi;
+        EXPECT_GE(plan.geodesics.size(), 10u);
+        for (const PlannedGeodesic& g : plan.geodesics)
+            EXPECT_LE(g.endError, 1e-10) << to.x << ", " << to.y << " t = " << g.t;
     }
 }
 
