@@ -1951,65 +1951,6 @@ realimentação: %2</translation>
         <source>Ctrl+Shift+V</source>
         <translation>Ctrl+Shift+V</translation>
     </message>
-</context>
-<context>
-    <name>chaplygin::ui::MeasureTool</name>
-    <message>
-        <source>%1 m at %2°</source>
-        <translation>%1 m a %2°</translation>
-    </message>
-    <message>
-        <source>angle %1°</source>
-        <translation>ângulo %1°</translation>
-    </message>
-    <message>
-        <source>%1° from the heading</source>
-        <translation>%1° a partir do rumo</translation>
-    </message>
-    <message>
-        <source>Path (controlled body)</source>
-        <translation>Caminho (corpo controlado)</translation>
-    </message>
-    <message>
-        <source>Free body&apos;s trail</source>
-        <translation>Rastro do corpo livre</translation>
-    </message>
-    <message>
-        <source>Vakonomic body&apos;s trail</source>
-        <translation>Rastro do corpo vakonômico</translation>
-    </message>
-    <message>
-        <source>Open-loop body&apos;s trail</source>
-        <translation>Rastro do corpo em malha aberta</translation>
-    </message>
-    <message>
-        <source>Feedback body&apos;s trail</source>
-        <translation>Rastro do corpo com realimentação</translation>
-    </message>
-    <message>
-        <source>t = %1 s</source>
-        <translation>t = %1 s</translation>
-    </message>
-    <message>
-        <source>s = %1 m</source>
-        <translation>s = %1 m</translation>
-    </message>
-    <message>
-        <source>x = %1 m, y = %2 m</source>
-        <translation>x = %1 m, y = %2 m</translation>
-    </message>
-    <message>
-        <source>φ = %1 rad (%2°)</source>
-        <translation>φ = %1 rad (%2°)</translation>
-    </message>
-    <message>
-        <source>κ = %1 1/m, ρ = %2 m</source>
-        <translation>κ = %1 1/m, ρ = %2 m</translation>
-    </message>
-    <message>
-        <source>Ψ = %1 rad (%2°)</source>
-        <translation>Ψ = %1 rad (%2°)</translation>
-    </message>
     <message>
         <source>Scenes and lectures (*.json);;All files (*)</source>
         <translation>Cenas e aulas (*.json);;Todos os arquivos (*)</translation>
@@ -2131,6 +2072,10 @@ realimentação: %2</translation>
         <translation>Aula: %1</translation>
     </message>
     <message>
+        <source>Lecture: %1%2</source>
+        <translation>Aula: %1%2</translation>
+    </message>
+    <message>
         <source>Notes (%1)</source>
         <translation>Notas (%1)</translation>
     </message>
@@ -2186,9 +2131,64 @@ realimentação: %2</translation>
         <source>The lecture has unsaved changes. Save them?</source>
         <translation>A aula tem alterações não salvas. Salvá-las?</translation>
     </message>
+</context>
+<context>
+    <name>chaplygin::ui::MeasureTool</name>
     <message>
-        <source>Lecture: %1%2</source>
-        <translation>Aula: %1%2</translation>
+        <source>%1 m at %2°</source>
+        <translation>%1 m a %2°</translation>
+    </message>
+    <message>
+        <source>angle %1°</source>
+        <translation>ângulo %1°</translation>
+    </message>
+    <message>
+        <source>%1° from the heading</source>
+        <translation>%1° a partir do rumo</translation>
+    </message>
+    <message>
+        <source>Path (controlled body)</source>
+        <translation>Caminho (corpo controlado)</translation>
+    </message>
+    <message>
+        <source>Free body&apos;s trail</source>
+        <translation>Rastro do corpo livre</translation>
+    </message>
+    <message>
+        <source>Vakonomic body&apos;s trail</source>
+        <translation>Rastro do corpo vakonômico</translation>
+    </message>
+    <message>
+        <source>Open-loop body&apos;s trail</source>
+        <translation>Rastro do corpo em malha aberta</translation>
+    </message>
+    <message>
+        <source>Feedback body&apos;s trail</source>
+        <translation>Rastro do corpo com realimentação</translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1 s</translation>
+    </message>
+    <message>
+        <source>s = %1 m</source>
+        <translation>s = %1 m</translation>
+    </message>
+    <message>
+        <source>x = %1 m, y = %2 m</source>
+        <translation>x = %1 m, y = %2 m</translation>
+    </message>
+    <message>
+        <source>φ = %1 rad (%2°)</source>
+        <translation>φ = %1 rad (%2°)</translation>
+    </message>
+    <message>
+        <source>κ = %1 1/m, ρ = %2 m</source>
+        <translation>κ = %1 1/m, ρ = %2 m</translation>
+    </message>
+    <message>
+        <source>Ψ = %1 rad (%2°)</source>
+        <translation>Ψ = %1 rad (%2°)</translation>
     </message>
 </context>
 <context>
