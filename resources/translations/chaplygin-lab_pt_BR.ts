@@ -2888,6 +2888,10 @@ O que os estudantes devem observar…</translation>
         <source>Plan: drag the target&apos;s dot or its heading&apos;s handle (Shift snaps), or the start; click a motion to choose it</source>
         <translation>Plano: arraste o ponto do alvo ou a alça de sua direção (Shift ajusta à grade), ou o início; clique num movimento para escolhê-lo</translation>
     </message>
+    <message>
+        <source>a body too large to draw at this zoom</source>
+        <translation>um corpo grande demais para desenhar neste zoom</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::SceneDocument</name>

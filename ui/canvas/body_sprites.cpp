@@ -11,7 +11,10 @@ namespace {
 
 constexpr std::size_t kSprites = 6;       // controlled, free and vakonomic, with room to spare
 constexpr double kLargestSpritePx = 1536; // larger bodies are drawn directly
-constexpr double kBandDevicePx = 64;      // rows of a turned image drawn at once
+// a body larger still is not drawn: Qt flattens an outline's whole length, seconds at 10^9 px
+// (a body a metre or two long at the zoom range's end, 10^5 px/m, is some 10^5 px)
+constexpr double kLargestBodyPx = 4e6;
+constexpr double kBandDevicePx = 64; // rows of a turned image drawn at once
 constexpr int kMostBands = 64;
 
 // the radius [px] around P that holds the body and its pens (the widest is 4 px, scaled)
@@ -67,7 +70,7 @@ const BodySprites::Sprite* BodySprites::find(const Key& key, const SystemSpec& s
     return &slot;
 }
 
-void BodySprites::paint(QPainter& painter, const QTransform& world, double pixelsPerMetre,
+bool BodySprites::paint(QPainter& painter, const QTransform& world, double pixelsPerMetre,
                         const SystemSpec& spec, const DerivedSystem& derived, const BodyPose& pose,
                         const QColor& color, bool ghost, const BodyLook& look) {
     Key key{spec,           derived.a,
@@ -79,13 +82,17 @@ void BodySprites::paint(QPainter& painter, const QTransform& world, double pixel
                                    std::isfinite(pose.phi) && pixelsPerMetre > 0
                                ? find(key, spec, derived, color, look)
                                : nullptr;
-    painter.save();
     if (!sprite) {
+        const QRectF bounds = pixelBounds(world, pixelsPerMetre, spec, derived, pose, look);
+        if (!(std::max(bounds.width(), bounds.height()) <= kLargestBodyPx))
+            return false;
+        painter.save();
         painter.setTransform(world);
         paintBody(painter, spec, derived, pose, color, ghost, look);
         painter.restore();
-        return;
+        return true;
     }
+    painter.save();
     // the turned image's rows are cut at the body's box whatever the repainted region, so
     // that a partial repaint resamples them as a full one does; only what the painter may
     // change (a body far off the view is not drawn: its box in int pixels could overflow)
@@ -96,7 +103,7 @@ void BodySprites::paint(QPainter& painter, const QTransform& world, double pixel
                           .toAlignedRect();
     if (box.isEmpty()) {
         painter.restore();
-        return;
+        return true;
     }
     const QTransform base = painter.transform();
     // image pixels -> the body's frame [m] -> the world -> the widget
@@ -126,6 +133,7 @@ void BodySprites::paint(QPainter& painter, const QTransform& world, double pixel
         painter.drawImage(QPointF(0, 0), sprite->image);
     }
     painter.restore();
+    return true;
 }
 
 } // namespace chaplygin::ui

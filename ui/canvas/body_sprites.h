@@ -16,7 +16,8 @@ namespace chaplygin::ui {
 class BodySprites {
   public:
     /// Draws the body at pose; world maps metres to widget pixels (scale pixelsPerMetre, y up).
-    void paint(QPainter& painter, const QTransform& world, double pixelsPerMetre,
+    /// False when the body is too large at this zoom to be drawn (over 4·10^6 px): it is not.
+    bool paint(QPainter& painter, const QTransform& world, double pixelsPerMetre,
                const SystemSpec& spec, const DerivedSystem& derived, const BodyPose& pose,
                const QColor& color, bool ghost, const BodyLook& look);
 

@@ -254,7 +254,8 @@ class SceneCanvas : public QWidget {
     void paintLegend(QPainter& p) const;
     /// The legend's strip, from a layer made once per size, style and shown bodies.
     void paintLegendLayer(QPainter& p);
-    void paintTimeReadout(QPainter& p, double t, double tEnd) const;
+    /// bodiesDrawn false: a body was too large to draw at this zoom, which the read-out says.
+    void paintTimeReadout(QPainter& p, double t, double tEnd, bool bodiesDrawn = true) const;
     /// Plan mode: the chosen motion and how to use the tool, under the time line.
     void paintPlanReadout(QPainter& p) const;
     /// The readout's height [px] (0 outside plan mode): a fit keeps the scene below it.

@@ -330,9 +330,10 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         m_vectors.paintScaleBars(p, solution, m_document->scene().vectors, m_view.scale(),
                                  drawingArea(), e->region());
         const std::vector<DrawnBody> bodies = drawnBodies(*now);
+        bool bodiesDrawn = true;
         for (auto body = bodies.rbegin(); body != bodies.rend(); ++body)
-            m_bodies.paint(p, world, m_view.scale(), spec, solution->system(), body->pose,
-                           body->colour, body->ghost, look);
+            bodiesDrawn &= m_bodies.paint(p, world, m_view.scale(), spec, solution->system(),
+                                          body->pose, body->colour, body->ghost, look);
         paintPathOverBodies(p, *now);
         // the arrows end at the scene's edge, never over the legend under it
         m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform());
@@ -343,9 +344,9 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         const int played = m_planMode && m_planTool->playTime() >= 0 ? m_planTool->chosen() : -1;
         if (played >= 0)
             paintTimeReadout(p, m_planTool->playTime(),
-                             m_planTool->planned().geodesics[std::size_t(played)].t);
+                             m_planTool->planned().geodesics[std::size_t(played)].t, bodiesDrawn);
         else
-            paintTimeReadout(p, m_time, solution->tEnd());
+            paintTimeReadout(p, m_time, solution->tEnd(), bodiesDrawn);
         m_movingPainted = movingBounds(*solution, *now, m_time);
     } else {
         m_movingPainted = {};
@@ -516,7 +517,7 @@ void drawHaloText(QPainter& p, const QRectF& box, int flags, const QString& text
 
 } // namespace
 
-void SceneCanvas::paintTimeReadout(QPainter& p, double t, double tEnd) const {
+void SceneCanvas::paintTimeReadout(QPainter& p, double t, double tEnd, bool bodiesDrawn) const {
     QFont f = font();
     const double halo = std::max(1.0, std::round(m_look.style.lineScale));
     if (m_look.style.largeTime) {
@@ -544,10 +545,13 @@ void SceneCanvas::paintTimeReadout(QPainter& p, double t, double tEnd) const {
                              .arg(m_view.scale(), 0, 'g', 3);
     const QString time =
         tr("t = %1 s").arg(t, 0, 'f', 2) + QLatin1Char(' ') + tr("of %1 s").arg(tEnd, 0, 'f', 2);
-    // said, not hidden: a curve too dense for a frame at this zoom ends where its budget did
-    const QString part = m_curves.truncated()
-                             ? QStringLiteral("    ") + tr("curves drawn in part at this zoom")
-                             : QString();
+    // said, not hidden: a curve too dense for a frame at this zoom ends where its budget did,
+    // and a body larger than BodySprites draws is left out
+    QString part = m_curves.truncated()
+                       ? QStringLiteral("    ") + tr("curves drawn in part at this zoom")
+                       : QString();
+    if (!bodiesDrawn)
+        part += QStringLiteral("    ") + tr("a body too large to draw at this zoom");
     // on a narrow canvas the longest form that ends before the scale bar's label
     const double room = scaleBarLeft() - 8 - 12 * m_look.style.lineScale;
     const QString readout = fittingLegendText(
