@@ -2,6 +2,7 @@
 
 #include "common/atomic_file.h"
 #include "common/input_error.h"
+#include "scene/json_file_shape.h"
 #include "scene/scene_json.h"
 
 #include <nlohmann/json.hpp>
@@ -21,36 +22,7 @@ constexpr int kMaxNesting = 34;
 }
 
 void checkShape(const std::string& text) {
-    if (text.empty())
-        bad("", "the file is empty");
-    if (text.size() > kMaxLectureFileBytes)
-        bad("", "the file is " + std::to_string(text.size()) + " bytes; a lecture is at most " +
-                    std::to_string(kMaxLectureFileBytes) + " bytes");
-    if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF &&
-        static_cast<unsigned char>(text[1]) == 0xBB && static_cast<unsigned char>(text[2]) == 0xBF)
-        bad("", "the file starts with a UTF-8 byte-order mark; save it as plain UTF-8");
-    int depth = 0;
-    bool inString = false;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const char c = text[i];
-        if (c == '\0')
-            bad("",
-                "the file contains a NUL byte at offset " + std::to_string(i) + " (binary data?)");
-        if (inString) {
-            if (c == '\\')
-                ++i;
-            else if (c == '"')
-                inString = false;
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '{' || c == '[') {
-            if (++depth > kMaxNesting)
-                bad("", "nested deeper than " + std::to_string(kMaxNesting) + " levels at offset " +
-                            std::to_string(i));
-        } else if (c == '}' || c == ']') {
-            --depth;
-        }
-    }
+    checkJsonFileShape(text, "lecture file", "a lecture", kMaxLectureFileBytes, kMaxNesting);
 }
 
 json parse(const std::string& text) {

@@ -5,8 +5,8 @@
 #include "plots/flat_plot.h"
 #include "plots/pinned_plots.h"
 #include "plots/plot_context_menu.h"
-#include "plots/time_axes.h"
 #include "plots/plot_crosshair.h"
+#include "plots/time_axes.h"
 
 #include <QAction>
 #include <QGridLayout>
