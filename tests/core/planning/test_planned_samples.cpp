@@ -5,6 +5,7 @@
 // a != 0, b != 1, v_T != 1 and a start away from the origin.
 #include "planning/planned_samples.h"
 
+#include "free_knife_rk4.h"
 #include "planning_reference.h"
 #include "systems/system_parameters.h"
 
@@ -16,35 +17,6 @@
 
 namespace chaplygin {
 namespace {
-
-struct FreeKnife {
-    double x, y, phi, sdot, phidot;
-};
-
-// the free sleigh, sddot = a phidot^2, phiddot = -a sdot phidot / b^2, x' = sdot cos phi,
-// y' = sdot sin phi (paper (D12)-(D15)), by classical RK4 in n steps to t
-FreeKnife integrateFree(FreeKnife k, double a, double b, double t, int n) {
-    auto rate = [&](const FreeKnife& s) {
-        return FreeKnife{s.sdot * std::cos(s.phi), s.sdot * std::sin(s.phi), s.phidot,
-                         a * s.phidot * s.phidot, -a * s.sdot * s.phidot / (b * b)};
-    };
-    auto step = [](const FreeKnife& s, const FreeKnife& d, double h) {
-        return FreeKnife{s.x + h * d.x, s.y + h * d.y, s.phi + h * d.phi, s.sdot + h * d.sdot,
-                         s.phidot + h * d.phidot};
-    };
-    const double h = t / n;
-    for (int i = 0; i < n; ++i) {
-        const FreeKnife k1 = rate(k), k2 = rate(step(k, k1, h / 2)), k3 = rate(step(k, k2, h / 2)),
-                        k4 = rate(step(k, k3, h));
-        k = step(k,
-                 FreeKnife{k1.x + 2 * k2.x + 2 * k3.x + k4.x, k1.y + 2 * k2.y + 2 * k3.y + k4.y,
-                           k1.phi + 2 * k2.phi + 2 * k3.phi + k4.phi,
-                           k1.sdot + 2 * k2.sdot + 2 * k3.sdot + k4.sdot,
-                           k1.phidot + 2 * k2.phidot + 2 * k3.phidot + k4.phidot},
-                 h / 6);
-    }
-    return k;
-}
 
 TEST(PlannedSamples, TheBodyFollowsItsIntegrationAndTheGhostStartsWithIt) {
     PlanRequest r;
@@ -76,10 +48,11 @@ TEST(PlannedSamples, TheBodyFollowsItsIntegrationAndTheGhostStartsWithIt) {
                 EXPECT_NEAR(s.vakonomic.chi, s.vakonomic.psi - r.system.a / b * s.vakonomic.phi,
                             1e-12);
                 EXPECT_NEAR(s.vakonomic.energy, T0, 1e-12 * T0);
-                const FreeKnife ghost =
-                    integrateFree({r.from.x, r.from.y, r.from.phi, r.vT * std::sin(g.psi0),
-                                   r.vT * std::cos(g.psi0) / b},
-                                  r.system.a, b, s.t, 20000);
+                const reference::FreeKnife ghost =
+                    reference::integrateFree({r.from.x, r.from.y, r.from.phi,
+                                              r.vT * std::sin(g.psi0), r.vT * std::cos(g.psi0) / b},
+                                             r.system.a, b, s.t, 20000)
+                        .back();
                 EXPECT_LT(test::poseError({s.free.x, s.free.y, s.free.phi},
                                           {ghost.x, ghost.y, ghost.phi}, b),
                           1e-10)

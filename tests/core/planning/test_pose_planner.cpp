@@ -294,8 +294,9 @@ TEST(PosePlanner, NextToTheStartOnTheFoldOfTheLoop) {
         EXPECT_NEAR(best[0].psi0, ref.psi0, 2e-12);
         EXPECT_NEAR(best[0].psidot0, ref.psidot0, 1e-12);
         const auto s = test::leastTimeByShooting(ref.to.x, ref.to.y, ref.to.phi, 600, 11);
-        if (s.converged > 0)
+        if (s.converged > 0) {
             EXPECT_LE(best[0].t, s.t + 1e-9);
+        }
         worstEndError(r, plan);
         PlanRequest fast = r;
         fast.optimalOnly = true;

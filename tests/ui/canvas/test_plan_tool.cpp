@@ -8,6 +8,7 @@
 #include "common/input_error.h"
 #include "document/plot_series.h"
 #include "document/scene_document.h"
+#include "free_knife_rk4.h"
 #include "gui_test_support.h"
 #include "panels/accuracy_readout.h"
 #include "plots/plots_panel.h"
@@ -73,36 +74,6 @@ std::vector<Knife> integrateKnife(Knife k, double b, double v, double t, int n) 
                   k.phi + h / 6 * (k1.phi + 2 * k2.phi + 2 * k3.phi + k4.phi),
                   k.psi + h / 6 * (k1.psi + 2 * k2.psi + 2 * k3.psi + k4.psi),
                   k.lambda + h / 6 * (k1.lambda + 2 * k2.lambda + 2 * k3.lambda + k4.lambda)};
-        out.push_back(k);
-    }
-    return out;
-}
-
-struct FreeKnife {
-    double x, y, phi, sdot, phidot;
-};
-
-// the free (Lagrange-d'Alembert) sleigh, sddot = a phidot^2, phiddot = -a sdot phidot / b^2,
-// x' = sdot cos phi, y' = sdot sin phi (paper (D12)-(D15)), by classical RK4 in n steps to t
-std::vector<FreeKnife> integrateFree(FreeKnife k, double a, double b, double t, int n) {
-    auto rate = [&](const FreeKnife& s) {
-        return FreeKnife{s.sdot * std::cos(s.phi), s.sdot * std::sin(s.phi), s.phidot,
-                         a * s.phidot * s.phidot, -a * s.sdot * s.phidot / (b * b)};
-    };
-    auto step = [](const FreeKnife& s, const FreeKnife& d, double h) {
-        return FreeKnife{s.x + h * d.x, s.y + h * d.y, s.phi + h * d.phi, s.sdot + h * d.sdot,
-                         s.phidot + h * d.phidot};
-    };
-    std::vector<FreeKnife> out{k};
-    const double h = t / n;
-    for (int i = 0; i < n; ++i) {
-        const FreeKnife k1 = rate(k), k2 = rate(step(k, k1, h / 2)), k3 = rate(step(k, k2, h / 2)),
-                        k4 = rate(step(k, k3, h));
-        auto mix = [&](double FreeKnife::*f) {
-            return k.*f + h / 6 * (k1.*f + 2 * k2.*f + 2 * k3.*f + k4.*f);
-        };
-        k = FreeKnife{mix(&FreeKnife::x), mix(&FreeKnife::y), mix(&FreeKnife::phi),
-                      mix(&FreeKnife::sdot), mix(&FreeKnife::phidot)};
         out.push_back(k);
     }
     return out;
@@ -427,8 +398,8 @@ void TestPlanTool::thePlotsAndTheAccuracyDockShowTheChosenMotion() {
         QVERIFY(n >= 100);
         const int sub = 40, steps = (n - 1) * sub;
         const auto knife = integrateKnife({0, 0, 0, g.psi0, g.psidot0}, b, v, g.t, steps);
-        const auto ghost = integrateFree({0, 0, 0, v * std::sin(g.psi0), v * std::cos(g.psi0) / b},
-                                         a, b, g.t, steps);
+        const auto ghost = reference::integrateFree(
+            {0, 0, 0, v * std::sin(g.psi0), v * std::cos(g.psi0) / b}, a, b, g.t, steps);
         double worst[4][2] = {};
         for (int kind = 0; kind < 4; ++kind) {
             // no controlled body: the scene's curves are gone
@@ -443,7 +414,7 @@ void TestPlanTool::thePlotsAndTheAccuracyDockShowTheChosenMotion() {
                     const QCPGraphData d = *graph->data()->at(i);
                     QVERIFY(std::abs(d.key - g.t * i / (n - 1)) <= 1e-12 * g.t);
                     const Knife& k = knife[std::size_t(i * sub)];
-                    const FreeKnife& f = ghost[std::size_t(i * sub)];
+                    const reference::FreeKnife& f = ghost[std::size_t(i * sub)];
                     const double fpsi = std::atan2(f.sdot, b * f.phidot);
                     double miss = 0;
                     switch (kind) {
