@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
 
 namespace chaplygin::ui {
 
@@ -25,6 +28,44 @@ double radiusPx(double pixelsPerMetre, const SystemSpec& spec, const DerivedSyst
     if (look.display == BodyDisplay::Marker) // knife 1.3 r, centre of mass at 2 r + 0.45 r
         return 2.5 * kMarkerRadiusPx * lineScale + pad;
     return bodyExtent(spec, derived) * pixelsPerMetre + pad;
+}
+
+// The box [logical px of the image] paintBody may cover: the body's box with its pens (the
+// whole image for a marker, whose size is in pixels)
+QRectF inkInImage(double centre, double pixelsPerMetre, const SystemSpec& spec,
+                  const DerivedSystem& derived, const BodyLook& look) {
+    const QRectF whole(0, 0, 2 * centre, 2 * centre);
+    if (look.display == BodyDisplay::Marker)
+        return whole;
+    const double pad = 4 + 3 * std::clamp(look.lineScale, 0.5, 4.0);
+    const QRectF body = bodyBounds(spec, derived, {});
+    // y up in the body's frame, down in the image
+    return QRectF(centre + body.left() * pixelsPerMetre - pad,
+                  centre - body.bottom() * pixelsPerMetre - pad,
+                  body.width() * pixelsPerMetre + 2 * pad, body.height() * pixelsPerMetre + 2 * pad)
+        .intersected(whole);
+}
+
+// The columns [px] the convex polygon q covers between the rows top and bottom (none when it
+// does not reach them)
+std::optional<std::pair<double, double>> columnsWithin(const QPolygonF& q, double top,
+                                                       double bottom) {
+    double left = std::numeric_limits<double>::infinity(), right = -left;
+    auto take = [&](double x) {
+        left = std::min(left, x);
+        right = std::max(right, x);
+    };
+    for (qsizetype i = 0; i < q.size(); ++i) {
+        const QPointF a = q[i], b = q[(i + 1) % q.size()];
+        if (a.y() >= top && a.y() <= bottom)
+            take(a.x());
+        for (double row : {top, bottom})
+            if ((a.y() - row) * (b.y() - row) < 0)
+                take(a.x() + (b.x() - a.x()) * (row - a.y()) / (b.y() - a.y()));
+    }
+    if (!(left <= right))
+        return std::nullopt;
+    return std::pair{left, right};
 }
 
 } // namespace
@@ -49,6 +90,7 @@ const BodySprites::Sprite* BodySprites::find(const Key& key, const SystemSpec& s
     Sprite s;
     s.key = key;
     s.centre = centre;
+    s.ink = inkInImage(centre, key.pixelsPerMetre, spec, derived, look);
     int side = int(std::ceil(2 * centre * key.dpr));
     s.image = QImage(side, side, QImage::Format_ARGB32_Premultiplied);
     s.image.setDevicePixelRatio(key.dpr);
@@ -123,13 +165,24 @@ bool BodySprites::paint(QPainter& painter, const QTransform& world, double pixel
         band = box.height();
     const bool clipped = painter.hasClipping();
     const QRegion clip = clipped ? painter.clipRegion() : QRegion();
+    const QTransform place = toBody * pose2d * world;
+    // the turned box of the body's ink: a band resamples only the columns it crosses (and two
+    // on each side, where the smooth turn reaches), not the transparent rest of the image
+    const QPolygonF ink = place.map(QPolygonF(sprite->ink));
     for (int top = box.top(); top <= box.bottom(); top += band) {
+        const int rows = std::min(band, box.bottom() + 1 - top);
+        const auto columns = columnsWithin(ink, top - 2, top + rows + 2);
+        if (!columns)
+            continue;
+        const int left = std::max(box.left(), int(std::floor(columns->first)) - 2);
+        const int right = std::min(box.right(), int(std::ceil(columns->second)) + 2);
+        if (right < left)
+            continue;
         painter.setTransform(base);
-        painter.setClipRect(
-            QRect(box.left(), top, box.width(), std::min(band, box.bottom() + 1 - top)));
+        painter.setClipRect(QRect(left, top, right + 1 - left, rows));
         if (clipped)
             painter.setClipRegion(clip, Qt::IntersectClip);
-        painter.setTransform(toBody * pose2d * world);
+        painter.setTransform(place);
         painter.drawImage(QPointF(0, 0), sprite->image);
     }
     painter.restore();

@@ -42,6 +42,7 @@ class BodySprites {
         Key key;
         QImage image;
         double centre = 0; ///< P in the image [logical px from its corner]
+        QRectF ink;        ///< what paintBody may cover, pens included [logical px]
     };
     const Sprite* find(const Key& key, const SystemSpec& spec, const DerivedSystem& derived,
                        const QColor& color, const BodyLook& look);

@@ -281,9 +281,10 @@ class SceneCanvas : public QWidget {
     void updateMoving(double from, QPointF centre);
     /// Whether the static layer is the world layer shifted with the followed body.
     bool followsWithWorldLayer() const;
-    /// The box [px] of everything that moves drawn at time t, with the trails' vertices
-    /// after time `from`.
-    QRect movingBounds(const Solution& solution, const MotionSample& now, double from) const;
+    /// The boxes [px] of everything that moves drawn at time t, each body, arrow and trail's
+    /// end its own (a frame repaints them, not the box around them all), with the trails'
+    /// vertices after time `from`.
+    QRegion movingBounds(const Solution& solution, const MotionSample& now, double from) const;
     /// The vectors' scale bars in the corner of the drawing area the shown bodies cross least
     /// over the run (the bottom right when none is crossed less): chosen again when the motion,
     /// the zoom, the area or the view's place changes.
@@ -326,7 +327,7 @@ class SceneCanvas : public QWidget {
         QRectF box;                   // [m]
     };
     mutable PathBounds m_pathBounds;
-    QRect m_movingPainted; // the box of what moves, as last painted
+    std::optional<QRegion> m_movingPainted; // the boxes of what moves, as last painted
     LayerCache m_layers;
     bool m_pathOverBodiesFromLayer = false;
     VectorLayer m_vectors;

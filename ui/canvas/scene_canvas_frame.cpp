@@ -111,11 +111,26 @@ std::vector<QRectF> SceneCanvas::trailEndsBounds(const MotionSample& now, double
     return boxes;
 }
 
-QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& now,
-                                double from) const {
+QRegion SceneCanvas::movingBounds(const Solution& solution, const MotionSample& now,
+                                  double from) const {
     const QTransform world = worldTransform();
-    QRectF box;
-    auto add = [&](const QRectF& r) { box = box.isNull() ? r : box.united(r); };
+    const QRectF widget = QRectF(rect()).adjusted(-4, -4, 4, 4);
+    QRegion region;
+    bool finite = true;
+    auto add = [&](const QRectF& r) {
+        if (r.isNull())
+            return;
+        // only the widget is painted: a body far outside the view (a wild zoom) must not
+        // overflow int
+        if (!std::isfinite(r.x()) || !std::isfinite(r.y()) || !std::isfinite(r.width()) ||
+            !std::isfinite(r.height())) {
+            finite = false;
+            return;
+        }
+        const QRectF seen = r.intersected(widget);
+        if (!seen.isEmpty())
+            region += seen.toAlignedRect().adjusted(-2, -2, 2, 2);
+    };
     for (const QRectF& r : trailEndsBounds(now, from))
         add(r);
     const SystemSpec& spec = solution.scene().system;
@@ -123,14 +138,10 @@ QRect SceneCanvas::movingBounds(const Solution& solution, const MotionSample& no
     for (const DrawnBody& body : drawnBodies(now))
         add(BodySprites::pixelBounds(world, m_view.scale(), spec, solution.system(), body.pose,
                                      look));
-    add(m_vectors.bounds(m_document->solution(), m_document->scene().vectors, now, world));
-    // only the widget is painted: a body far outside the view (a wild zoom) must not overflow int
-    if (!std::isfinite(box.x()) || !std::isfinite(box.y()) || !std::isfinite(box.width()) ||
-        !std::isfinite(box.height()))
-        return rect();
-    return box.intersected(QRectF(rect()).adjusted(-4, -4, 4, 4))
-        .toAlignedRect()
-        .adjusted(-2, -2, 2, 2);
+    for (const QRectF& r :
+         m_vectors.bounds(m_document->solution(), m_document->scene().vectors, now, world))
+        add(r);
+    return finite ? region : QRegion(rect());
 }
 
 void SceneCanvas::placeScaleBars(const Solution& solution) {
@@ -219,9 +230,8 @@ void SceneCanvas::updateMoving(double from, QPointF centre) {
     // whole pixels), the static layer, the pins (their runs move too), a stroke or a vertex
     // being drawn, a trail that shrinks
     const auto& solution = m_document->solution();
-    bool steady = solution && from <= m_time && !m_movingPainted.isNull() &&
-                  !m_drawTool->active() && !m_editTool->active() &&
-                  m_document->pins()->count() == 0;
+    bool steady = solution && from <= m_time && m_movingPainted && !m_drawTool->active() &&
+                  !m_editTool->active() && m_document->pins()->count() == 0;
     QPoint shift; // [px] how far the scene's pixels move
     if (steady && !m_view.follows()) {
         steady = m_layers.hasBackground(layerKey());
@@ -247,11 +257,11 @@ void SceneCanvas::updateMoving(double from, QPointF centre) {
         const QRect area = drawingArea().toAlignedRect();
         const QRect moving = area.adjusted(0, 3, 0, -3);
         scroll(shift.x(), shift.y(), moving);
-        m_movingPainted.translate(shift);
+        m_movingPainted->translate(shift);
         dirty += QRegion(area) - moving;
         dirty += m_vectors.scaleBarsBounds(m_document->scene().vectors, drawingArea());
     }
-    dirty += m_movingPainted;
+    dirty += *m_movingPainted;
     const MotionSample now = solution->at(m_time);
     dirty += movingBounds(*solution, now, from);
     // the edge markers where they were (and where scrolling moved them) and where they go

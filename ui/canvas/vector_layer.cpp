@@ -172,15 +172,15 @@ QRect VectorLayer::scaleBarsBounds(const VectorOverlay& overlay, const QRectF& a
                     : QRect();
 }
 
-QRectF VectorLayer::bounds(const std::shared_ptr<const Solution>& solution,
-                           const VectorOverlay& overlay, const MotionSample& now,
-                           const QTransform& world) const {
+std::vector<QRectF> VectorLayer::bounds(const std::shared_ptr<const Solution>& solution,
+                                        const VectorOverlay& overlay, const MotionSample& now,
+                                        const QTransform& world) const {
     VectorShapes free, controlled;
     VectorScales k{};
     if (!shapes(solution, overlay, now, world, free, controlled, k))
         return {};
-    QRectF box;
-    auto add = [&](QRectF r) { box = box.isNull() ? r : box.united(r); };
+    std::vector<QRectF> boxes;
+    auto add = [&](QRectF r) { boxes.push_back(r); };
     const double label = kLabelPx * m_lineScale;
     for (const VectorShapes* s : {&free, &controlled}) {
         for (const ArrowShape& a : s->arrows)
@@ -190,7 +190,7 @@ QRectF VectorLayer::bounds(const std::shared_ptr<const Solution>& solution,
                     .adjusted(-c.radius - label, -c.radius - label, c.radius + label,
                               c.radius + label + 20 * m_lineScale));
     }
-    return box;
+    return boxes;
 }
 
 } // namespace chaplygin::ui

@@ -38,10 +38,11 @@ class VectorLayer {
     void paint(QPainter& painter, const std::shared_ptr<const Solution>& solution,
                const VectorOverlay& overlay, const MotionSample& now, const QTransform& world);
 
-    /// The box [px] of the arrows, arcs and labels paint draws for now (empty when none); the
-    /// scale bars stay put.
-    QRectF bounds(const std::shared_ptr<const Solution>& solution, const VectorOverlay& overlay,
-                  const MotionSample& now, const QTransform& world) const;
+    /// The boxes [px] of the arrows, arcs and labels paint draws for now, one each (none when
+    /// none are drawn); the scale bars stay put.
+    std::vector<QRectF> bounds(const std::shared_ptr<const Solution>& solution,
+                               const VectorOverlay& overlay, const MotionSample& now,
+                               const QTransform& world) const;
 
     /// The box [px] of the scale bars paint draws in the corner of area (empty when none).
     QRect scaleBarsBounds(const VectorOverlay& overlay, const QRectF& area) const;

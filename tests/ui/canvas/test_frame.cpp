@@ -162,6 +162,7 @@ class TestFrame : public QObject {
 
     void timeReadoutFitsWithoutLayingOutTheWindow();
     void bodySpritesDrawWhatDirectDrawingDraws();
+    void turnedSpritesReachEveryPixelDirectDrawingInks();
     void framesRepaintWhatMovesAsAFullRepaintWould();
     void followingShiftsTheStaticLayerAsRedrawingWould();
     void fastFramesAfterZoomAndPanRepaintAsAFullRepaintWould();
@@ -259,6 +260,88 @@ void TestFrame::bodySpritesDrawWhatDirectDrawingDraws() {
     QImage direct = drawBody(nullptr, sleigh, pose, {}, 2000, false);
     QImage cached = drawBody(&sprites, sleigh, pose, {}, 2000, false);
     QCOMPARE(cached, direct);
+}
+
+namespace {
+
+// the box of the pixels with ink over 8 of 765 (white is none)
+QRect inkedBox(const QImage& image) {
+    QRect box;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QRgb p = image.pixel(x, y);
+            if (765 - qRed(p) - qGreen(p) - qBlue(p) > 8)
+                box = box.united(QRect(x, y, 1, 1));
+        }
+    return box;
+}
+
+QImage drawBodyAt(BodySprites* sprites, const SystemSpec& spec, const BodyPose& pose,
+                  const BodyLook& look, double dpr) {
+    QImage image(int(400 * dpr), int(300 * dpr), QImage::Format_ARGB32_Premultiplied);
+    image.setDevicePixelRatio(dpr);
+    image.fill(Qt::white);
+    QPainter p(&image);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    QTransform world;
+    world.translate(200, 150);
+    world.scale(70, -70);
+    const DerivedSystem derived = deriveSystem(spec);
+    if (sprites) {
+        sprites->paint(p, world, 70, spec, derived, pose, QColor(40, 90, 230), false, look);
+    } else {
+        p.setTransform(world);
+        paintBody(p, spec, derived, pose, QColor(40, 90, 230), false, look);
+    }
+    return image;
+}
+
+} // namespace
+
+void TestFrame::turnedSpritesReachEveryPixelDirectDrawingInks() {
+    // a turned sprite resamples only the columns its body's box crosses: at every heading, with
+    // wide pens and at device pixel ratio 2, its ink reaches as far as direct drawing's on each
+    // side (within the pixel the smooth turn may spread or lose)
+    SystemSpec carriage{SystemKind::Carriage, defaultSystemParams(SystemKind::Carriage)};
+    SystemSpec disk{SystemKind::Disk, defaultSystemParams(SystemKind::Disk)};
+    SystemSpec sleigh;
+    SystemSpec backwards; // the centre of mass behind the knife
+    backwards.params["a"] = -0.8;
+    BodySprites sprites;
+    int cases = 0;
+    for (const SystemSpec& spec : {sleigh, backwards, disk, carriage})
+        for (BodyDisplay display : {BodyDisplay::ToScale, BodyDisplay::Outline})
+            for (double lineScale : {1.0, 2.5})
+                for (double dpr : {1.0, 2.0})
+                    for (int step = 0; step < 24; ++step) {
+                        const BodyPose pose{0.0123, -0.0456, -M_PI + step * M_PI / 12 + 0.01};
+                        const BodyLook look{display, 0.8, lineScale};
+                        const QRect direct = inkedBox(drawBodyAt(nullptr, spec, pose, look, dpr));
+                        const QRect turned = inkedBox(drawBodyAt(&sprites, spec, pose, look, dpr));
+                        QVERIFY(std::max(direct.width(), direct.height()) > 20 * dpr);
+                        const QMargins apart(
+                            direct.left() - turned.left(), direct.top() - turned.top(),
+                            turned.right() - direct.right(), turned.bottom() - direct.bottom());
+                        QVERIFY2(apart.left() >= -1 && apart.top() >= -1 && apart.right() >= -1 &&
+                                     apart.bottom() >= -1 && apart.left() <= 1 &&
+                                     apart.top() <= 1 && apart.right() <= 1 && apart.bottom() <= 1,
+                                 qPrintable(QStringLiteral("system %1 heading %2 dpr %3: "
+                                                           "direct %4,%5 %6x%7, turned %8,%9 "
+                                                           "%10x%11")
+                                                .arg(int(spec.kind))
+                                                .arg(pose.phi)
+                                                .arg(dpr)
+                                                .arg(direct.x())
+                                                .arg(direct.y())
+                                                .arg(direct.width())
+                                                .arg(direct.height())
+                                                .arg(turned.x())
+                                                .arg(turned.y())
+                                                .arg(turned.width())
+                                                .arg(turned.height())));
+                        ++cases;
+                    }
+    QCOMPARE(cases, 768);
 }
 
 void TestFrame::framesRepaintWhatMovesAsAFullRepaintWould() {
