@@ -6,6 +6,8 @@
 
 #include <QApplication>
 #include <QCoreApplication>
+#include <QMenu>
+#include <QMenuBar>
 #include <QMouseEvent>
 #include <QSettings>
 #include <QStandardPaths>
@@ -52,6 +54,16 @@ inline void dragStroke(QWidget* canvas, QPoint from, std::initializer_list<QPoin
         QApplication::sendEvent(canvas, &move);
     }
     QTest::mouseRelease(canvas, Qt::LeftButton, {}, to);
+}
+
+/// The menu bar's item with this text (its mnemonic's ampersand aside), or null.
+inline QAction* menuAction(QMenuBar* bar, const QString& text) {
+    for (QAction* menu : bar->actions())
+        if (menu->menu())
+            for (QAction* a : menu->menu()->actions())
+                if (a->text().remove(QLatin1Char('&')) == text)
+                    return a;
+    return nullptr;
 }
 
 } // namespace chaplygin::ui::test
