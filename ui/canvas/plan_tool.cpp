@@ -371,12 +371,9 @@ void PlanTool::updateTracks() const {
     const double scale = m_view.scale() * dpr;
     const QRectF view =
         widget ? m_view.transform().inverted().mapRect(QRectF(widget->rect())) : QRectF();
-    if (m_tracksOf == m_planId && m_tracksScale == scale && m_tracksSeen == view)
+    if (m_tracks.planId == m_planId && m_tracks.scale == scale && m_tracks.seen == view)
         return;
-    m_tracksOf = m_planId;
-    m_tracksScale = scale;
-    m_tracksSeen = view;
-    m_tracks.clear();
+    m_tracks = {m_planId, scale, view, {}};
     const auto& solution = m_document->solution();
     if (!solution)
         return;
@@ -384,7 +381,7 @@ void PlanTool::updateTracks() const {
     for (const PlannedGeodesic& g : m_planned.geodesics) {
         const VakonomicMotion body(m_request.system, plannedStart(m_request, g));
         FlattenLimits limits{CanvasCurves::kTolerancePx / scale, view};
-        m_tracks.push_back(flattenWithinBudget(
+        m_tracks.curves.push_back(flattenWithinBudget(
             [&](FlattenLimits& l) {
                 return flattenInTime(
                     [&](double t) {
@@ -426,8 +423,8 @@ int PlanTool::motionAt(QPointF pixel) const {
     const double reach = 6 * m_style.lineScale;
     int best = -1;
     double bestDistance = reach;
-    for (std::size_t i = 0; i < m_tracks.size(); ++i) {
-        const auto& points = m_tracks[i].points;
+    for (std::size_t i = 0; i < m_tracks.curves.size(); ++i) {
+        const auto& points = m_tracks.curves[i].points;
         for (std::size_t k = 0; k + 1 < points.size(); ++k) {
             const double d =
                 distanceToSegment(pixel, world.map(points[k]), world.map(points[k + 1]));
@@ -455,11 +452,11 @@ void PlanTool::paint(QPainter& p) const {
     auto isFull = [&](std::size_t i) { return int(i) == choice || m_planned.geodesics[i].optimal; };
     // the faint ones first, the full ones over them
     for (int pass = 0; pass < 2; ++pass) {
-        for (std::size_t i = 0; i < m_tracks.size(); ++i) {
+        for (std::size_t i = 0; i < m_tracks.curves.size(); ++i) {
             if (isFull(i) != (pass == 1))
                 continue;
             QPainterPath track;
-            const auto& points = m_tracks[i].points;
+            const auto& points = m_tracks.curves[i].points;
             if (points.empty())
                 continue;
             track.moveTo(world.map(points[0]));
@@ -499,8 +496,8 @@ void PlanTool::paint(QPainter& p) const {
     const QFontMetricsF metrics(font);
     std::vector<QRectF> placed;
     for (int pass = 1; pass >= 0; --pass) {
-        for (std::size_t i = 0; i < m_tracks.size(); ++i) {
-            const auto& c = m_tracks[i];
+        for (std::size_t i = 0; i < m_tracks.curves.size(); ++i) {
+            const auto& c = m_tracks.curves[i];
             if (c.points.empty() || isFull(i) != (pass == 1))
                 continue;
             const double t = m_planned.geodesics[i].t;

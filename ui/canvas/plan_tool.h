@@ -57,7 +57,7 @@ class PlanTool : public CanvasTool {
     /// pixels within the view (param: time [s]).
     const std::vector<FlatCurve>& tracks() const {
         updateTracks();
-        return m_tracks;
+        return m_tracks.curves;
     }
     /// Where the handles are drawn [px].
     QPointF targetHandle() const;
@@ -133,10 +133,14 @@ class PlanTool : public CanvasTool {
     std::optional<PlanRequest> m_nextRequest; // the newest pose while a plan is under way
     quint64 m_generation = 0;                 // one more at each plan made on this thread
     quint64 m_planId = 0;                     // a new one for each plan made
-    mutable quint64 m_tracksOf = ~quint64(0);
-    mutable double m_tracksScale = 0;
-    mutable QRectF m_tracksSeen;
-    mutable std::vector<FlatCurve> m_tracks;
+    /// The planned motions' knife tracks as last flattened, and for what
+    struct FlattenedTracks {
+        quint64 planId = ~quint64(0);
+        double scale = 0; // [device px/m]
+        QRectF seen;      // the view [m]
+        std::vector<FlatCurve> curves;
+    };
+    mutable FlattenedTracks m_tracks;
     double m_playTime = -1;
     QTimer m_playTimer;
     QElapsedTimer m_playClock;
