@@ -14,7 +14,7 @@ namespace chaplygin::ui {
 
 void installSaveAnnotationsAction(MainWindow* window, QMenu& fileMenu) {
     PenTool* pen = window->canvas()->penTool();
-    QAction* save = fileMenu.addAction(MainWindow::tr("Save a&nnotations with the scene"));
+    QAction* save = fileMenu.addAction(MainWindow::tr("Save anno&tations with the scene"));
     save->setObjectName(QStringLiteral("saveAnnotationsAction"));
     save->setCheckable(true);
     save->setChecked(pen->savesWithScene());
@@ -47,7 +47,7 @@ void installPenActions(MainWindow* window, QMenu& editMenu, QAction& sceneUndo) 
     QObject::connect(canvas, &SceneCanvas::penModeChanged, on, &QAction::setChecked);
     window->timeline()->addAction(on);
 
-    QMenu* marks = editMenu.addMenu(MainWindow::tr("Pen &marks"));
+    QMenu* marks = editMenu.addMenu(MainWindow::tr("Pen mar&ks"));
     marks->setObjectName(QStringLiteral("penMenu"));
     QAction* arrows = marks->addAction(MainWindow::tr("&Arrows (A on the canvas)"));
     arrows->setObjectName(QStringLiteral("penArrowsAction"));
