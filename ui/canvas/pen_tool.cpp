@@ -6,6 +6,7 @@
 
 #include <QLineF>
 #include <QMouseEvent>
+#include <QPaintEngine>
 #include <QPainter>
 #include <QPainterPath>
 #include <QPolygonF>
@@ -201,7 +202,7 @@ void PenTool::paintMark(QPainter& p, const AnnotationMark& mark, const QRectF& a
     for (const auto& point : mark.points)
         line << m_view.toPixel(pointOf(point));
     const QRectF box = line.boundingRect();
-    const double reach = 20 * ls; // an arrow's head beyond its end
+    const double reach = 24 * ls; // an arrow's head and its pen beyond its end
     if (!box.adjusted(-reach, -reach, reach, reach).intersects(area))
         return;
     const QColor colour = colourOf(mark.colour);
@@ -261,7 +262,12 @@ void PenTool::paintMark(QPainter& p, const AnnotationMark& mark, const QRectF& a
 void PenTool::paint(QPainter& p) const {
     if (m_marks.empty() && !m_drawing)
         return;
-    const QRectF area = m_area();
+    QRectF area = m_area();
+    // an animation frame repaints a small region: the marks that cannot reach it are left out
+    if (const QPaintEngine* engine = p.paintEngine(); engine && !engine->systemClip().isEmpty())
+        area &= p.deviceTransform().inverted().mapRect(QRectF(engine->systemClip().boundingRect()));
+    if (area.isEmpty())
+        return;
     p.save();
     p.setClipRect(area, Qt::IntersectClip);
     p.setRenderHint(QPainter::Antialiasing);

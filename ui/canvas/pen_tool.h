@@ -24,7 +24,8 @@ struct CanvasStyle;
 class PenTool : public CanvasTool {
     Q_OBJECT
   public:
-    /// `area`: the drawing area [px], which the marks are drawn within.
+    /// `area`: where the scene is drawn [px] (the drawing area and the time line's band above
+    /// it), which the marks are drawn within.
     PenTool(const CanvasView& view, const CanvasStyle& style, std::function<QRectF()> area,
             QObject* parent);
 

@@ -45,7 +45,7 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
           },
           this)),
       m_penTool(new PenTool(
-          m_view, m_look.style, [this] { return drawingArea(); }, this)),
+          m_view, m_look.style, [this] { return sceneArea(); }, this)),
       m_panTool(new PanTool(m_view, this)) {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
