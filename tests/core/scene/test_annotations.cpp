@@ -1,12 +1,13 @@
 // The pen's marks in the scene file: the round trip (exact doubles), a scene without marks
-// written as before, every bad "annotations" member refused with its JSON path (non-finite
-// numbers, too many marks or points, an unknown colour or kind, an arrow without two points), and
-// the simplification of a freehand stroke against the distances it promises.
+// written as before, a link without them, every bad "annotations" member refused with its JSON
+// path (non-finite numbers, too many marks or points, an unknown colour or kind, an arrow without
+// two points), and the simplification of a freehand stroke against the distances it promises.
 #include "common/input_error.h"
 #include "scene/annotations.h"
 #include "scene/annotations_json.h"
 #include "scene/presets.h"
 #include "scene/scene_json.h"
+#include "scene/scene_link.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -85,6 +86,14 @@ TEST(Annotations, ASceneWithoutMarksIsWrittenAsBefore) {
     EXPECT_EQ(with, json::parse(text));
     // an empty list is read as none
     EXPECT_EQ(refusal(json::array()).first, "");
+}
+
+TEST(Annotations, ALinkHoldsTheSceneWithoutTheMarks) {
+    const Scene marked = sceneWithMarks();
+    Scene plain = marked;
+    plain.annotations.clear();
+    EXPECT_EQ(sceneToLink(marked), sceneToLink(plain));
+    EXPECT_EQ(sceneFromLink(sceneToLink(marked)), plain);
 }
 
 TEST(Annotations, NonFiniteNumbersAreNamed) {
