@@ -4,6 +4,7 @@
 #include "control/control_law.h"
 #include "paths/path_source.h"
 #include "planning/pose_planner.h"
+#include "scene/annotations.h"
 #include "systems/system.h"
 
 #include <optional>
@@ -101,6 +102,9 @@ struct Scene {
     std::string note;              ///< the lecturer's Markdown note (view only)
     std::vector<PinnedRun> pins;   ///< runs kept for comparison, oldest first (view only)
     std::optional<ScenePlan> plan; ///< the Plan tool's target and chosen motion
+    /// The pen's marks over the canvas (view only): in a file saved with File > Save annotations
+    /// with the scene; the window's document keeps them in the pen, never in its scene.
+    std::vector<AnnotationMark> annotations;
 
     bool operator==(const Scene&) const = default;
 };

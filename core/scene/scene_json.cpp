@@ -1,6 +1,7 @@
 #include "scene/scene_json.h"
 
 #include "common/input_error.h"
+#include "scene/annotations_json.h"
 #include "scene/json_file_shape.h"
 #include "scene/lecture.h"
 #include "scene/perturbation.h"
@@ -349,6 +350,8 @@ std::string sceneToJson(const Scene& scene) {
         p["choice"] = scene.plan->choice;
         j["plan"] = p;
     }
+    if (!scene.annotations.empty())
+        j["annotations"] = annotationsToJson(scene.annotations);
     return j.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
@@ -422,6 +425,8 @@ Scene sceneFromJson(const std::string& text) {
     }
     if (auto it = j.find("plan"); it != j.end())
         s.plan = readPlan(*it);
+    if (auto it = j.find("annotations"); it != j.end())
+        s.annotations = annotationsFromJson(*it, "/annotations");
     return s;
 }
 

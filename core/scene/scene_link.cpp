@@ -181,7 +181,10 @@ std::string inflateScene(const std::string& compressed) {
 } // namespace
 
 std::string sceneToLink(const Scene& scene) {
-    const std::string json = sceneToJson(scene);
+    // the pen's marks stay with the file: a link is the scene alone
+    Scene plain = scene;
+    plain.annotations.clear();
+    const std::string json = sceneToJson(plain);
     if (json.size() > kMaxSceneLinkBytes)
         bad("the scene's JSON is " + std::to_string(json.size()) + " bytes; a link holds at most " +
             std::to_string(kMaxSceneLinkBytes) + "; share the scene file instead");

@@ -21,8 +21,10 @@ constexpr std::size_t kMaxSceneLinkChars = 131072;
 /// at most this much memory and the time to inflate it.
 constexpr std::size_t kMaxSceneLinkBytes = 1u << 20;
 
-/// The scene as a link. Throws InputError("scene link") when its JSON is longer than
-/// kMaxSceneLinkBytes or the link longer than kMaxSceneLinkChars (share the file instead).
+/// The scene as a link, without the pen's marks (Scene::annotations): a link of a scene file
+/// saved with them is the link of the scene. Throws InputError("scene link") when its JSON is
+/// longer than kMaxSceneLinkBytes or the link longer than kMaxSceneLinkChars (share the file
+/// instead).
 std::string sceneToLink(const Scene& scene);
 
 /// The scene a link holds. Throws InputError whose where() is "scene link" and whose message

@@ -2131,6 +2131,46 @@ realimentação: %2</translation>
         <source>The lecture has unsaved changes. Save them?</source>
         <translation>A aula tem alterações não salvas. Salvá-las?</translation>
     </message>
+    <message>
+        <source>Save anno&amp;tations with the scene</source>
+        <translation>Salvar as ano&amp;tações com a cena</translation>
+    </message>
+    <message>
+        <source>File &gt; Save also writes the pen&apos;s marks into the scene file; the scene&apos;s link and its computation are unchanged</source>
+        <translation>Arquivo &gt; Salvar escreve também as marcas da caneta no arquivo da cena; o link da cena e o seu cálculo não mudam</translation>
+    </message>
+    <message>
+        <source>P&amp;en (draw over the canvas)</source>
+        <translation>Can&amp;eta (desenhar sobre a tela)</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+D</source>
+        <translation>Ctrl+Shift+D</translation>
+    </message>
+    <message>
+        <source>Pen</source>
+        <translation>Caneta</translation>
+    </message>
+    <message>
+        <source>Pen (P on the canvas): drag to draw over the canvas, Shift+drag for an arrow; C: next colour, A: arrows; Ctrl+Z undoes the last mark, E or Delete clears them all. The marks follow zoom and pan; the scene is not changed</source>
+        <translation>Caneta (P na tela de desenho): arraste para desenhar sobre a tela, Shift+arrastar para uma seta; C: próxima cor, A: setas; Ctrl+Z desfaz a última marca, E ou Delete apaga todas. As marcas acompanham a ampliação e o deslocamento; a cena não muda</translation>
+    </message>
+    <message>
+        <source>Pen mar&amp;ks</source>
+        <translation>Marcas da ca&amp;neta</translation>
+    </message>
+    <message>
+        <source>&amp;Arrows (A on the canvas)</source>
+        <translation>&amp;Setas (A na tela de desenho)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo last mark</source>
+        <translation>&amp;Desfazer a última marca</translation>
+    </message>
+    <message>
+        <source>&amp;Clear marks</source>
+        <translation>&amp;Apagar as marcas</translation>
+    </message>
 </context>
 <context>
     <name>chaplygin::ui::MeasureTool</name>
@@ -2598,6 +2638,25 @@ O que os estudantes devem observar…</translation>
     <message>
         <source>u to</source>
         <translation>u até</translation>
+    </message>
+</context>
+<context>
+    <name>chaplygin::ui::PenTool</name>
+    <message>
+        <source>Blue</source>
+        <translation>Azul</translation>
+    </message>
+    <message>
+        <source>Green</source>
+        <translation>Verde</translation>
+    </message>
+    <message>
+        <source>Black</source>
+        <translation>Preto</translation>
+    </message>
+    <message>
+        <source>Red</source>
+        <translation>Vermelho</translation>
     </message>
 </context>
 <context>

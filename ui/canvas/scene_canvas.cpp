@@ -5,6 +5,7 @@
 #include "canvas/edit_points_tool.h"
 #include "canvas/measure_tool.h"
 #include "canvas/pan_tool.h"
+#include "canvas/pen_tool.h"
 #include "canvas/plan_tool.h"
 #include "document/scene_document.h"
 
@@ -43,6 +44,8 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
                                         &curves(),       drawingArea()};
           },
           this)),
+      m_penTool(new PenTool(
+          m_view, m_look.style, [this] { return sceneArea(); }, this)),
       m_panTool(new PanTool(m_view, this)) {
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
@@ -416,6 +419,7 @@ void SceneCanvas::setDrawMode(bool on) {
     if (on) {
         setPlanMode(false);
         setMeasureMode(false);
+        setPenMode(false);
     }
     setCursor(on ? Qt::CrossCursor : Qt::ArrowCursor);
     update();
@@ -429,6 +433,7 @@ void SceneCanvas::setPlanMode(bool on) {
     m_planTool->stopPlaying();
     if (on) {
         setMeasureMode(false);
+        setPenMode(false);
         m_drawTool->cancel();
         m_editTool->cancel();
         m_planTool->syncFromDocument();
@@ -448,8 +453,10 @@ bool SceneCanvas::measureMode() const {
 void SceneCanvas::setMeasureMode(bool on) {
     if (on == measureMode())
         return;
-    if (on)
+    if (on) {
         setPlanMode(false);
+        setPenMode(false);
+    }
     m_measureTool->setEnabled(on);
     // the probe follows the mouse without a button
     setMouseTracking(on);
@@ -458,11 +465,30 @@ void SceneCanvas::setMeasureMode(bool on) {
     emit measureModeChanged(on);
 }
 
-std::array<CanvasTool*, 6> SceneCanvas::allTools() const {
-    return {m_editTool, m_drawTool, m_planTool, m_measureTool, m_pushTool, m_panTool};
+bool SceneCanvas::penMode() const {
+    return m_penTool->enabled();
+}
+
+void SceneCanvas::setPenMode(bool on) {
+    if (on == penMode())
+        return;
+    if (on) {
+        setPlanMode(false);
+        setMeasureMode(false);
+    }
+    m_penTool->setEnabled(on);
+    updateCursor();
+    update();
+    emit penModeChanged(on);
+}
+
+std::array<CanvasTool*, 7> SceneCanvas::allTools() const {
+    return {m_editTool, m_drawTool, m_planTool, m_measureTool, m_penTool, m_pushTool, m_panTool};
 }
 
 std::vector<CanvasTool*> SceneCanvas::tools() const {
+    if (penMode())
+        return {m_penTool, m_panTool};
     if (measureMode())
         return {m_measureTool, m_panTool};
     if (m_planMode)
@@ -478,7 +504,7 @@ void SceneCanvas::updateCursor() {
             setCursor(tool->cursor());
             return;
         }
-    setCursor(m_drawMode || measureMode() ? Qt::CrossCursor : Qt::ArrowCursor);
+    setCursor(m_drawMode || measureMode() || penMode() ? Qt::CrossCursor : Qt::ArrowCursor);
 }
 
 void SceneCanvas::setShowVakonomic(bool show) {
@@ -615,11 +641,30 @@ void SceneCanvas::keyPressEvent(QKeyEvent* e) {
     case Qt::Key_M:
         setMeasureMode(!measureMode());
         break;
+    case Qt::Key_P:
+        setPenMode(!penMode());
+        break;
+    case Qt::Key_A:
+    case Qt::Key_C:
+    case Qt::Key_E:
+        // the pen's arrows, its next colour, and clearing its marks
+        if (!penMode())
+            QWidget::keyPressEvent(e);
+        else if (e->key() == Qt::Key_A)
+            m_penTool->setKind(m_penTool->kind() == MarkKind::Arrow ? MarkKind::Freehand
+                                                                    : MarkKind::Arrow);
+        else if (e->key() == Qt::Key_C)
+            m_penTool->nextColour();
+        else
+            m_penTool->clear();
+        break;
     case Qt::Key_Escape:
     case Qt::Key_Delete:
     case Qt::Key_Backspace:
-        // forget what was measured
-        if (measureMode())
+        // forget the pen's marks, or what was measured
+        if (penMode() && e->key() == Qt::Key_Delete)
+            m_penTool->clear();
+        else if (measureMode())
             m_measureTool->clear();
         else
             QWidget::keyPressEvent(e);

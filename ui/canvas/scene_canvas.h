@@ -35,6 +35,7 @@ class DrawTool;
 class EditPointsTool;
 class MeasureTool;
 class PanTool;
+class PenTool;
 class PlanTool;
 
 /// The animation canvas: the prescribed path coloured by curvature, the controlled body to scale
@@ -57,6 +58,10 @@ class SceneCanvas : public QWidget {
     /// Measuring); the scene is left unchanged.
     bool measureMode() const;
     MeasureTool* measureTool() const { return m_measureTool; }
+    /// Whether the pen is the mouse's: marks and arrows over the canvas (docs/user-guide.md,
+    /// Drawing over the lesson); the scene is left unchanged.
+    bool penMode() const;
+    PenTool* penTool() const { return m_penTool; }
     /// Whether the genuine vakonomic body (a third body) is drawn.
     bool showsVakonomic() const { return m_look.vakonomic; }
     /// Whether the perturbed bodies are drawn when the scene has a perturbation
@@ -153,6 +158,8 @@ class SceneCanvas : public QWidget {
     void setPlanMode(bool on);
     /// The Measure tool and panning take the mouse (M on the canvas); ends plan mode.
     void setMeasureMode(bool on);
+    /// The pen and panning take the mouse (P on the canvas); ends the Plan and Measure tools.
+    void setPenMode(bool on);
     /// Zooms about the centre; following, the follow zoom (the body stays centred).
     void zoomBy(double factor);
     void setShowVakonomic(bool show);
@@ -169,6 +176,7 @@ class SceneCanvas : public QWidget {
     void followBodyChanged(bool follow);
     void planModeChanged(bool on);
     void measureModeChanged(bool on);
+    void penModeChanged(bool on);
     /// The user dragged the controlled body sideways at time t: a push of pushDy [m] to the
     /// left of its heading (docs/physics.md §9).
     void pushDragged(double t, double pushDy);
@@ -212,8 +220,8 @@ class SceneCanvas : public QWidget {
     /// The tools the mouse reaches in the current mode, in the order they are offered a press.
     std::vector<CanvasTool*> tools() const;
     /// Every tool, in the order of their gestures' priority: editing a point, a stroke, a plan's
-    /// handle, a measurement, a push, panning.
-    std::array<CanvasTool*, 6> allTools() const;
+    /// handle, a measurement, a pen's mark, a push, panning.
+    std::array<CanvasTool*, 7> allTools() const;
     /// After a gesture began or ended: the cursor of the gesture under way, else the mode's.
     void updateCursor();
     /// The path's band, the controlled trail and the knife point P again over the bodies drawn
@@ -321,6 +329,7 @@ class SceneCanvas : public QWidget {
     PushTool* m_pushTool;
     PlanTool* m_planTool;
     MeasureTool* m_measureTool;
+    PenTool* m_penTool;
     PanTool* m_panTool;
     struct PathBounds {
         const Solution* of = nullptr; // the solution box belongs to

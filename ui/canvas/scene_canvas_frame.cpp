@@ -6,6 +6,7 @@
 #include "canvas/edit_points_tool.h"
 #include "canvas/masked_layer.h"
 #include "canvas/measure_tool.h"
+#include "canvas/pen_tool.h"
 #include "canvas/pin_painter.h"
 #include "canvas/plan_tool.h"
 #include "canvas/trail_stroke.h"
@@ -375,6 +376,8 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         m_editTool->paint(p);
         m_drawTool->paint(p);
     }
+    // the pen's marks over the scene
+    m_penTool->paint(p);
     // the ruler, the protractor and the probe over everything, in the widget's font
     p.setFont(font());
     m_measureTool->paint(p);

@@ -81,9 +81,10 @@ class SceneDocument : public QObject {
     /// File > Open: the file's scene as a new document, clean, first in the recent files.
     /// Throws InputError naming the file or the place in it.
     void open(const QString& path);
-    /// File > Save: written atomically, then clean. A scene that does not solve would not open
-    /// again and is refused (InputError); a failed write throws IoError and keeps the old file.
-    void save(const QString& path);
+    /// File > Save: written atomically, then clean, with the pen's marks when given (File > Save
+    /// annotations with the scene). A scene that does not solve would not open again and is
+    /// refused (InputError); a failed write throws IoError and keeps the old file.
+    void save(const QString& path, const std::vector<AnnotationMark>& annotations = {});
     /// File > Export CSV of the current solution; throws IoError.
     void exportCsv(const QString& path) const;
     /// File > Open Recent (empty unless persistent).
@@ -146,6 +147,9 @@ class SceneDocument : public QObject {
     void sceneApplied(const Scene& scene, bool pathChanged);
     void modifiedChanged(bool modified);
     void recentFilesChanged();
+    /// A whole scene came in (a file, a preset, a gallery or lecture scene) with these marks of
+    /// the pen (none for most): the pen shows them; the document's scene holds none.
+    void annotationsLoaded(const std::vector<chaplygin::AnnotationMark>& marks);
 
   private:
     /// A preset or a gallery scene as one undo step that is no modification: the document is

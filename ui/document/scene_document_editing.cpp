@@ -22,7 +22,11 @@ void SceneDocument::apply(const Scene& scene, bool whole) {
     emit sceneApplied(scene, pathChanged);
 }
 
-void SceneDocument::install(const Scene& scene, const QString& description) {
+void SceneDocument::install(const Scene& loaded, const QString& description) {
+    // the pen's marks go to the pen: the document's scene, its undo steps, its link and its
+    // summary never hold them
+    Scene scene = loaded;
+    scene.annotations.clear();
     check(scene);   // a scene that does not solve never replaces the current one
     if (scene.plan) // nor one whose chosen motion does not exist (docs/physics.md §10)
         planOf(*scene.plan, *m_checked);
@@ -34,6 +38,7 @@ void SceneDocument::install(const Scene& scene, const QString& description) {
         loadKnown(scene, description);
     }
     flush();
+    emit annotationsLoaded(loaded.annotations);
 }
 
 void SceneDocument::load(const Scene& scene, LoadOptions options) {
@@ -105,14 +110,16 @@ void SceneDocument::open(const QString& path) {
     markSavedAs(path);
 }
 
-void SceneDocument::save(const QString& path) {
+void SceneDocument::save(const QString& path, const std::vector<AnnotationMark>& annotations) {
     flush();
     if (!m_error.isEmpty())
         throw InputError(tr("cannot save '%1'").arg(path).toStdString(),
                          tr("the scene does not solve (%1); fix it or undo first")
                              .arg(m_error.message)
                              .toStdString());
-    saveSceneFile(path, m_scene);
+    Scene written = m_scene;
+    written.annotations = annotations;
+    saveSceneFile(path, written);
     markSavedAs(path);
 }
 

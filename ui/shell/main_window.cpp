@@ -1,5 +1,6 @@
 #include "shell/main_window.h"
 
+#include "canvas/pen_tool.h"
 #include "canvas/scene_canvas.h"
 #include "common/atomic_file.h"
 #include "common/input_error.h"
@@ -423,8 +424,9 @@ bool MainWindow::openFile(const QString& path) {
 }
 
 bool MainWindow::saveFile(const QString& path) {
+    const PenTool& pen = *m_canvas->penTool();
     try {
-        m_document->save(path);
+        m_document->save(path, pen.savesWithScene() ? pen.marks() : std::vector<AnnotationMark>{});
     } catch (const std::exception& e) {
         showFileError(QString::fromStdString(e.what()));
         return false;

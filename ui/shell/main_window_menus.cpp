@@ -33,6 +33,7 @@
 #include "shell/introduction_window.h"
 #include "shell/language_menu.h"
 #include "shell/measuring.h"
+#include "shell/pen_actions.h"
 #include "shell/perturbation_controls.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
@@ -69,6 +70,7 @@ void MainWindow::buildMenus() {
     rebuildRecentMenu();
     file->addAction(tr("&Save"), QKeySequence::Save, this, [this] { saveDialog(false); });
     file->addAction(tr("Save &As\u2026"), QKeySequence::SaveAs, this, [this] { saveDialog(true); });
+    installSaveAnnotationsAction(this, *file);
     file->addSeparator();
     QAction* copyLinkAction = file->addAction(tr("Copy &link"), QKeySequence(tr("Ctrl+Shift+C")),
                                               this, [this] { copyLink(); });
@@ -134,6 +136,7 @@ void MainWindow::buildMenus() {
     m_timeline->addAction(playPlan);
     m_timeline->addAction(trackPlan);
     installMeasureAction(this, *edit);
+    installPenActions(this, *edit, *undo);
 
     QMenu* view = m_viewMenu = menuBar()->addMenu(tr("&View"));
     view->setObjectName(QStringLiteral("viewMenu"));
