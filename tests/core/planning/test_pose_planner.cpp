@@ -244,12 +244,18 @@ TEST(PosePlanner, ListsEveryMotionAnIndependentSearchFinds) {
 // a double Lambda0 over 1 - k^2 and which a search in (Psi0, Lambda0, t) cannot converge on (the
 // 40-digit references above and below check the far optima). Before the curve of starts was
 // traced column by column, (-20, 3, 0) missed the rotation at t = 28.1995235464, whose start lies
-// where the curve's two branches run closer than a grid's rows.
+// where the curve's two branches run closer than a grid's rows; (11.4994..., 4.8505..., 0.7018...)
+// threw, a Newton step on log |1 - k^2| taking 1 - k^2 to 0.
 TEST(PosePlanner, ListEqualsAnIndependentSearchOnFarAndNearTargets) {
-    const Pose targets[] = {{-20, 3, 0},    {3, -20, -1},
-                            {6, 19, -0.7},  {0, 16, 3},
-                            {-18, -4, 2.2}, {-1.0285, 3.6197, 0.29871},
-                            {1.5, 4, -3.1}, {-1.97006, 3.39711, 0.825287}};
+    const Pose targets[] = {{-20, 3, 0},
+                            {3, -20, -1},
+                            {6, 19, -0.7},
+                            {0, 16, 3},
+                            {-18, -4, 2.2},
+                            {-1.0285, 3.6197, 0.29871},
+                            {1.5, 4, -3.1},
+                            {-1.97006, 3.39711, 0.825287},
+                            {11.499446263562326, 4.8505699546034471, 0.70182162123792047}};
     int compared = 0, matched = 0, nearSeparatrix = 0;
     for (const Pose& to : targets) {
         const PlanRequest r = request(to);
