@@ -177,7 +177,7 @@ QString planCaption(const Solution& solution, const PlanRequest& request,
     const QString system =
         QCoreApplication::translate("PlotSeries", systemKindName(scene.system.kind).c_str());
     return QCoreApplication::translate(
-               "PlotSeries", "planned motion from %1 to %2 in t = %3 s, Ψ(0) = %4, k = %5; "
+               "PlotSeries", "planned motion from %1 to %2 in t = %3 s, \u03a8(0) = %4, k = %5\n"
                              "%6: m_eff = %7 kg, a = %8 m, b = %9 m, v_T = %10 m/s")
         .arg(pose(request.from), pose(request.to))
         .arg(motion.t, 0, 'g', 10)

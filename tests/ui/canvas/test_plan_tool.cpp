@@ -655,6 +655,12 @@ void TestPlanTool::theTimelineAndTheExportFollowThePlayedMotion() {
         QVERIFY(
             !QImage(planned + QLatin1Char('/') + curves[i][0] + QStringLiteral(".png")).isNull());
     }
+    // CHAPLYGIN_PLAN_SHOTS: the window with the bar on the plan's clock and the exported plots
+    if (const QString shots = qEnvironmentVariable("CHAPLYGIN_PLAN_SHOTS"); !shots.isEmpty()) {
+        QVERIFY(m_window->grab().save(shots + QStringLiteral("/plan-timeline.png")));
+        QVERIFY(m_window->exportPlotsTo(shots + QStringLiteral("/plan-plots"),
+                                        {QStringLiteral("png")}));
+    }
     // the scene's trajectory and the paper's figure are the scene's, not the plan's
     QVERIFY(!QFile::exists(planned + QStringLiteral("/trajectory.svg")));
     // the exported curve is the motion's: its time axis ends at the motion's end, and the data
