@@ -244,8 +244,9 @@ TEST(PosePlanner, ListsEveryMotionAnIndependentSearchFinds) {
 // a double Lambda0 over 1 - k^2 and which a search in (Psi0, Lambda0, t) cannot converge on (the
 // 40-digit references above and below check the far optima). Before the curve of starts was
 // traced column by column, (-20, 3, 0) missed the rotation at t = 28.1995235464, whose start lies
-// where the curve's two branches run closer than a grid's rows; (11.4994..., 4.8505..., 0.7018...)
-// threw, a Newton step on log |1 - k^2| taking 1 - k^2 to 0.
+// where the curve's two branches run closer than a grid's rows, and (6, 19, -0.7) listed 66 of its
+// 82; (11.4994..., 4.8505..., 0.7018...) threw in a version of the column tracing, a Newton step
+// on log |1 - k^2| taking 1 - k^2 to 0.
 TEST(PosePlanner, ListEqualsAnIndependentSearchOnFarAndNearTargets) {
     const Pose targets[] = {{-20, 3, 0},
                             {3, -20, -1},
