@@ -108,7 +108,9 @@ void newtonOnGap(UnitSolution& s, double& norm, const UnitTarget& tg, double con
     const auto solution = [&](double psi0, double logGap, double t) -> std::optional<UnitSolution> {
         const double gap = side * std::exp(logGap), c = std::cos(psi0);
         const double lambda2 = c * c - gap;
-        if (!(lambda2 > 0))
+        // a step that takes 1 - k^2 out of the doubles (exp underflowing to the separatrix
+        // itself, or overflowing) has no closed form to evaluate: rejected, the step halved
+        if (!(lambda2 > 0) || gap == 0 || !std::isfinite(gap))
             return std::nullopt;
         return UnitSolution{wrapAngle(psi0), sigma * std::sqrt(lambda2), t, gap};
     };

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <utility>
@@ -62,19 +63,17 @@ template <class F> double edgeRoot(F&& G, double a, double Ga, double b, double 
     return 0.5 * (a + b);
 }
 
-// the passage of b that continues the n-th of a: the nearest in time, within half a period
-int pairedPassage(const StartPoint& a, const StartPoint& b, int n) {
-    const double ta = a.t + n * a.period;
-    int best = -1;
-    double bestGap = 0.5 * std::min(a.period, b.period);
-    for (int m = std::max(0, n - 1); m <= n + 1; ++m) {
-        const double gap = std::fabs(b.t + m * b.period - ta);
-        if (gap < bestGap) {
-            bestGap = gap;
-            best = m;
-        }
-    }
-    return best;
+// the passage of b that continues the first of a, nearest in time within half a period: the n-th
+// passage of a continues as the (n + shift)-th of b, the count following the first passage (next
+// to the separatrix the periods of neighbouring points differ by much, and the passages nearest in
+// time are not the same passage); nullopt where the first passage has no continuation
+std::optional<int> passageShift(const StartPoint& a, const StartPoint& b) {
+    const double half = 0.5 * std::min(a.period, b.period);
+    for (const int n : {0, 1})
+        for (const int m : {n - 1, n, n + 1})
+            if (m >= 0 && std::fabs(b.t + m * b.period - a.t - n * a.period) < half)
+                return m - n;
+    return std::nullopt;
 }
 
 // the point of G = 0 nearest to (psi0, lambda0), by Newton steps along G's gradient, until G is
@@ -126,10 +125,11 @@ int roughness(const StartPoint& a, const StartPoint& b, const UnitTarget& tg) {
     if (mid &&
         std::fabs(1 - std::hypot(std::sin(mid->first), mid->second)) < 0.5 * std::min(ea, eb))
         return 2;
-    const int m = pairedPassage(a, b, 0);
-    if (m < 0)
+    const auto shift = passageShift(a, b);
+    if (!shift)
         return 2;
-    const double gap = std::fabs(b.t + m * b.period - a.t);
+    const int m = std::max(0, *shift);
+    const double gap = std::fabs(b.t + m * b.period - a.t - (m - *shift) * a.period);
     return gap <= 0.05 * (1 + a.t) ? 0 : 1;
 }
 
@@ -186,9 +186,10 @@ UnitSolution refineSeed(SeedPiece piece, const UnitTarget& tg) {
         const StartPoint mid = startPoint(wrapAngle(onCurve->first), onCurve->second, tg);
         if (!mid.valid)
             break;
-        const int j = pairedPassage(a, mid, n);
-        if (j < 0)
+        const auto shift = passageShift(a, mid);
+        if (!shift || n + *shift < 0)
             break;
+        const int j = n + *shift;
         const double gm = mid.along + j * mid.drift;
         if ((gm > 0) == (ga > 0)) {
             a = mid;
@@ -207,10 +208,60 @@ UnitSolution refineSeed(SeedPiece piece, const UnitTarget& tg) {
 
 namespace {
 
+// Links neighbouring points of the curve G = 0 into seeds: a piece whose ends disagree (the first
+// passage jumps, the pendulum changes from libration to rotation, or an end has no passage) is
+// halved, its middle put back on the curve, down to 2^-48 of its length at a change of orbit and
+// 2^-5 where the passage only moves a lot or the piece is longer than `steep` in asinh Lambda0.
+struct CurveTracer {
+    const UnitTarget& tg;
+    double tMax;
+    double steep;
+    std::vector<SeedPiece>& seeds;
+    int& budget;
+
+    void link(const StartPoint& a, const StartPoint& b) const {
+        const auto shift = passageShift(a, b);
+        if (!shift)
+            return;
+        const double jump = 0.5 * std::min(a.period, b.period);
+        for (int n = std::max(0, -*shift);; ++n) {
+            const double ta = a.t + n * a.period, tb = b.t + (n + *shift) * b.period;
+            if (std::min(ta, tb) > tMax + jump)
+                break;
+            const int best = n + *shift;
+            const double ga = a.along + n * a.drift, gb = b.along + best * b.drift;
+            if ((ga > 0) == (gb > 0) && ga != 0)
+                continue;
+            const double f = ga == gb ? 0.5 : ga / (ga - gb);
+            seeds.push_back({a, n, b, best, ta + f * (tb - ta)});
+        }
+    }
+
+    void follow(const StartPoint& a, const StartPoint& b, int depth = 0) {
+        const int rough = roughness(a, b, tg);
+        const bool tooLong = std::fabs(std::asinh(a.lambda0) - std::asinh(b.lambda0)) > steep;
+        if (((rough == 2 && depth < 48) || ((rough == 1 || tooLong) && depth < 5)) &&
+            --budget > 0) {
+            const double psiM = a.psi0 + 0.5 * wrapAngle(b.psi0 - a.psi0);
+            const double lamM = 0.5 * (a.lambda0 + b.lambda0);
+            const auto onCurve = projectOnCurve(psiM, lamM, tg);
+            if (onCurve) {
+                const StartPoint m = startPoint(wrapAngle(onCurve->first), onCurve->second, tg);
+                follow(a, m, depth + 1);
+                follow(m, b, depth + 1);
+                return;
+            }
+        }
+        if (a.valid && b.valid)
+            link(a, b);
+    }
+};
+
 // The curve G = 0 traced cell by cell on the grid of nodes psi x lam (psi periodic over 2 pi, or
-// a patch), its seeds appended to `seeds`.
-void traceGrid(const UnitTarget& tg, double tMax, const std::vector<double>& psi, bool periodic,
-               const std::vector<double>& lam, std::vector<SeedPiece>& seeds, int& budget) {
+// a patch), its seeds appended to the tracer's.
+void traceGrid(CurveTracer& tracer, const std::vector<double>& psi, bool periodic,
+               const std::vector<double>& lam) {
+    const UnitTarget& tg = tracer.tg;
     const int columns = static_cast<int>(psi.size()), rows = static_cast<int>(lam.size()) - 1;
     const int lastColumn = periodic ? columns : columns - 1; // cells and horizontal edges
     std::vector<StartAngle> angle(columns);
@@ -246,44 +297,6 @@ void traceGrid(const UnitTarget& tg, double tMax, const std::vector<double>& psi
             vertical[j * columns + i] = static_cast<int>(points.size());
             points.push_back(startPoint(psi[i], l, tg));
         }
-
-    auto link = [&](const StartPoint& a, const StartPoint& b) {
-        const double jump = 0.5 * std::min(a.period, b.period);
-        for (int n = 0;; ++n) {
-            const double ta = a.t + n * a.period;
-            if (ta > tMax + jump)
-                break;
-            const int best = pairedPassage(a, b, n);
-            if (best < 0)
-                continue;
-            const double ga = a.along + n * a.drift, gb = b.along + best * b.drift;
-            if ((ga > 0) == (gb > 0) && ga != 0)
-                continue;
-            const double tb = b.t + best * b.period;
-            const double f = ga == gb ? 0.5 : ga / (ga - gb);
-            seeds.push_back({a, n, b, best, ta + f * (tb - ta)});
-        }
-    };
-    // continuation along the curve: a piece whose ends disagree (the first passage jumps, the
-    // pendulum changes from libration to rotation, or an end has no passage) is halved, its
-    // middle put back on the curve, down to 2^-48 of a cell at a change of orbit and 2^-5 where
-    // the passage only moves a lot
-    auto follow = [&](auto&& self, const StartPoint& a, const StartPoint& b, int depth) -> void {
-        const int rough = roughness(a, b, tg);
-        if (((rough == 2 && depth < 48) || (rough == 1 && depth < 5)) && --budget > 0) {
-            const double psiM = a.psi0 + 0.5 * wrapAngle(b.psi0 - a.psi0);
-            const double lamM = 0.5 * (a.lambda0 + b.lambda0);
-            const auto onCurve = projectOnCurve(psiM, lamM, tg);
-            if (onCurve) {
-                const StartPoint m = startPoint(wrapAngle(onCurve->first), onCurve->second, tg);
-                self(self, a, m, depth + 1);
-                self(self, m, b, depth + 1);
-                return;
-            }
-        }
-        if (a.valid && b.valid)
-            link(a, b);
-    };
     for (int j = 0; j < rows; ++j)
         for (int i = 0; i < lastColumn; ++i) {
             const int i1 = (i + 1) % columns;
@@ -293,33 +306,133 @@ void traceGrid(const UnitTarget& tg, double tMax, const std::vector<double>& psi
                 if (id >= 0)
                     ids[count++] = id;
             if (count == 2) {
-                follow(follow, points[ids[0]], points[ids[1]], 0);
+                tracer.follow(points[ids[0]], points[ids[1]]);
             } else if (count == 4) { // a saddle of G: either pairing
                 for (int a = 0; a < 4; ++a)
-                    follow(follow, points[ids[a]], points[ids[(a + 1) % 4]], 0);
+                    tracer.follow(points[ids[a]], points[ids[(a + 1) % 4]]);
             }
         }
+}
+
+// G = A Lambda0^2 + B Lambda0 + C at a fixed Psi0 (docs/physics.md §10), its coefficients
+// without cancellation next to the pivot points
+struct CurveColumn {
+    double A = 0, B = 0, C = 0;
+    double discriminant() const { return B * B - 4 * A * C; }
+};
+CurveColumn curveColumn(const StartAngle& a, const UnitTarget& tg) {
+    const double cP = std::cos(tg.Phi), sP = std::sin(tg.Phi);
+    const double u = tg.Y * a.s - a.oneMinusC, w = tg.Y * a.s + a.onePlusC;
+    return {sP * sP + tg.X * tg.X, 2 * (a.s * cP * sP - tg.X * (tg.Y * a.s + a.c)),
+            a.s * a.s * cP * cP + u * w};
+}
+
+// the curve's points over one Psi0, lowest Lambda0 first: G's real roots in Lambda0
+std::vector<double> columnRoots(const CurveColumn& q) {
+    if (q.A == 0)
+        return q.B == 0 ? std::vector<double>{} : std::vector<double>{-q.C / q.B};
+    const double disc = q.discriminant();
+    if (disc < 0)
+        return {};
+    const double h = -0.5 * (q.B + std::copysign(std::sqrt(disc), q.B));
+    if (h == 0)
+        return {0.0, 0.0};
+    const double r0 = h / q.A, r1 = q.C / h;
+    return {std::min(r0, r1), std::max(r0, r1)};
+}
+
+// The curve G = 0 traced column by column over Psi0 in (-pi, pi]: G is quadratic in Lambda0, so
+// each column holds the curve's points exactly, two branches that a grid in Lambda0 misses where
+// they run closer than its rows (about the crossings of the curve, where the pendulum's end state
+// mirrors its start). Neighbouring columns' points are linked lowest to lowest and highest to
+// highest; where the branches meet between two columns (G's discriminant in Lambda0 changes
+// sign), through the fold.
+void traceColumns(CurveTracer& tracer, int columns, double lambdaMax) {
+    const UnitTarget& tg = tracer.tg;
+    const double dpsi = 2 * pi / columns;
+    std::vector<double> psi(columns);
+    std::vector<CurveColumn> column(columns);
+    std::vector<std::vector<StartPoint>> points(columns);
+    std::vector<std::vector<bool>> evaluated(columns);
+    for (int i = 0; i < columns; ++i) {
+        psi[i] = -pi + (i + 0.3719) * dpsi; // off the axes, where lines and pivots sit
+        column[i] = curveColumn(startAngle(psi[i]), tg);
+        for (const double l : columnRoots(column[i])) {
+            StartPoint p; // its passages only once a piece within the k bound needs them
+            p.psi0 = psi[i];
+            p.lambda0 = l;
+            points[i].push_back(p);
+            evaluated[i].push_back(false);
+        }
+    }
+    const auto point = [&](int i, std::size_t r) -> const StartPoint& {
+        if (!evaluated[i][r]) {
+            points[i][r] = startPoint(psi[i], points[i][r].lambda0, tg);
+            evaluated[i][r] = true;
+        }
+        return points[i][r];
+    };
+    // a piece with both ends beyond the k bound is left out
+    const auto follow = [&](int i, std::size_t r, const StartPoint* fold, int i1, std::size_t r1) {
+        const double la = points[i][r].lambda0;
+        const double lb = fold ? fold->lambda0 : points[i1][r1].lambda0;
+        if (std::fabs(la) > lambdaMax && std::fabs(lb) > lambdaMax)
+            return;
+        const StartPoint& a = point(i, r);
+        tracer.follow(a, fold ? *fold : point(i1, r1));
+    };
+    for (int i = 0; i < columns; ++i) {
+        const int i1 = (i + 1) % columns;
+        const std::size_t n0 = points[i].size(), n1 = points[i1].size();
+        if (n0 == n1) {
+            for (std::size_t r = 0; r < n0; ++r)
+                follow(i, r, nullptr, i1, r);
+        } else if ((n0 == 2 && n1 == 0) || (n0 == 0 && n1 == 2)) {
+            // the fold, where the discriminant vanishes between the columns
+            const double a = psi[i], b = a + dpsi;
+            auto disc = [&](double p) { return curveColumn(startAngle(p), tg).discriminant(); };
+            const double f =
+                edgeRoot(disc, a, column[i].discriminant(), b, column[i1].discriminant());
+            const CurveColumn q = curveColumn(startAngle(f), tg);
+            const StartPoint fold = startPoint(wrapAngle(f), -q.B / (2 * q.A), tg);
+            const int side = n0 == 0 ? i1 : i;
+            follow(side, 0, &fold, 0, 0);
+            follow(side, 1, &fold, 0, 0);
+        } else {
+            for (std::size_t r = 0; r < n0; ++r)
+                for (std::size_t r1 = 0; r1 < n1; ++r1)
+                    follow(i, r, nullptr, i1, r1);
+        }
+    }
 }
 
 } // namespace
 
 std::vector<SeedPiece> curveSeeds(const UnitTarget& tg, double tMax, double kMax, GridSize size) {
-    const int columns = size.columns;
-    const double uMax = std::asinh(kMax * 1.02);
-    const int rows = std::max(8, static_cast<int>(std::ceil(2 * uMax / size.du)));
-    const double dpsi = 2 * pi / columns, duRow = 2 * uMax / rows;
-    std::vector<double> psi(columns), lam(rows + 1);
-    for (int i = 0; i < columns; ++i)
-        psi[i] = -pi + (i + 0.3719) * dpsi; // off the axes, where lines and pivots sit
-    for (int j = 0; j <= rows; ++j)
-        lam[j] = std::sinh(-uMax + (j + 0.2113) * duRow);
     std::vector<SeedPiece> seeds;
     int budget = 20000; // halvings, a bound on the time a pathological target can take
-    traceGrid(tg, tMax, psi, true, lam, seeds, budget);
+    CurveTracer tracer{tg, tMax, size.du, seeds, budget};
+    traceColumns(tracer, size.columns, kMax * 1.02);
+    // G's Lambda0^2 and Lambda0 terms vanish for a target straight across from the start with
+    // Phi = 0 or pi (X = 0, sin Phi = 0): the curve then runs along Lambda0, and next to such a
+    // target it turns steeply; a grid in (Psi0, asinh Lambda0) follows it there as well
+    if (std::pow(std::sin(tg.Phi), 2) + tg.X * tg.X < 1e-2) {
+        CurveTracer gridTracer{tg, tMax, std::numeric_limits<double>::infinity(), seeds, budget};
+        const double uMax = std::asinh(kMax * 1.02);
+        const int rows = std::max(8, static_cast<int>(std::ceil(2 * uMax / size.du)));
+        const double dpsi = 2 * pi / size.columns, duRow = 2 * uMax / rows;
+        std::vector<double> psi(size.columns), lam(rows + 1);
+        for (int i = 0; i < size.columns; ++i)
+            psi[i] = -pi + (i + 0.3719) * dpsi;
+        for (int j = 0; j <= rows; ++j)
+            lam[j] = std::sinh(-uMax + (j + 0.2113) * duRow);
+        traceGrid(gridTracer, psi, true, lam);
+    }
     // next to the start's position the curve has a loop about the size of the distance around
-    // each pivot point (0, 0) and (pi, 0), finer than the grid: a patch twenty times as wide
+    // each pivot point (0, 0) and (pi, 0), finer than the columns: a patch twenty times as wide
     const double d = std::hypot(tg.X, tg.Y);
     if (d < 0.05) {
+        CurveTracer patchTracer{tg, tMax, std::numeric_limits<double>::infinity(), seeds, budget};
         constexpr int patch = 24;
         for (const double h : {20 * d, 3 * d})
             for (const double centre : {0.0, pi}) {
@@ -328,7 +441,7 @@ std::vector<SeedPiece> curveSeeds(const UnitTarget& tg, double tMax, double kMax
                     p[i] = wrapAngle(centre - h + (i + 0.3719) * 2 * h / patch);
                     l[i] = -h + (i + 0.2113) * 2 * h / patch;
                 }
-                traceGrid(tg, tMax, p, false, l, seeds, budget);
+                traceGrid(patchTracer, p, false, l);
             }
     }
     std::sort(seeds.begin(), seeds.end(),

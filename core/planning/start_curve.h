@@ -46,15 +46,17 @@ struct SeedPiece {
     double t = 0;
 };
 
-/// The grid: columns over Psi0 in (-pi, pi], rows du apart in asinh Lambda0.
+/// The tracing's resolution: columns over Psi0 in (-pi, pi], and pieces of the curve at most du
+/// long in asinh Lambda0 (halved otherwise; the rows of the grid where one is used).
 struct GridSize {
     int columns = 96;
     double du = 0.05;
 };
 
 /// Seeds for Newton: where the along-P miss of one passage arriving by tMax changes sign between
-/// two neighbouring points of the curve G = 0, traced cell by cell on a grid in (Psi0, asinh
-/// Lambda0) out to |Lambda0| = kMax, its rough pieces halved; sorted by their time.
+/// two neighbouring points of the curve G = 0, traced column by column over Psi0 (G is quadratic
+/// in Lambda0: each column holds the curve's points exactly) out to |Lambda0| = kMax, its rough
+/// pieces halved; sorted by their time.
 std::vector<SeedPiece> curveSeeds(const UnitTarget& tg, double tMax, double kMax, GridSize size);
 
 /// Newton's start from a piece: halve it (its middle put back on the curve) while the passage

@@ -59,6 +59,10 @@ std::string formatPlanSummary(const PlanRequest& request, const Plan& plan,
         m["family"] = geodesicFamilyName(g.family);
         m["cut_time"] = std::isfinite(g.cutTime) ? nlohmann::json(g.cutTime) : nlohmann::json();
         m["optimal"] = g.optimal;
+        // the pendulum's modulus and 1 - k^2, carried exactly next to the separatrix where it
+        // does not follow from psi0 and psidot0 in double (docs/physics.md §10)
+        m["modulus"] = g.modulus;
+        m["modulus_gap"] = g.modulusGap;
         motions.push_back(m);
     }
     j["plan"] = {{"from", {request.from.x, request.from.y, request.from.phi}},

@@ -15,7 +15,8 @@ std::string formatSummary(const Solution& solution);
 /// The --summary JSON of a plan (docs/physics.md §10): the solution's summary when a path was
 /// given (else an object of its own) with "plan": {"from": [x, y, phi], "to": [x, y, phi],
 /// "horizon", "certified", "geodesics": [...]}, the motions sorted by t, each {"t", "psi0",
-/// "psidot0", "lambda0", "family", "cut_time" (null where it is infinite), "optimal"}.
+/// "psidot0", "lambda0", "family", "cut_time" (null where it is infinite), "optimal", "modulus"
+/// (the pendulum's k), "modulus_gap" (1 - k^2)}.
 std::string formatPlanSummary(const PlanRequest& request, const Plan& plan,
                               const Solution* solution);
 

@@ -656,6 +656,12 @@ realimentação: %2</translation>
         <source>preset %1 — </source>
         <translation>predefinição %1 — </translation>
     </message>
+    <message>
+        <source>planned motion from %1 to %2 in t = %3 s, Ψ(0) = %4, k = %5
+%6: m_eff = %7 kg, a = %8 m, b = %9 m, v_T = %10 m/s</source>
+        <translation>movimento planejado de %1 a %2 em t = %3 s, Ψ(0) = %4, k = %5
+%6: m_eff = %7 kg, a = %8 m, b = %9 m, v_T = %10 m/s</translation>
+    </message>
 </context>
 <context>
     <name>QObject</name>

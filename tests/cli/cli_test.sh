@@ -446,6 +446,49 @@ ts = [g["t"] for g in plan["geodesics"]]
 assert ts == sorted(ts) and ts[-1] <= plan["horizon"] + 1e-12
 PY
   ;;
+plan_modulus)
+  # each motion's pendulum modulus k and 1 - k^2 (docs/physics.md §10) against values derived
+  # here: the sideways shift's optima from the shared notes' Psi0 and b Psidot0 / v_T; the far
+  # target (20, 0.5, 0.3), whose optimum has 1 - k^2 = 2.594107064e-11, from the 40-digit
+  # reference (tests/core/planning/far_target_reference.py), where 1 - sin^2 psi0 - psidot0^2
+  # from the printed doubles is off by far more; the line and pivoting by their definitions
+  run 0 --plan-to 0,1,0 --summary -
+  /usr/bin/python3 - "$work/out" <<'PY' || fail "plan modulus: $(head -c 600 "$work/out")"
+import json, math, sys
+plan = json.load(open(sys.argv[1]))["plan"]
+for g in plan["geodesics"]:
+    assert set(g) == {"t", "psi0", "psidot0", "lambda0", "family", "cut_time", "optimal",
+                      "modulus", "modulus_gap"}, sorted(g)
+    k2 = math.sin(g["psi0"]) ** 2 + g["psidot0"] ** 2  # b = v_T = 1
+    assert abs(g["modulus"] - math.sqrt(k2)) < 1e-12, g
+    assert abs(g["modulus_gap"] - (1 - k2)) < 1e-11, g
+    assert (g["family"] == "libration") == (g["modulus"] < 1), g
+best = [g for g in plan["geodesics"] if g["optimal"]]
+k2 = math.sin(-1.107148717794) ** 2 + 1.492853942033 ** 2
+assert len(best) == 2 and all(abs(g["modulus"] - math.sqrt(k2)) < 1e-11 for g in best), best
+PY
+  run 0 --plan-to 20,0.5,0.3 --plan-horizon 21 --summary -
+  /usr/bin/python3 - "$work/out" <<'PY' || fail "far plan modulus: $(head -c 600 "$work/out")"
+import json, math, sys
+best = [g for g in json.load(open(sys.argv[1]))["plan"]["geodesics"] if g["optimal"]]
+assert len(best) == 1
+gap = 2.5941070643728894849e-11
+assert abs(best[0]["modulus_gap"] / gap - 1) < 1e-9, best
+assert abs(best[0]["modulus"] - math.sqrt(1 - gap)) < 1e-15, best
+PY
+  run 0 --plan-to 3,0,0 --plan-horizon 3.5 --summary -
+  /usr/bin/python3 - "$work/out" <<'PY' || fail "line modulus: $(head -c 600 "$work/out")"
+import json, sys
+g = json.load(open(sys.argv[1]))["plan"]["geodesics"]
+assert len(g) == 1 and g[0]["family"] == "line" and g[0]["modulus"] == 1 and g[0]["modulus_gap"] == 0
+PY
+  run 0 --plan-to 0,0,1 --plan-horizon 1.5 --summary -
+  /usr/bin/python3 - "$work/out" <<'PY' || fail "pivot modulus: $(head -c 600 "$work/out")"
+import json, sys
+g = json.load(open(sys.argv[1]))["plan"]["geodesics"]
+assert len(g) == 1 and g[0]["family"] == "pivot" and g[0]["modulus"] == 0 and g[0]["modulus_gap"] == 1
+PY
+  ;;
 plan_scaled_from_path)
   # b = 0.5 (I = m (b^2 - a^2)), v_T = 2, from the circle's start: the same shift in its frame
   run 0 --preset circle --param a=0.3 --param b=0.5 --vT 2 --plan-to 2,0.5,0 --plan-from 2,0,0 \

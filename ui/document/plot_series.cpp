@@ -164,4 +164,30 @@ QString sceneCaption(const Solution& solution) {
     return caption;
 }
 
+QString planCaption(const Solution& solution, const PlanRequest& request,
+                    const PlannedGeodesic& motion) {
+    const auto pose = [](const Pose& p) {
+        return QStringLiteral("(%1, %2, %3)")
+            .arg(p.x, 0, 'g', 6)
+            .arg(p.y, 0, 'g', 6)
+            .arg(p.phi, 0, 'g', 6);
+    };
+    const DerivedSystem& sys = solution.system();
+    const Scene& scene = solution.scene();
+    const QString system =
+        QCoreApplication::translate("PlotSeries", systemKindName(scene.system.kind).c_str());
+    return QCoreApplication::translate(
+               "PlotSeries", "planned motion from %1 to %2 in t = %3 s, \u03a8(0) = %4, k = %5\n"
+                             "%6: m_eff = %7 kg, a = %8 m, b = %9 m, v_T = %10 m/s")
+        .arg(pose(request.from), pose(request.to))
+        .arg(motion.t, 0, 'g', 10)
+        .arg(motion.psi0, 0, 'g', 6)
+        .arg(motion.modulus, 0, 'g', 6)
+        .arg(system)
+        .arg(sys.mass, 0, 'g', 6)
+        .arg(sys.a, 0, 'g', 6)
+        .arg(sys.b, 0, 'g', 6)
+        .arg(request.vT, 0, 'g', 6);
+}
+
 } // namespace chaplygin::ui

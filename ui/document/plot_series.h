@@ -43,5 +43,9 @@ PlotSeries collectPlanSeries(const PlanRequest& request, const PlannedGeodesic& 
 void requireFiniteSeries(const PlotSeries& series);
 /// One line that states the scene's parameters, for captions and exported files.
 QString sceneCaption(const Solution& solution);
+/// The same for a planned motion of the scene's system, in two lines: its start and target
+/// poses, its time, Psi(0) and k; the system's parameters with v_T.
+QString planCaption(const Solution& solution, const PlanRequest& request,
+                    const PlannedGeodesic& motion);
 
 } // namespace chaplygin::ui

@@ -51,28 +51,22 @@ QByteArray renderPlot(QCustomPlot& plot, const QString& format, int width, int h
     return bytes;
 }
 
-void exportPlots(const Solution& solution, const QString& dir, const QStringList& formats,
-                 PinSet* pins) {
+namespace {
+
+// each plot of `kinds` drawn from `series` with a title and the caption, into dir as
+// <stem>.<format>; with pins, the time plots carry the pinned runs
+void writePlots(const PlotSeries& series, const QList<PlotKind>& kinds, const QString& caption,
+                const QString& dir, const QStringList& formats, PinSet* pins,
+                const QList<PlotSeries>* pinned) {
     if (!QDir().mkpath(dir))
         throw IoError("cannot create the plot directory '" + dir.toStdString() + "'");
-    PlotSeries series = collectSeries(solution, 800, 800);
-    // the pinned runs as smooth as the run itself: sampled evenly, not at the path's nodes
-    QList<PlotSeries> pinned;
-    for (int i = 0; pins && i < pins->count(); ++i)
-        pinned << (pins->run(i).solution ? collectSeries(*pins->run(i).solution, 2, 800)
-                                         : PlotSeries{});
-    QString caption = sceneCaption(solution);
-    QList<PlotKind> kinds{PlotKind::Psi,    PlotKind::Chi,        PlotKind::Lambda,
-                          PlotKind::Energy, PlotKind::Trajectory, PlotKind::PaperFigure};
-    if (series.perturbed)
-        kinds << PlotKind::TrackingError;
     for (PlotKind kind : kinds) {
         QCustomPlot plot;
         drawPlot(plot, kind, series);
         const bool timePlot = kind == PlotKind::Psi || kind == PlotKind::Chi ||
                               kind == PlotKind::Lambda || kind == PlotKind::Energy;
         if (pins && timePlot) // what the Plots dock shows
-            addPinnedSeries(plot, kind, *pins, &pinned);
+            addPinnedSeries(plot, kind, *pins, pinned);
         addCaption(plot, caption);
         QCPLayoutGrid* grid = plot.plotLayout();
         grid->insertRow(0);
@@ -88,6 +82,31 @@ void exportPlots(const Solution& solution, const QString& dir, const QStringList
             writeFileAtomically(file.toStdString(), bytes.toStdString());
         }
     }
+}
+
+} // namespace
+
+void exportPlots(const Solution& solution, const QString& dir, const QStringList& formats,
+                 PinSet* pins) {
+    PlotSeries series = collectSeries(solution, 800, 800);
+    // the pinned runs as smooth as the run itself: sampled evenly, not at the path's nodes
+    QList<PlotSeries> pinned;
+    for (int i = 0; pins && i < pins->count(); ++i)
+        pinned << (pins->run(i).solution ? collectSeries(*pins->run(i).solution, 2, 800)
+                                         : PlotSeries{});
+    QList<PlotKind> kinds{PlotKind::Psi,    PlotKind::Chi,        PlotKind::Lambda,
+                          PlotKind::Energy, PlotKind::Trajectory, PlotKind::PaperFigure};
+    if (series.perturbed)
+        kinds << PlotKind::TrackingError;
+    writePlots(series, kinds, sceneCaption(solution), dir, formats, pins, &pinned);
+}
+
+void exportPlanPlots(const Solution& solution, const PlanRequest& request,
+                     const PlannedGeodesic& motion, const QString& dir,
+                     const QStringList& formats) {
+    writePlots(collectPlanSeries(request, motion, 800),
+               {PlotKind::Psi, PlotKind::Chi, PlotKind::Lambda, PlotKind::Energy},
+               planCaption(solution, request, motion), dir, formats, nullptr, nullptr);
 }
 
 } // namespace chaplygin::ui

@@ -1,4 +1,5 @@
 #pragma once
+#include "planning/pose_planner.h"
 #include "plots/plot_figures.h"
 #include "scene/solution.h"
 
@@ -22,5 +23,12 @@ QByteArray renderPlot(QCustomPlot& plot, const QString& format, int width, int h
 /// pinned runs as the Plots dock shows them.
 void exportPlots(const Solution& solution, const QString& dir, const QStringList& formats,
                  PinSet* pins = nullptr);
+
+/// Writes the plots of a planned motion of the solution's system (docs/physics.md §10) as the
+/// Plots dock shows them in plan mode: Psi, chi, lambda and the energy of its genuine vakonomic
+/// body and of the free ghost from the same start, over [0, t], each with a title and a caption
+/// stating the poses, the motion and the parameters. Like exportPlots otherwise.
+void exportPlanPlots(const Solution& solution, const PlanRequest& request,
+                     const PlannedGeodesic& motion, const QString& dir, const QStringList& formats);
 
 } // namespace chaplygin::ui

@@ -1,6 +1,7 @@
 #include "shell/main_window.h"
 
 #include "canvas/pen_tool.h"
+#include "canvas/plan_tool.h"
 #include "canvas/scene_canvas.h"
 #include "common/atomic_file.h"
 #include "common/input_error.h"
@@ -35,6 +36,7 @@
 #include "shell/measuring.h"
 #include "shell/perturbation_controls.h"
 #include "shell/plan_readouts.h"
+#include "shell/plan_timeline.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
 #include "shell/space_to_play.h"
@@ -149,6 +151,7 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     installValuesDock(this, *m_viewMenu, *m_docks.accuracy);
     installPerturbationControls(this, *m_viewMenu, *m_vakonomicAction, *m_docks.parameters);
     installPlanReadouts(*m_canvas, *m_plots, *m_accuracy);
+    m_planTimeline = new PlanTimeline(*m_canvas, *m_timeline, *m_playback, this);
 
     if (!m_useSettings)
         resize(1280, 800);
@@ -438,7 +441,14 @@ bool MainWindow::saveFile(const QString& path) {
 bool MainWindow::exportPlotsTo(const QString& dir, const QStringList& formats) {
     m_document->flush();
     try {
-        exportPlots(*m_document->solution(), dir, formats, m_document->pins());
+        // the plots the Plots dock shows: a planned motion's while one is chosen in plan mode
+        const PlanTool* plan = m_canvas->planTool();
+        const int chosen = m_canvas->planMode() ? plan->chosen() : -1;
+        if (chosen >= 0)
+            exportPlanPlots(*m_document->solution(), plan->plannedRequest(),
+                            plan->planned().geodesics.at(std::size_t(chosen)), dir, formats);
+        else
+            exportPlots(*m_document->solution(), dir, formats, m_document->pins());
     } catch (const std::exception& e) {
         showFileError(QString::fromStdString(e.what()));
         return false;

@@ -36,6 +36,7 @@ class SceneCanvas;
 class SceneDocument;
 class SweepPanel;
 class TimelineBar;
+class PlanTimeline;
 struct AnimationSettings;
 
 /// The Chaplygin Lab window: the scene canvas in the centre, path, parameters and plots docks,
@@ -99,6 +100,8 @@ class MainWindow : public QMainWindow {
     /// Shows and raises the Methods dock.
     void showMethodsDock();
     TimelineBar* timeline() const { return m_timeline; }
+    /// The planned motion's clock, which the timeline shows while a motion is chosen in plan mode.
+    PlanTimeline* planTimeline() const { return m_planTimeline; }
     QUndoStack* undoStack() const;
     QAction* followAction() const { return m_followAction; }
     /// Edit > Plan a motion: the canvas's Plan tool (docs/physics.md §10).
@@ -210,6 +213,7 @@ class MainWindow : public QMainWindow {
     MethodsPanel* m_methods;
     AccuracyReadout* m_accuracy;
     TimelineBar* m_timeline;
+    PlanTimeline* m_planTimeline = nullptr;
     SweepPanel* m_sweep;
     Docks m_docks;
     std::optional<Scene> m_noteScene; // the scene the accuracy dock's note is about

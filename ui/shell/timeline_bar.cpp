@@ -90,18 +90,19 @@ TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
     m_secondForward = new QAction(tr("One second forward"), this);
     m_secondForward->setShortcuts(
         {QKeySequence(Qt::SHIFT | Qt::Key_Period), QKeySequence(Qt::SHIFT | Qt::Key_Greater)});
-    connect(m_start, &QAction::triggered, playback, &Playback::goToStart);
-    connect(m_end, &QAction::triggered, playback, &Playback::goToEnd);
+    // through m_playback: the clock shown can change (setPlayback)
+    connect(m_start, &QAction::triggered, this, [this] { m_playback->goToStart(); });
+    connect(m_end, &QAction::triggered, this, [this] { m_playback->goToEnd(); });
     connect(m_secondBack, &QAction::triggered, this,
-            [playback] { playback->stepBy(-Playback::kLargeStep); });
+            [this] { m_playback->stepBy(-Playback::kLargeStep); });
     connect(m_secondForward, &QAction::triggered, this,
-            [playback] { playback->stepBy(Playback::kLargeStep); });
+            [this] { m_playback->stepBy(Playback::kLargeStep); });
     setAccessibleName(tr("Timeline"));
     m_play->setObjectName(QStringLiteral("playAction"));
-    connect(m_play, &QAction::triggered, playback, &Playback::togglePlay);
-    connect(m_stepBack, &QAction::triggered, playback, &Playback::stepBackward);
-    connect(m_stepForward, &QAction::triggered, playback, &Playback::stepForward);
-    connect(m_loop, &QAction::toggled, playback, &Playback::setLoop);
+    connect(m_play, &QAction::triggered, this, [this] { m_playback->togglePlay(); });
+    connect(m_stepBack, &QAction::triggered, this, [this] { m_playback->stepBackward(); });
+    connect(m_stepForward, &QAction::triggered, this, [this] { m_playback->stepForward(); });
+    connect(m_loop, &QAction::toggled, this, [this](bool on) { m_playback->setLoop(on); });
     connect(m_speed, &QComboBox::currentIndexChanged, this, [this](int i) {
         m_playback->setSpeedFactor(m_speed->itemData(i).toDouble());
         m_faster->setEnabled(i + 1 < m_speed->count());
@@ -111,12 +112,33 @@ TimelineBar::TimelineBar(Playback* playback, QWidget* parent)
         if (!m_syncing)
             m_playback->seek(m_playback->tEnd() * v / kSliderSteps);
     });
-    connect(playback, &Playback::timeChanged, this, &TimelineBar::sync);
-    connect(playback, &Playback::playingChanged, this, [this](bool playing) {
-        m_play->setIcon(
-            style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
-        m_play->setText(playing ? tr("&Pause") : tr("&Play"));
-    });
+    connectClock();
+    sync();
+}
+
+void TimelineBar::connectClock() {
+    m_clockConnections = {
+        connect(m_playback, &Playback::timeChanged, this, &TimelineBar::sync),
+        connect(m_playback, &Playback::playingChanged, this, &TimelineBar::showPlaying)};
+    showPlaying(m_playback->isPlaying());
+}
+
+void TimelineBar::showPlaying(bool playing) {
+    m_play->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    m_play->setText(playing ? tr("&Pause") : tr("&Play"));
+}
+
+void TimelineBar::setPlayback(Playback* playback) {
+    if (playback == m_playback)
+        return;
+    for (const QMetaObject::Connection& c : m_clockConnections)
+        disconnect(c);
+    m_playback->pause(); // the clock no longer shown stands still
+    m_playback = playback;
+    // the speed and the loop chosen on the bar are the new clock's too
+    m_playback->setSpeedFactor(m_speed->currentData().toDouble());
+    m_playback->setLoop(m_loop->isChecked());
+    connectClock();
     sync();
 }
 

@@ -2,6 +2,8 @@
 #include <QFont>
 #include <QToolBar>
 
+#include <array>
+
 class QAction;
 class QComboBox;
 class QLabel;
@@ -14,7 +16,8 @@ class Playback;
 
 /// The timeline toolbar: play/pause (Space), single steps, speed x1/16 ... x64 (the box, the
 /// Faster and Slower keys ] and [, and the Speed menu), loop, and a scrub slider with the time
-/// shown.
+/// shown, all of one clock: the scene's, or another put in its place (setPlayback: a planned
+/// motion's).
 class TimelineBar : public QToolBar {
     Q_OBJECT
   public:
@@ -38,6 +41,11 @@ class TimelineBar : public QToolBar {
     /// Animation > Speed: one checkable entry per speed, kept in step with the box.
     QMenu* makeSpeedMenu(QWidget* parent);
     QLabel* timeLabel() const { return m_timeLabel; }
+    /// The clock the bar shows and drives.
+    Playback* playback() const { return m_playback; }
+    /// Shows and drives `playback` from now on, with the bar's speed and loop; the clock shown
+    /// before is paused.
+    void setPlayback(Playback* playback);
 
   public slots:
     /// Follows the clock (and a new horizon).
@@ -49,7 +57,11 @@ class TimelineBar : public QToolBar {
     void changeEvent(QEvent* event) override;
 
   private:
+    void connectClock();
+    void showPlaying(bool playing);
+
     Playback* m_playback;
+    std::array<QMetaObject::Connection, 2> m_clockConnections;
     QAction* m_play;
     QAction* m_stepBack;
     QAction* m_stepForward;

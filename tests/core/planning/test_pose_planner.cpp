@@ -237,6 +237,74 @@ TEST(PosePlanner, ListsEveryMotionAnIndependentSearchFinds) {
     EXPECT_GE(found, 80);
 }
 
+// The whole list against the independent search (GSL's hybrid Newton from 20000 random starts on
+// the closed form of core/motion, none of the planner's code), far and near targets: every motion
+// the search reaches within the horizon is listed, to 1e-9 in t, and every listed motion is
+// reached by the search, except those with |1 - k^2| < 1e-3, whose ends move by the rounding of
+// a double Lambda0 over 1 - k^2 and which a search in (Psi0, Lambda0, t) cannot converge on (the
+// 40-digit references above and below check the far optima). Before the curve of starts was
+// traced column by column, (-20, 3, 0) missed the rotation at t = 28.1995235464, whose start lies
+// where the curve's two branches run closer than a grid's rows, and (6, 19, -0.7) listed 66 of its
+// 82; (11.4994..., 4.8505..., 0.7018...) threw in a version of the column tracing, a Newton step
+// on log |1 - k^2| taking 1 - k^2 to 0.
+TEST(PosePlanner, ListEqualsAnIndependentSearchOnFarAndNearTargets) {
+    const Pose targets[] = {{-20, 3, 0},
+                            {3, -20, -1},
+                            {6, 19, -0.7},
+                            {0, 16, 3},
+                            {-18, -4, 2.2},
+                            {-1.0285, 3.6197, 0.29871},
+                            {1.5, 4, -3.1},
+                            {-1.97006, 3.39711, 0.825287},
+                            {11.499446263562326, 4.8505699546034471, 0.70182162123792047}};
+    int compared = 0, matched = 0, nearSeparatrix = 0;
+    for (const Pose& to : targets) {
+        const PlanRequest r = request(to);
+        const Plan plan = planVakonomic(r);
+        std::vector<test::ShootingResult> found;
+        for (const test::ShootingResult& s :
+             test::motionsByShooting(to.x, to.y, to.phi, plan.horizon, 20000, 29))
+            if (s.t <= plan.horizon * 0.999) // arriving at the horizon itself: either way
+                found.push_back(s);
+        const auto same = [](const PlannedGeodesic& g, const test::ShootingResult& s) {
+            return std::fabs(g.t - s.t) <= 1e-9 &&
+                   std::fabs(std::remainder(g.psi0 - s.psi0, 2 * pi)) <= 1e-6;
+        };
+        for (const test::ShootingResult& s : found) {
+            bool listed = false;
+            for (const PlannedGeodesic& g : plan.geodesics)
+                listed = listed || same(g, s);
+            EXPECT_TRUE(listed) << "target " << to.x << ", " << to.y << ", " << to.phi
+                                << ": t = " << s.t << ", psi0 = " << s.psi0;
+        }
+        int unreached = 0;
+        for (const PlannedGeodesic& g : plan.geodesics) {
+            bool reached = false;
+            for (const test::ShootingResult& s : found)
+                reached = reached || same(g, s);
+            if (!reached) {
+                ++unreached;
+                EXPECT_LT(std::fabs(g.modulusGap), 1e-3)
+                    << "target " << to.x << ", " << to.y << ", " << to.phi << ": t = " << g.t;
+            }
+        }
+        EXPECT_EQ(plan.geodesics.size(), found.size() + unreached)
+            << to.x << ", " << to.y << ", " << to.phi;
+        ++compared;
+        matched += static_cast<int>(found.size());
+        nearSeparatrix += unreached;
+    }
+    std::printf("%d targets: %d motions found by both, %d more next to the separatrix\n", compared,
+                matched, nearSeparatrix);
+    // the motion the grid missed
+    const Plan far = planVakonomic(request({-20, 3, 0}));
+    bool listed = false;
+    for (const PlannedGeodesic& g : far.geodesics)
+        listed = listed ||
+                 (std::fabs(g.t - 28.1995235464) < 1e-9 && std::fabs(g.psi0 + 1.6529625491) < 1e-9);
+    EXPECT_TRUE(listed);
+}
+
 // Far targets: the optimum drives nearly straight, its pendulum dwelling next to the saddle
 // Psi = pi/2, so 1 - k^2 falls like e^{-d/b} (docs/physics.md §8, §10). The planner carries
 // 1 - k^2 itself: its own end is within 1e-10 at 20 b; rk8pd from the double Psidot0 checks the

@@ -15,6 +15,7 @@
 #include "scene/scene_json.h"
 #include "scene/scene_plan.h"
 #include "shell/main_window.h"
+#include "shell/plan_timeline.h"
 #include "shell/playback.h"
 #include "shell/presentation_mode.h"
 #include "shell/timeline_bar.h"
@@ -22,6 +23,8 @@
 #include <QAction>
 #include <QElapsedTimer>
 #include <QMenuBar>
+#include <QRegularExpression>
+#include <QSlider>
 #include <QTemporaryDir>
 #include <QtTest>
 #include <qcustomplot.h>
@@ -136,6 +139,7 @@ class TestPlanTool : public QObject {
     void trackingThePlanMakesItThePath();
     void playAnimatesTheChosenMotion();
     void thePlotsAndTheAccuracyDockShowTheChosenMotion();
+    void theTimelineAndTheExportFollowThePlayedMotion();
     void thePlanIsSavedAndRestored();
     void aBadPlanInAFileIsRefusedNamingItsField();
     void fitsAt1024x768AndInPresentation();
@@ -573,6 +577,110 @@ void TestPlanTool::undoRestoresThePlan() {
     QVERIFY(!m_window->document()->scene().plan);
     QCOMPARE(m_tool->plan().to.x, before.x);
     QCOMPARE(m_tool->plan().to.y, before.y);
+}
+
+// While a motion is chosen in plan mode the timeline is its own: it runs over the motion's
+// duration, follows the played time, and moves the played bodies; File > Export plots writes the
+// motion's plots (its genuine vakonomic body and the free ghost), not the scene's.
+void TestPlanTool::theTimelineAndTheExportFollowThePlayedMotion() {
+    Scene s = straightScene();
+    s.plan = ScenePlan{};
+    s.plan->to = {0.6, 0.4, 1.0};
+    m_window->document()->loadNow(s);
+    QVERIFY(m_canvas->planMode());
+    TimelineBar* timeline = m_window->timeline();
+    Playback* scene = m_window->playback();
+    const double sceneEnd = m_window->document()->solution()->tEnd();
+    QCOMPARE(scene->tEnd(), sceneEnd);
+    QCOMPARE(m_tool->chosen(), 0);
+    const PlannedGeodesic g = m_tool->planned().geodesics.at(0);
+    QVERIFY2(std::abs(g.t - sceneEnd) > 0.5, // the two durations tell apart
+             qPrintable(QStringLiteral("%1 %2").arg(g.t).arg(sceneEnd)));
+    // the bar shows the plan's clock over the motion's duration
+    QCOMPARE(timeline->playback(), &m_window->planTimeline()->clock());
+    QCOMPARE(timeline->playback()->tEnd(), g.t);
+    QVERIFY2(timeline->timeLabel()->text().contains(QStringLiteral("/ %1 s").arg(g.t, 0, 'f', 2)),
+             qPrintable(timeline->timeLabel()->text()));
+    // played: the bar's time is the played time, to the motion's end
+    m_window->findChild<QAction*>(QStringLiteral("playPlanAction"))->trigger();
+    QTRY_VERIFY_WITH_TIMEOUT(m_tool->playTime() > 0.3, 3000);
+    QCOMPARE(timeline->playback()->time(), m_tool->playTime());
+    QTRY_VERIFY_WITH_TIMEOUT(!m_tool->playing(), 15000);
+    QCOMPARE(m_tool->playTime(), g.t);
+    QCOMPARE(timeline->playback()->time(), g.t);
+    QCOMPARE(timeline->slider()->value(), timeline->slider()->maximum());
+    // the slider moves the played bodies along the motion
+    timeline->slider()->setValue(timeline->slider()->maximum() / 4);
+    QVERIFY2(std::abs(m_tool->playTime() - 0.25 * g.t) <= 1e-12 * g.t,
+             qPrintable(QString::number(m_tool->playTime())));
+    QVERIFY(timeline->timeLabel()->text().contains(
+        QStringLiteral("%1 s /").arg(0.25 * g.t, 0, 'f', 2)));
+    // and the bar's play plays them, at the bar's speed
+    timeline->playAction()->trigger();
+    QVERIFY(timeline->playback()->isPlaying());
+    QTRY_VERIFY_WITH_TIMEOUT(m_tool->playTime() > 0.3 * g.t, 3000);
+    QCOMPARE(m_tool->playTime(), timeline->playback()->time());
+    timeline->playAction()->trigger();
+    QVERIFY(!timeline->playback()->isPlaying());
+    // the scene's clock never moved
+    QCOMPARE(scene->time(), 0.0);
+    QCOMPARE(scene->tEnd(), sceneEnd);
+
+    // the export: the chosen motion's four time plots, with its curves and its caption
+    QTemporaryDir dir;
+    const QString planned = dir.filePath(QStringLiteral("planned"));
+    QVERIFY(m_window->exportPlotsTo(planned, {QStringLiteral("svg"), QStringLiteral("png")}));
+    const QString curves[4][2] = {
+        {QStringLiteral("psi"), QStringLiteral("planned \u03a8 (vakonomic)")},
+        {QStringLiteral("chi"), QStringLiteral("planned \u03c7 (vakonomic)")},
+        {QStringLiteral("lambda"), QStringLiteral("planned \u03bb (eq. 21)")},
+        {QStringLiteral("energy"), QStringLiteral("planned T (vakonomic)")}};
+    const QString ghost[4] = {QStringLiteral("free \u03a8"), QStringLiteral("free \u03c7"),
+                              QString(), QStringLiteral("free T")};
+    for (int i = 0; i < 4; ++i) {
+        QFile svg(planned + QLatin1Char('/') + curves[i][0] + QStringLiteral(".svg"));
+        QVERIFY2(svg.open(QIODevice::ReadOnly), qPrintable(svg.fileName()));
+        // the words drawn: the SVG's text items in order (a Greek letter is a run of its own)
+        QString text;
+        const QRegularExpression item(QStringLiteral(">([^<]*)</text>"));
+        for (const auto& m : item.globalMatch(QString::fromUtf8(svg.readAll())))
+            text += m.captured(1);
+        const auto has = [&](const QString& words) { return text.contains(words.toHtmlEscaped()); };
+        QVERIFY2(has(curves[i][1]), qPrintable(curves[i][0]));
+        if (!ghost[i].isEmpty())
+            QVERIFY2(has(ghost[i]), qPrintable(curves[i][0]));
+        QVERIFY2(!has(QStringLiteral("controlled")), qPrintable(curves[i][0]));
+        QVERIFY2(has(QStringLiteral("planned motion from")), qPrintable(curves[i][0]));
+        QVERIFY2(has(QStringLiteral("t = %1 s").arg(g.t, 0, 'g', 10)), qPrintable(curves[i][0]));
+        QVERIFY(
+            !QImage(planned + QLatin1Char('/') + curves[i][0] + QStringLiteral(".png")).isNull());
+    }
+    // CHAPLYGIN_PLAN_SHOTS: the window with the bar on the plan's clock and the exported plots
+    if (const QString shots = qEnvironmentVariable("CHAPLYGIN_PLAN_SHOTS"); !shots.isEmpty()) {
+        QVERIFY(m_window->grab().save(shots + QStringLiteral("/plan-timeline.png")));
+        QVERIFY(m_window->exportPlotsTo(shots + QStringLiteral("/plan-plots"),
+                                        {QStringLiteral("png")}));
+    }
+    // the scene's trajectory and the paper's figure are the scene's, not the plan's
+    QVERIFY(!QFile::exists(planned + QStringLiteral("/trajectory.svg")));
+    // the exported curve is the motion's: its time axis ends at the motion's end, and the data
+    // drawn are those the Plots dock shows for it (checked against RK4 above)
+    const PlotSeries series = collectPlanSeries(m_tool->plannedRequest(), g, 800);
+    QCOMPARE(series.vakT.back(), g.t);
+
+    // out of plan mode: the scene's clock on the bar again, where it was, and the scene's plots
+    m_canvas->setPlanMode(false);
+    QCOMPARE(timeline->playback(), scene);
+    QCOMPARE(scene->time(), 0.0);
+    QVERIFY(
+        timeline->timeLabel()->text().contains(QStringLiteral("/ %1 s").arg(sceneEnd, 0, 'f', 2)));
+    const QString sceneDir = dir.filePath(QStringLiteral("scene"));
+    QVERIFY(m_window->exportPlotsTo(sceneDir, {QStringLiteral("svg")}));
+    QFile psi(sceneDir + QStringLiteral("/psi.svg"));
+    QVERIFY(psi.open(QIODevice::ReadOnly));
+    const QByteArray scenePsi = psi.readAll();
+    QVERIFY(scenePsi.contains(">controlled "));
+    QVERIFY(!scenePsi.contains("planned motion from"));
 }
 
 void TestPlanTool::thePlanIsSavedAndRestored() {
