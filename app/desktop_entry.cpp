@@ -85,6 +85,7 @@ struct ScreenshotOptions {
     std::string language;      ///< --language en|pt_BR: that catalogue instead of the system's
     std::string viewReport;    ///< --view-report FILE.json: the canvas's place and map
     std::optional<BodyDisplay> body; ///< --body scale|outline|marker
+    bool wheelView = false;          ///< --wheel-view: the side view of the wheels
     std::vector<QPointF> measure;    ///< --measure: the ruler's (and protractor's) points [m]
     std::optional<QPointF> probe;    ///< --probe: where the probe hovers [m]
     std::string lecture;             ///< --lecture FILE.json: a lecture instead of a scene
@@ -178,6 +179,7 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
         checkBodyOption(*body);
         o.body = bodyDisplayNamed(*body);
     }
+    o.wheelView = given.has("--wheel-view");
     if (auto measure = given.value("--measure"))
         o.measure = readMeasure(*measure);
     if (auto probe = given.value("--probe"))
@@ -302,10 +304,11 @@ int renderScreenshot(const ScreenshotOptions& o) {
         dock->show();
         dock->raise();
     }
-    if (o.body) {
+    if (o.body || o.wheelView) {
         // this picture only: the saved choice stays
         CanvasStyle style = window.canvas()->canvasStyle();
-        style.body = *o.body;
+        style.body = o.body.value_or(style.body);
+        style.wheelInset = style.wheelInset || o.wheelView;
         window.canvas()->setCanvasStyle(style);
     }
     QCoreApplication::processEvents();

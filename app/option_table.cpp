@@ -60,6 +60,10 @@ const std::array kOptions = {
                        "screenshot or --animation; auto (the default) picks one\n"
                        "from the body's size beside the path's",
                .modes = Screenshot | Headless, .section = S::Screenshot},
+    OptionSpec{.name = "--wheel-view", .argument = "",
+               .help = "the side view of the disk's or the carriage's wheels turning\n"
+                       "(View > Bodies > Side view of the wheels) in the screenshot",
+               .modes = Screenshot, .section = S::Screenshot},
     OptionSpec{.name = "--language", .argument = "en|pt_BR",
                .help = "that catalogue instead of the system's (exit 2 when it is not\n"
                        "installed)",
