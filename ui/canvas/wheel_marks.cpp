@@ -122,14 +122,14 @@ QPointF spokeTip(QPointF centre, double radius, double theta, int k) {
 }
 
 QString wheelLabel(const WheelAngles& angles, int wheel) {
-    const auto tr = [](const char* text) {
-        return QCoreApplication::translate("WheelInset", text);
-    };
     if (angles.wheels == 1)
-        return tr("\u03b8 = %1 rad").arg(angles.theta1, 0, 'f', 2);
+        return QCoreApplication::translate("WheelInset", "\u03b8 = %1 rad")
+            .arg(angles.theta1, 0, 'f', 2);
     if (wheel == 0)
-        return tr("1 right: \u03b8\u2081 = %1 rad").arg(angles.theta1, 0, 'f', 2);
-    return tr("2 left: \u03b8\u2082 = %1 rad").arg(angles.theta2, 0, 'f', 2);
+        return QCoreApplication::translate("WheelInset", "1 right: \u03b8\u2081 = %1 rad")
+            .arg(angles.theta1, 0, 'f', 2);
+    return QCoreApplication::translate("WheelInset", "2 left: \u03b8\u2082 = %1 rad")
+        .arg(angles.theta2, 0, 'f', 2);
 }
 
 void paintWheelInset(QPainter& painter, const QRectF& box, const WheelAngles& angles,
