@@ -90,7 +90,7 @@ WheelInsetLayout wheelInsetLayout(int wheels, double lineScale, const QFont& fon
     const double pad = 8 * lineScale;
     out.radius = 26 * lineScale;
     // the widest label a wheel can have: its angle at six digits
-    WheelAngles wide{wheels, -99999.99, -99999.99};
+    WheelAngles wide{wheels, -9999.99, -9999.99};
     double labelWidth = 0;
     for (int k = 0; k < wheels; ++k)
         labelWidth = std::max(labelWidth, metrics.horizontalAdvance(wheelLabel(wide, k)));
