@@ -90,6 +90,7 @@ struct ScreenshotOptions {
     std::optional<QPointF> probe;    ///< --probe: where the probe hovers [m]
     std::string lecture;             ///< --lecture FILE.json: a lecture instead of a scene
     int lectureEntry = 1;            ///< --lecture-entry N: its scene shown, from 1
+    int plotsZoom = 0;               ///< --plots-zoom N: the time plots zoomed in N notches
     Scene scene;
 };
 
@@ -198,6 +199,12 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
             throw InputError("--lecture-entry", "must be a whole number from 1 to " +
                                                     std::to_string(kMaxLectureScenes));
         o.lectureEntry = int(n);
+    }
+    if (auto zoom = given.value("--plots-zoom")) {
+        const double n = parseNumber(*zoom, "--plots-zoom");
+        if (!(n >= 0 && n <= 60 && n == int(n)))
+            throw InputError("--plots-zoom", "must be a whole number from 0 to 60");
+        o.plotsZoom = int(n);
     }
     if (!o.lecture.empty())
         return o;
@@ -314,6 +321,9 @@ int renderScreenshot(const ScreenshotOptions& o) {
     QCoreApplication::processEvents();
     window.canvas()->fitScene();
     window.playback()->seek(o.at);
+    // the time plots zoomed about the time shown, as View > Plots' time > Zoom in does
+    for (int notch = 0; notch < o.plotsZoom; ++notch)
+        window.plotsPanel()->zoomInTimeAction()->trigger();
     window.accuracyReadout()->refresh();
     window.plotsPanel()->replotNow();
     QCoreApplication::processEvents();

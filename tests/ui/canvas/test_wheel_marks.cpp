@@ -5,6 +5,7 @@
 // formulas. The side view shows only when asked, and the sleigh's picture does not change.
 #include "canvas/scene_canvas.h"
 #include "canvas/wheel_marks.h"
+#include "desktop_entry.h"
 #include "document/scene_document.h"
 #include "gui_test_support.h"
 #include "shell/body_display_menu.h"
@@ -12,6 +13,7 @@
 
 #include <QImage>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <cmath>
@@ -121,6 +123,7 @@ class TestWheelMarks : public QObject {
     void sideViewOnlyWhenAsked();
     void sleighPictureUnchanged();
     void menuTogglesTheSideView();
+    void screenshotOptions();
 };
 
 void TestWheelMarks::initTestCase() {
@@ -268,6 +271,34 @@ void TestWheelMarks::menuTogglesTheSideView() {
     QVERIFY(action->isChecked());
     action->trigger();
     QVERIFY(!window->canvas()->canvasStyle().wheelInset);
+}
+
+void TestWheelMarks::screenshotOptions() {
+    // --wheel-view draws the side view into the picture (the carriage's differs, the sleigh's
+    // does not); --plots-zoom takes 0 ... 60 notches
+    QTemporaryDir dir;
+    const QByteArray png = dir.filePath(QStringLiteral("shot.png")).toUtf8();
+    auto shot = [&](std::vector<const char*> extra) {
+        std::vector<const char*> args = {
+            "chaplygin-lab", "--screenshot", png.constData(), "--size", "1000x700", "--at", "1.5"};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const int status = runScreenshot(int(args.size()), const_cast<char**>(args.data()));
+        return std::pair(status, QImage(QString::fromUtf8(png)));
+    };
+    const auto [carriage, carriageImage] = shot({"--system", "carriage"});
+    const auto [carriageWheels, carriageWheelsImage] =
+        shot({"--system", "carriage", "--wheel-view"});
+    QCOMPARE(carriage, 0);
+    QCOMPARE(carriageWheels, 0);
+    QVERIFY(carriageImage != carriageWheelsImage);
+    const auto [sleigh, sleighImage] = shot({});
+    const auto [sleighWheels, sleighWheelsImage] = shot({"--wheel-view"});
+    QCOMPARE(sleigh, 0);
+    QCOMPARE(sleighWheels, 0);
+    QCOMPARE(sleighImage, sleighWheelsImage);
+    QCOMPARE(shot({"--plots-zoom", "12"}).first, 0);
+    for (const char* bad : {"61", "-1", "2.5", "x"})
+        QCOMPARE(shot({"--plots-zoom", bad}).first, 2);
 }
 
 QTEST_MAIN(TestWheelMarks)
