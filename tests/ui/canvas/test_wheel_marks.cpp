@@ -279,8 +279,9 @@ void TestWheelMarks::screenshotOptions() {
     QTemporaryDir dir;
     const QByteArray png = dir.filePath(QStringLiteral("shot.png")).toUtf8();
     auto shot = [&](std::vector<const char*> extra) {
-        std::vector<const char*> args = {
-            "chaplygin-lab", "--screenshot", png.constData(), "--size", "1000x700", "--at", "1.5"};
+        std::vector<const char*> args = {"chaplygin-lab", "--screenshot", png.constData(),
+                                         "--size",        "1000x700",     "--at",
+                                         "1.5",           "--preset",     "sinusoid"};
         args.insert(args.end(), extra.begin(), extra.end());
         const int status = runScreenshot(int(args.size()), const_cast<char**>(args.data()));
         return std::pair(status, QImage(QString::fromUtf8(png)));
