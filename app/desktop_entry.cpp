@@ -85,10 +85,12 @@ struct ScreenshotOptions {
     std::string language;      ///< --language en|pt_BR: that catalogue instead of the system's
     std::string viewReport;    ///< --view-report FILE.json: the canvas's place and map
     std::optional<BodyDisplay> body; ///< --body scale|outline|marker
+    bool wheelView = false;          ///< --wheel-view: the side view of the wheels
     std::vector<QPointF> measure;    ///< --measure: the ruler's (and protractor's) points [m]
     std::optional<QPointF> probe;    ///< --probe: where the probe hovers [m]
     std::string lecture;             ///< --lecture FILE.json: a lecture instead of a scene
     int lectureEntry = 1;            ///< --lecture-entry N: its scene shown, from 1
+    int plotsZoom = 0;               ///< --plots-zoom N: the time plots zoomed in N notches
     Scene scene;
 };
 
@@ -178,6 +180,7 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
         checkBodyOption(*body);
         o.body = bodyDisplayNamed(*body);
     }
+    o.wheelView = given.has("--wheel-view");
     if (auto measure = given.value("--measure"))
         o.measure = readMeasure(*measure);
     if (auto probe = given.value("--probe"))
@@ -196,6 +199,12 @@ ScreenshotOptions parseScreenshotOptions(int argc, char** argv) {
             throw InputError("--lecture-entry", "must be a whole number from 1 to " +
                                                     std::to_string(kMaxLectureScenes));
         o.lectureEntry = int(n);
+    }
+    if (auto zoom = given.value("--plots-zoom")) {
+        const double n = parseNumber(*zoom, "--plots-zoom");
+        if (!(n >= 0 && n <= 60 && n == int(n)))
+            throw InputError("--plots-zoom", "must be a whole number from 0 to 60");
+        o.plotsZoom = int(n);
     }
     if (!o.lecture.empty())
         return o;
@@ -302,15 +311,19 @@ int renderScreenshot(const ScreenshotOptions& o) {
         dock->show();
         dock->raise();
     }
-    if (o.body) {
+    if (o.body || o.wheelView) {
         // this picture only: the saved choice stays
         CanvasStyle style = window.canvas()->canvasStyle();
-        style.body = *o.body;
+        style.body = o.body.value_or(style.body);
+        style.wheelInset = style.wheelInset || o.wheelView;
         window.canvas()->setCanvasStyle(style);
     }
     QCoreApplication::processEvents();
     window.canvas()->fitScene();
     window.playback()->seek(o.at);
+    // the time plots zoomed about the time shown, as View > Plots' time > Zoom in does
+    for (int notch = 0; notch < o.plotsZoom; ++notch)
+        window.plotsPanel()->zoomInTimeAction()->trigger();
     window.accuracyReadout()->refresh();
     window.plotsPanel()->replotNow();
     QCoreApplication::processEvents();

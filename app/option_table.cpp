@@ -60,6 +60,14 @@ const std::array kOptions = {
                        "screenshot or --animation; auto (the default) picks one\n"
                        "from the body's size beside the path's",
                .modes = Screenshot | Headless, .section = S::Screenshot},
+    OptionSpec{.name = "--wheel-view", .argument = "",
+               .help = "the side view of the disk's or the carriage's wheels turning\n"
+                       "(View > Bodies > Side view of the wheels) in the screenshot",
+               .modes = Screenshot, .section = S::Screenshot},
+    OptionSpec{.name = "--plots-zoom", .argument = "N",
+               .help = "the time plots zoomed in N notches (0 ... 60) about the time\n"
+                       "shown, as View > Plots' time > Zoom in on the time",
+               .modes = Screenshot, .section = S::Screenshot},
     OptionSpec{.name = "--language", .argument = "en|pt_BR",
                .help = "that catalogue instead of the system's (exit 2 when it is not\n"
                        "installed)",

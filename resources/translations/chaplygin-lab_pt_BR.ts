@@ -1033,6 +1033,25 @@ realimentação: %2</translation>
     </message>
 </context>
 <context>
+    <name>WheelInset</name>
+    <message>
+        <source>Side view, ahead →</source>
+        <translation>Vista lateral, à frente →</translation>
+    </message>
+    <message>
+        <source>θ = %1 rad</source>
+        <translation>θ = %1 rad</translation>
+    </message>
+    <message>
+        <source>1 right: θ₁ = %1 rad</source>
+        <translation>1 direita: θ₁ = %1 rad</translation>
+    </message>
+    <message>
+        <source>2 left: θ₂ = %1 rad</source>
+        <translation>2 esquerda: θ₂ = %1 rad</translation>
+    </message>
+</context>
+<context>
     <name>WorkPrecisionPlot</name>
     <message>
         <source>seconds per solve</source>
@@ -1293,6 +1312,18 @@ realimentação: %2</translation>
     <message>
         <source>Ctrl+Shift+0</source>
         <translation>Ctrl+Shift+0</translation>
+    </message>
+    <message>
+        <source>Side view of the &amp;wheels</source>
+        <translation>&amp;Vista lateral das rodas</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+4</source>
+        <translation>Ctrl+Shift+4</translation>
+    </message>
+    <message>
+        <source>A side view of the disk&apos;s or the carriage&apos;s wheels in a corner of the canvas, their spokes turning by the rolling angle</source>
+        <translation>Uma vista lateral das rodas do disco ou do carrinho num canto da tela, com os raios girando pelo ângulo de rolamento</translation>
     </message>
 </context>
 <context>

@@ -101,6 +101,7 @@ CanvasStyle CanvasStyle::load(const QSettings& settings) {
     s.body = static_cast<BodyDisplay>(settings.value(key("bodyDisplay"), int(s.body)).toInt());
     s.trailWidth = settings.value(key("trailWidth"), s.trailWidth).toDouble();
     s.bodyOpacity = settings.value(key("bodyOpacity"), s.bodyOpacity).toDouble();
+    s.wheelInset = settings.value(key("wheelInset"), s.wheelInset).toBool();
     return s.sanitized();
 }
 
@@ -108,6 +109,7 @@ void CanvasStyle::save(QSettings& settings) const {
     settings.setValue(key("bodyDisplay"), int(body));
     settings.setValue(key("trailWidth"), trailWidth);
     settings.setValue(key("bodyOpacity"), bodyOpacity);
+    settings.setValue(key("wheelInset"), wheelInset);
 }
 
 CanvasStyle CanvasStyle::presentation(double factor) const {

@@ -28,6 +28,7 @@ struct CanvasStyle {
     BodyDisplay body = BodyDisplay::Automatic;
     double trailWidth = 2;    ///< px, before lineScale
     double bodyOpacity = 0.8; ///< of the controlled body's fill, 0.1 ... 1
+    bool wheelInset = false;  ///< a side view of the disk's or the carriage's wheels turning
 
     QColor controlled() const;
     QColor free() const;
@@ -45,7 +46,8 @@ struct CanvasStyle {
 
     /// Clamps the numbers into their ranges.
     CanvasStyle sanitized() const;
-    /// The user's choices (body display, trail width, opacity) from and to QSettings.
+    /// The user's choices (body display, trail width, opacity, the wheels' side view) from and
+    /// to QSettings.
     static CanvasStyle load(const QSettings& settings);
     void save(QSettings& settings) const;
     /// A presentation copy: scaled by factor, high contrast, large time read-out.

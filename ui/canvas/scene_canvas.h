@@ -89,6 +89,11 @@ class SceneCanvas : public QWidget {
     const VectorLayer& vectorLayer() const { return m_vectors; }
     /// The layer itself: tests move its scale bars to a corner of their choice.
     VectorLayer& vectorLayer() { return m_vectors; }
+    /// The box [px] of the side view of the wheels (CanvasStyle::wheelInset), in the corner of
+    /// the drawing area the bodies cross least over the run, not the scale bars'; empty when it
+    /// is not drawn (off, the sleigh, no solution).
+    QRectF wheelInsetBounds() const;
+    Qt::Corner wheelInsetCorner() const { return m_insetCorner; }
     QSize minimumSizeHint() const override { return {240, 180}; }
 
     const CanvasStyle& canvasStyle() const { return m_look.style; }
@@ -297,6 +302,11 @@ class SceneCanvas : public QWidget {
     /// over the run (the bottom right when none is crossed less): chosen again when the motion,
     /// the zoom, the area or the view's place changes.
     void placeScaleBars(const Solution& solution);
+    /// The side view of the wheels in its corner, chosen as the scale bars' is, among the
+    /// corners they leave.
+    void placeWheelInset(const Solution& solution);
+    QRectF wheelInsetBounds(Qt::Corner corner) const;
+    QFont wheelInsetFont() const;
     void centreOnBody();
     /// The vertices of the current drawn path (empty unless it is a polyline).
     std::vector<std::pair<double, double>> drawnPoints() const;
@@ -344,6 +354,18 @@ class SceneCanvas : public QWidget {
     mutable CanvasCurves m_curves;
     BodyClipShapes m_bodyClips;
     PaintedEdgeMarkers m_edgeMarkers;
+    struct WheelInsetPlacement {
+        const Solution* solution = nullptr;
+        double scale = 0;
+        QRectF area;
+        QPointF cell;
+        QSizeF size;
+        Qt::Corner bars = Qt::BottomRightCorner;
+        bool barsShown = false;
+        bool operator==(const WheelInsetPlacement&) const = default;
+    };
+    WheelInsetPlacement m_insetPlacedFor;
+    Qt::Corner m_insetCorner = Qt::BottomLeftCorner;
 };
 
 } // namespace chaplygin::ui

@@ -10,8 +10,10 @@
 #include "canvas/pin_painter.h"
 #include "canvas/plan_tool.h"
 #include "canvas/trail_stroke.h"
+#include "canvas/wheel_marks.h"
 #include "document/pin_set.h"
 #include "document/scene_document.h"
+#include "scene/wheel_angles.h"
 
 #include <QFontMetricsF>
 #include <QPaintEvent>
@@ -191,6 +193,91 @@ void SceneCanvas::placeScaleBars(const Solution& solution) {
     }
 }
 
+QFont SceneCanvas::wheelInsetFont() const {
+    QFont f = font();
+    f.setPointSizeF(8.5 * m_look.style.lineScale);
+    return f;
+}
+
+QRectF SceneCanvas::wheelInsetBounds(Qt::Corner corner) const {
+    const auto& solution = m_document->solution();
+    if (!m_look.style.wheelInset || !solution)
+        return {};
+    const int wheels = wheelAngles(solution->scene().system, 0, 0).wheels;
+    const QSizeF size = wheelInsetLayout(wheels, m_look.style.lineScale, wheelInsetFont()).size;
+    const QRectF area = drawingArea();
+    const double margin = 8 * m_look.style.lineScale;
+    if (size.isEmpty() || size.width() + 2 * margin > area.width() ||
+        size.height() + 2 * margin > area.height())
+        return {};
+    const bool right = corner == Qt::TopRightCorner || corner == Qt::BottomRightCorner;
+    const bool bottom = corner == Qt::BottomLeftCorner || corner == Qt::BottomRightCorner;
+    const double x = right ? area.right() - margin - size.width() : area.left() + margin;
+    const double y = bottom ? area.bottom() - margin - size.height() : area.top() + margin;
+    return {QPointF(std::round(x), std::round(y)), size};
+}
+
+QRectF SceneCanvas::wheelInsetBounds() const {
+    return wheelInsetBounds(m_insetCorner);
+}
+
+void SceneCanvas::placeWheelInset(const Solution& solution) {
+    const QRectF here = wheelInsetBounds(Qt::BottomLeftCorner);
+    if (here.isEmpty())
+        return;
+    const VectorOverlay& overlay = m_document->scene().vectors;
+    const QRectF area = drawingArea();
+    const bool barsShown = !m_vectors.scaleBarsBounds(overlay, area).isEmpty();
+    const QTransform world = worldTransform();
+    const WheelInsetPlacement key{
+        &solution,
+        m_view.scale(),
+        area,
+        QPointF(std::floor(world.dx() * 4 / std::max(1.0, area.width())),
+                std::floor(world.dy() * 4 / std::max(1.0, area.height()))),
+        here.size(),
+        m_vectors.barsCorner(),
+        barsShown};
+    if (key == m_insetPlacedFor)
+        return;
+    m_insetPlacedFor = key;
+    // the corners the scale bars leave, each scored by the bodies at 49 times of the run that
+    // cross it, then by the path's points under it; the first of the least crossed
+    constexpr int kSamples = 48;
+    std::vector<Qt::Corner> corners;
+    for (Qt::Corner c : {Qt::BottomLeftCorner, Qt::TopRightCorner, Qt::BottomRightCorner})
+        if (!barsShown || c != m_vectors.barsCorner())
+            corners.push_back(c);
+    std::vector<int> crossed(corners.size(), 0);
+    const SystemSpec& spec = solution.scene().system;
+    const BodyLook look = bodyLook();
+    for (int k = 0; k <= kSamples; ++k) {
+        const MotionSample at = solution.at(solution.tEnd() * k / kSamples);
+        for (const DrawnBody& drawn : drawnBodies(at)) {
+            const QRectF body = BodySprites::pixelBounds(world, m_view.scale(), spec,
+                                                         solution.system(), drawn.pose, look);
+            for (std::size_t c = 0; c < corners.size(); ++c)
+                crossed[c] += body.intersects(wheelInsetBounds(corners[c])) ? 1 : 0;
+        }
+    }
+    std::vector<std::pair<int, int>> score(corners.size());
+    for (std::size_t c = 0; c < corners.size(); ++c) {
+        const QRectF box = wheelInsetBounds(corners[c]);
+        int under = 0;
+        for (const QPointF& q : curves().path().points)
+            under += box.contains(world.map(q)) ? 1 : 0;
+        score[c] = {crossed[c], under};
+    }
+    const Qt::Corner best =
+        corners[std::size_t(std::min_element(score.begin(), score.end()) - score.begin())];
+    if (best != m_insetCorner) {
+        const QRectF left = wheelInsetBounds();
+        m_insetCorner = best;
+        update(QRegion(left.toAlignedRect().adjusted(-2, -2, 2, 2)) +
+               wheelInsetBounds().toAlignedRect().adjusted(-2, -2, 2, 2));
+    }
+}
+
 void SceneCanvas::updateTrailLayer(const MotionSample& now, const QPixmap& base, QPoint origin) {
     const qreal dpr = base.devicePixelRatio();
     // the layer's extent in the widget's pixels
@@ -271,6 +358,10 @@ void SceneCanvas::updateMoving(double from, QPointF centre) {
     for (const EdgeMarker& marker : edgeMarkersAt(now))
         dirty += marker.box.toAlignedRect().adjusted(-2, -2, 2, 2);
     dirty += QRect(0, 0, width(), topBandPx()); // the time read-out
+    // the wheels' side view turns every frame; scrolling moved its pixels too
+    const QRect inset = wheelInsetBounds().toAlignedRect().adjusted(-2, -2, 2, 2);
+    dirty += inset;
+    dirty += inset.translated(shift);
     update(dirty);
 }
 
@@ -346,9 +437,28 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
             bodiesDrawn &= m_bodies.paint(p, world, m_view.scale(), spec, solution->system(),
                                           body->pose, body->colour, body->ghost, look);
         paintPathOverBodies(p, *now);
+        // the controlled body's wheels rolling: stripes on their treads, a side view in a corner
+        const WheelAngles angles = wheelAnglesAt(*solution, *now);
+        if (look.display != BodyDisplay::Marker && angles.wheels > 0) {
+            p.save();
+            QTransform pose;
+            pose.translate(now->x, now->y);
+            pose.rotate(now->phi * 180.0 / M_PI);
+            p.setTransform(pose * world);
+            paintTreadStripes(p, spec, angles, m_look.style.controlled().darker(140),
+                              m_look.style.lineScale);
+            p.restore();
+        }
         // the arrows end at the scene's edge, never over the legend under it
         m_vectors.paint(p, solution, m_document->scene().vectors, *now, worldTransform());
         p.restore();
+        if (angles.wheels > 0 && m_look.style.wheelInset) {
+            placeWheelInset(*solution);
+            const QRectF inset = wheelInsetBounds();
+            if (!inset.isEmpty())
+                paintWheelInset(p, inset, angles, m_look.style.controlled().darker(140),
+                                m_look.style.lineScale, wheelInsetFont());
+        }
         // where the bodies out of view went
         m_edgeMarkers.paint(p, edgeMarkersAt(*now), edgeMarkerFont(), m_look.style.lineScale);
         // a planned motion played: its time along it and its arrival (docs/physics.md §10)

@@ -9,9 +9,11 @@
 #include "plots/time_axes.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QGridLayout>
 #include <QMenu>
 #include <QPalette>
+#include <QTimer>
 
 #include <cmath>
 #include <qcustomplot.h>
@@ -81,24 +83,58 @@ QWidget* PlotsPanel::makeCursor(QCustomPlot* plot) {
 }
 
 void PlotsPanel::makeSeekable(QCustomPlot* plot) {
-    // press seeks, dragging with the button down scrubs; the time of the panel under the mouse
+    if (!m_clickSeek) {
+        m_clickSeek = new QTimer(this);
+        m_clickSeek->setSingleShot(true);
+        connect(m_clickSeek, &QTimer::timeout, this,
+                [this] { emitSeek(m_pendingSeek.t, m_pendingSeek.plan); });
+    }
+    // a press seeks once no second press made it a double click; dragging with the button
+    // down scrubs at once; the time of the panel under the mouse
     auto seek = [this, plot](QMouseEvent* e) {
         if (!(e->buttons() & Qt::LeftButton) || (e->modifiers() & Qt::ShiftModifier) ||
             m_timePan.active)
             return;
+        const bool press = e->type() == QEvent::MouseButtonPress;
+        if (press) {
+            m_pendingSeek.pressedAt = e->position();
+            m_pendingSeek.dragging = false;
+        } else if (!m_pendingSeek.dragging) {
+            const QPointF moved = e->position() - m_pendingSeek.pressedAt;
+            if (moved.manhattanLength() < QApplication::startDragDistance())
+                return;
+            m_pendingSeek.dragging = true;
+        }
         for (QCPAxisRect* rect : plot->axisRects())
             if (e->position().x() >= rect->left() - 1 && e->position().x() <= rect->right() + 1)
                 if (double t = rect->axis(QCPAxis::atBottom)->pixelToCoord(e->position().x());
                     std::isfinite(t)) {
-                    if (m_plan)
-                        emit planSeekRequested(t);
-                    else
-                        emit seekRequested(t);
+                    if (press) {
+                        m_pendingSeek.t = t;
+                        m_pendingSeek.plan = m_plan.has_value();
+                        m_clickSeek->start(QApplication::doubleClickInterval());
+                    } else {
+                        m_clickSeek->stop();
+                        emitSeek(t, m_plan.has_value());
+                    }
                     return;
                 }
     };
     connect(plot, &QCustomPlot::mousePress, this, seek);
     connect(plot, &QCustomPlot::mouseMove, this, seek);
+    // the double click's presses do not seek
+    connect(plot, &QCustomPlot::mouseDoubleClick, m_clickSeek, &QTimer::stop);
+}
+
+void PlotsPanel::emitSeek(double t, bool plan) {
+    if (plan && m_plan)
+        emit planSeekRequested(t);
+    else if (!plan)
+        emit seekRequested(t);
+}
+
+bool PlotsPanel::seekPending() const {
+    return m_clickSeek && m_clickSeek->isActive();
 }
 
 namespace {

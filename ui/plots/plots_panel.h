@@ -12,6 +12,7 @@ class QCPAxisRect;
 class QCustomPlot;
 class QMenu;
 class QGridLayout;
+class QTimer;
 
 namespace chaplygin::ui {
 
@@ -39,6 +40,8 @@ class PlotsPanel : public QWidget {
     QAction* fitAllAction(int index) const { return m_fitAll[index]; }
     /// The time the time plots show, shared by all of them.
     const TimeWindow& timeWindow() const { return m_timeWindow; }
+    /// Whether a click's seek waits for the double-click interval to pass.
+    bool seekPending() const;
     /// "Follow the cursor" (checkable), "Whole run", "Zoom in on the time" and "Zoom out the
     /// time" (about the time cursor): in every time plot's context menu and the View menu.
     QAction* followCursorAction() const { return m_followCursor; }
@@ -116,6 +119,17 @@ class PlotsPanel : public QWidget {
         QCPRange from;
         double secondsPerPixel = 0;
     } m_timePan;
+    /// A press seeks once the double-click interval has passed without a second press, so that
+    /// a double click (the whole run) does not seek; a drag beyond the drag distance scrubs at
+    /// once.
+    QTimer* m_clickSeek = nullptr;
+    struct PendingSeek {
+        double t = 0;
+        bool plan = false; ///< the planned motion's time, not the scene's
+        QPointF pressedAt; ///< [px] in the plot
+        bool dragging = false;
+    } m_pendingSeek;
+    void emitSeek(double t, bool plan);
     std::array<QWidget*, 2> m_errorCursors{};
     bool m_errorsShown = false;
     double m_time = 0;

@@ -45,6 +45,17 @@ BodyDisplayMenu::BodyDisplayMenu(QWidget* parent) : QMenu(tr("&Bodies"), parent)
         a->setData(o);
         m_opacity->addAction(a);
     }
+    addSeparator();
+    // the disk's and the carriage's rolling angles, turning in a corner of the canvas
+    m_wheelInset = addAction(tr("Side view of the &wheels"));
+    m_wheelInset->setCheckable(true);
+    m_wheelInset->setShortcut(QKeySequence(tr("Ctrl+Shift+4")));
+    m_wheelInset->setToolTip(tr("A side view of the disk's or the carriage's wheels in a corner "
+                                "of the canvas, their spokes turning by the rolling angle"));
+    connect(m_wheelInset, &QAction::triggered, this, [this](bool on) {
+        m_style.wheelInset = on;
+        emit styleChosen(m_style);
+    });
     connect(m_display, &QActionGroup::triggered, this, [this](QAction* a) {
         m_style.body = static_cast<BodyDisplay>(a->data().toInt());
         emit styleChosen(m_style);
@@ -81,6 +92,7 @@ void BodyDisplayMenu::setCanvasStyle(const CanvasStyle& style) {
         if (best)
             best->setChecked(true);
     };
+    m_wheelInset->setChecked(style.wheelInset);
     checkNearest(m_trail, style.trailWidth);
     checkNearest(m_opacity, style.bodyOpacity);
 }

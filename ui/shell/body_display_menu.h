@@ -7,8 +7,8 @@ class QActionGroup;
 
 namespace chaplygin::ui {
 
-/// View > Bodies: to scale, outline or marker; the trail width; the body's opacity. Each choice
-/// emits the whole new style.
+/// View > Bodies: to scale, outline or marker; the trail width; the body's opacity; the side view
+/// of the wheels. Each choice emits the whole new style.
 class BodyDisplayMenu : public QMenu {
     Q_OBJECT
   public:
@@ -19,6 +19,8 @@ class BodyDisplayMenu : public QMenu {
     const CanvasStyle& chosenStyle() const { return m_style; }
     /// The action of a display mode (tests and shortcuts).
     QAction* displayAction(BodyDisplay display) const;
+    /// View > Bodies > Side view of the wheels (Ctrl+Shift+4).
+    QAction* wheelInsetAction() const { return m_wheelInset; }
 
   signals:
     void styleChosen(const CanvasStyle& style);
@@ -28,6 +30,7 @@ class BodyDisplayMenu : public QMenu {
     QActionGroup* m_display;
     QActionGroup* m_trail;
     QActionGroup* m_opacity;
+    QAction* m_wheelInset;
 };
 
 } // namespace chaplygin::ui

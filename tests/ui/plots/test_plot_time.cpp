@@ -2,6 +2,7 @@
 // the mouse, a drag pans it, a double click shows the whole run, a window follows the time cursor,
 // and every range stays finite, within the run and a few samples wide. The expected ranges come
 // from the axes' pixel geometry and the document's series, computed here.
+#include "canvas/scene_canvas.h"
 #include "plots/plots_panel.h"
 #include "plots/time_window.h"
 #include "shell/playback.h"
@@ -71,6 +72,7 @@ class TestPlotTime : public QObject, private test::WindowFixture {
     void valueAxesFitWhatIsShown();
     void dragPansTheTimeAndDoesNotSeek();
     void doubleClickShowsTheWholeRun();
+    void doubleClickDoesNotSeek();
     void windowFollowsTheCursorDuringPlayback();
     void wheelBurstsKeepRangesFiniteAndWithinTheRun();
     void timeWindowRefusesNonFiniteInput();
@@ -198,12 +200,45 @@ void TestPlotTime::dragPansTheTimeAndDoesNotSeek() {
           Qt::NoButton);
     const QCPRange run = plots()->timeWindow().whole();
     checkAllShow(QCPRange(run.lower, run.lower + before.size()), "past the start");
-    // a plain click still seeks
+    // a plain click still seeks, once the double-click interval has passed
     const double x = rect->left() + 0.25 * rect->width();
     const double t = timeAtPixel(lambda, x);
     QTest::mouseClick(lambda, Qt::LeftButton, {}, QPoint(int(x), int(middle.y())));
-    QVERIFY(std::abs(m_window->playback()->time() - timeAtPixel(lambda, int(x))) < 1e-9 ||
-            std::abs(m_window->playback()->time() - t) < perPixel);
+    QTRY_VERIFY(std::abs(m_window->playback()->time() - timeAtPixel(lambda, int(x))) < 1e-9 ||
+                std::abs(m_window->playback()->time() - t) < perPixel);
+}
+
+void TestPlotTime::doubleClickDoesNotSeek() {
+    // a double click as the window system sends it: press, release, press, double click,
+    // release; the first press's seek waits for the double-click interval and is dropped
+    QCustomPlot* psi = plots()->plot(0);
+    QCPAxisRect* rect = psi->axisRect();
+    for (int notch = 0; notch < 5; ++notch)
+        wheel(psi, rect->center(), 120);
+    plots()->replotNow();
+    const double time = m_window->playback()->time();
+    const QPointF at(rect->left() + 0.7 * rect->width(), rect->center().y());
+    QVERIFY(std::abs(timeAtPixel(psi, at.x()) - time) > 0.1); // a seek there would show
+    mouse(psi, QEvent::MouseButtonPress, at, Qt::LeftButton, Qt::LeftButton);
+    QVERIFY(plots()->seekPending());
+    mouse(psi, QEvent::MouseButtonRelease, at, Qt::LeftButton, Qt::NoButton);
+    mouse(psi, QEvent::MouseButtonPress, at, Qt::LeftButton, Qt::LeftButton);
+    mouse(psi, QEvent::MouseButtonDblClick, at, Qt::LeftButton, Qt::LeftButton);
+    mouse(psi, QEvent::MouseButtonRelease, at, Qt::LeftButton, Qt::NoButton);
+    QVERIFY(!plots()->seekPending());
+    QCOMPARE(plots()->timeWindow().mode(), TimeWindow::Mode::WholeRun);
+    QTest::qWait(QApplication::doubleClickInterval() + 200);
+    QCOMPARE(m_window->playback()->time(), time);
+    QCOMPARE(m_window->canvas()->time(), time);
+    // a drag with the button down scrubs at once, without waiting
+    const QPointF to(rect->left() + 0.3 * rect->width(), rect->center().y());
+    const double target = timeAtPixel(psi, to.x());
+    mouse(psi, QEvent::MouseButtonPress, at, Qt::LeftButton, Qt::LeftButton);
+    mouse(psi, QEvent::MouseMove, to, Qt::NoButton, Qt::LeftButton);
+    QVERIFY(!plots()->seekPending());
+    QVERIFY(std::abs(m_window->playback()->time() - target) <
+            2 * plots()->timeWindow().whole().size() / rect->width());
+    mouse(psi, QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton);
 }
 
 void TestPlotTime::doubleClickShowsTheWholeRun() {
