@@ -29,24 +29,24 @@ constexpr int kTopPx = 26, kLegendPx = 78; // the time line and the legend, befo
 } // namespace
 
 SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
-    : QWidget(parent), m_document(document), m_view(*this),
-      m_drawTool(new DrawTool(m_view, m_look.style, this)),
-      m_editTool(new EditPointsTool(
-          m_view, m_look.style, [this] { return drawnPoints(); }, this)),
-      m_pushTool(new PushTool(
-          m_view, m_look.style, [this](QPointF p) { return grabAt(p); }, this)),
-      m_planTool(new PlanTool(m_view, m_look.style, document, this)),
-      m_measureTool(new MeasureTool(
-          m_view, m_look.style, document,
-          [this] {
-              return MeasureTool::Shown{m_time,          m_look.vakonomic,
-                                        m_look.openLoop, m_look.closedLoop,
-                                        &curves(),       drawingArea()};
-          },
-          this)),
-      m_penTool(new PenTool(
-          m_view, m_look.style, [this] { return sceneArea(); }, this)),
-      m_panTool(new PanTool(m_view, this)) {
+    : QWidget(parent), m_document(document), m_view(*this) {
+    m_tools.draw = new DrawTool(m_view, m_look.style, this);
+    m_tools.edit = new EditPointsTool(
+        m_view, m_look.style, [this] { return drawnPoints(); }, this);
+    m_tools.push = new PushTool(
+        m_view, m_look.style, [this](QPointF p) { return grabAt(p); }, this);
+    m_tools.plan = new PlanTool(m_view, m_look.style, document, this);
+    m_tools.measure = new MeasureTool(
+        m_view, m_look.style, document,
+        [this] {
+            return MeasureTool::Shown{m_time,          m_look.vakonomic,
+                                      m_look.openLoop, m_look.closedLoop,
+                                      &curves(),       drawingArea()};
+        },
+        this);
+    m_tools.pen = new PenTool(
+        m_view, m_look.style, [this] { return sceneArea(); }, this);
+    m_tools.pan = new PanTool(m_view, this);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(false);
     setAutoFillBackground(false);
@@ -58,23 +58,23 @@ SceneCanvas::SceneCanvas(SceneDocument* document, QWidget* parent)
     setAccessibleDescription(tr("The animation: the prescribed path, the controlled body and the "
                                 "free motion from the same start"));
     connect(document, &SceneDocument::solutionChanged, this, &SceneCanvas::onSolutionChanged);
-    for (CanvasTool* tool : allTools())
+    for (CanvasTool* tool : m_tools.all())
         connect(tool, &CanvasTool::changed, this, qOverload<>(&QWidget::update));
     // a stroke drawn or a point moved keeps the view where the path stays in it
-    connect(m_drawTool, &DrawTool::pathDrawn, this, [this](const auto& points) {
+    connect(m_tools.draw, &DrawTool::pathDrawn, this, [this](const auto& points) {
         m_view.setKeepViewForNextPath(true);
         emit pathDrawn(points);
     });
-    connect(m_editTool, &EditPointsTool::pointsEdited, this, [this](const auto& points) {
+    connect(m_tools.edit, &EditPointsTool::pointsEdited, this, [this](const auto& points) {
         m_view.setKeepViewForNextPath(true);
         emit pointsEdited(points);
     });
-    connect(m_pushTool, &PushTool::pushDragged, this, &SceneCanvas::pushDragged);
-    connect(document, &SceneDocument::solutionChanged, m_planTool, [this] {
-        if (m_planMode)
-            m_planTool->syncFromDocument();
+    connect(m_tools.push, &PushTool::pushDragged, this, &SceneCanvas::pushDragged);
+    connect(document, &SceneDocument::solutionChanged, m_tools.plan, [this] {
+        if (m_tools.planMode)
+            m_tools.plan->syncFromDocument();
     });
-    connect(m_panTool, &PanTool::panned, this, [this] {
+    connect(m_tools.pan, &PanTool::panned, this, [this] {
         setFollowBody(false);
         update();
     });
@@ -294,7 +294,8 @@ void SceneCanvas::frame(const QRectF& box, double margin, double minScale, doubl
 void SceneCanvas::fitScene() {
     const auto& solution = m_document->solution();
     // in plan mode the plan's start, target and tracks too
-    const QRectF path = m_planMode ? pathBounds().united(m_planTool->worldBounds()) : pathBounds();
+    const QRectF path =
+        m_tools.planMode ? pathBounds().united(m_tools.plan->worldBounds()) : pathBounds();
     if (!solution || path.isNull())
         return;
     m_view.setFitsEverything(false);
@@ -414,8 +415,8 @@ void SceneCanvas::setFollowing(bool on) {
 }
 
 void SceneCanvas::setDrawMode(bool on) {
-    m_drawMode = on;
-    m_drawTool->cancel();
+    m_tools.drawMode = on;
+    m_tools.draw->cancel();
     if (on) {
         setPlanMode(false);
         setMeasureMode(false);
@@ -426,17 +427,17 @@ void SceneCanvas::setDrawMode(bool on) {
 }
 
 void SceneCanvas::setPlanMode(bool on) {
-    if (on == m_planMode)
+    if (on == m_tools.planMode)
         return;
-    m_planMode = on;
-    m_planTool->cancel();
-    m_planTool->stopPlaying();
+    m_tools.planMode = on;
+    m_tools.plan->cancel();
+    m_tools.plan->stopPlaying();
     if (on) {
         setMeasureMode(false);
         setPenMode(false);
-        m_drawTool->cancel();
-        m_editTool->cancel();
-        m_planTool->syncFromDocument();
+        m_tools.draw->cancel();
+        m_tools.edit->cancel();
+        m_tools.plan->syncFromDocument();
         // the plan in view, unless the user chose the view
         if (m_view.autoFit() && !m_view.follows())
             fitScene();
@@ -447,7 +448,7 @@ void SceneCanvas::setPlanMode(bool on) {
 }
 
 bool SceneCanvas::measureMode() const {
-    return m_measureTool->enabled();
+    return m_tools.measureMode();
 }
 
 void SceneCanvas::setMeasureMode(bool on) {
@@ -457,7 +458,7 @@ void SceneCanvas::setMeasureMode(bool on) {
         setPlanMode(false);
         setPenMode(false);
     }
-    m_measureTool->setEnabled(on);
+    m_tools.measure->setEnabled(on);
     // the probe follows the mouse without a button
     setMouseTracking(on);
     updateCursor();
@@ -466,7 +467,7 @@ void SceneCanvas::setMeasureMode(bool on) {
 }
 
 bool SceneCanvas::penMode() const {
-    return m_penTool->enabled();
+    return m_tools.penMode();
 }
 
 void SceneCanvas::setPenMode(bool on) {
@@ -476,35 +477,19 @@ void SceneCanvas::setPenMode(bool on) {
         setPlanMode(false);
         setMeasureMode(false);
     }
-    m_penTool->setEnabled(on);
+    m_tools.pen->setEnabled(on);
     updateCursor();
     update();
     emit penModeChanged(on);
 }
 
-std::array<CanvasTool*, 7> SceneCanvas::allTools() const {
-    return {m_editTool, m_drawTool, m_planTool, m_measureTool, m_penTool, m_pushTool, m_panTool};
-}
-
-std::vector<CanvasTool*> SceneCanvas::tools() const {
-    if (penMode())
-        return {m_penTool, m_panTool};
-    if (measureMode())
-        return {m_measureTool, m_panTool};
-    if (m_planMode)
-        return {m_planTool, m_panTool};
-    if (m_drawMode)
-        return {m_editTool, m_drawTool, m_panTool};
-    return {m_pushTool, m_panTool};
-}
-
 void SceneCanvas::updateCursor() {
-    for (CanvasTool* tool : allTools())
+    for (CanvasTool* tool : m_tools.all())
         if (tool->active()) {
             setCursor(tool->cursor());
             return;
         }
-    setCursor(m_drawMode || measureMode() || penMode() ? Qt::CrossCursor : Qt::ArrowCursor);
+    setCursor(m_tools.drawMode || measureMode() || penMode() ? Qt::CrossCursor : Qt::ArrowCursor);
 }
 
 void SceneCanvas::setShowVakonomic(bool show) {
@@ -590,7 +575,7 @@ void SceneCanvas::mousePressEvent(QMouseEvent* e) {
                 e->accept();
                 return;
             }
-    for (CanvasTool* tool : tools())
+    for (CanvasTool* tool : m_tools.reachable())
         if (tool->press(*e))
             break;
     updateCursor();
@@ -600,18 +585,18 @@ void SceneCanvas::mousePressEvent(QMouseEvent* e) {
 void SceneCanvas::mouseMoveEvent(QMouseEvent* e) {
     // the gestures under way in the order of their priority: editing a point, a stroke, a push,
     // panning
-    for (CanvasTool* tool : allTools())
+    for (CanvasTool* tool : m_tools.all())
         if (tool->active() && tool->move(*e))
             return;
     // no gesture under way: the mode's tools may show something where the mouse is
     if (e->buttons() == Qt::NoButton)
-        for (CanvasTool* tool : tools())
+        for (CanvasTool* tool : m_tools.reachable())
             if (tool->hover(*e))
                 return;
 }
 
 void SceneCanvas::mouseReleaseEvent(QMouseEvent* e) {
-    for (CanvasTool* tool : allTools())
+    for (CanvasTool* tool : m_tools.all())
         if (tool->active())
             tool->release(*e);
     updateCursor();
@@ -651,21 +636,21 @@ void SceneCanvas::keyPressEvent(QKeyEvent* e) {
         if (!penMode())
             QWidget::keyPressEvent(e);
         else if (e->key() == Qt::Key_A)
-            m_penTool->setKind(m_penTool->kind() == MarkKind::Arrow ? MarkKind::Freehand
-                                                                    : MarkKind::Arrow);
+            m_tools.pen->setKind(m_tools.pen->kind() == MarkKind::Arrow ? MarkKind::Freehand
+                                                                        : MarkKind::Arrow);
         else if (e->key() == Qt::Key_C)
-            m_penTool->nextColour();
+            m_tools.pen->nextColour();
         else
-            m_penTool->clear();
+            m_tools.pen->clear();
         break;
     case Qt::Key_Escape:
     case Qt::Key_Delete:
     case Qt::Key_Backspace:
         // forget the pen's marks, or what was measured
         if (penMode() && e->key() == Qt::Key_Delete)
-            m_penTool->clear();
+            m_tools.pen->clear();
         else if (measureMode())
-            m_measureTool->clear();
+            m_tools.measure->clear();
         else
             QWidget::keyPressEvent(e);
         break;

@@ -3,6 +3,7 @@
 #include "canvas/body_painter.h"
 #include "canvas/body_sprites.h"
 #include "canvas/canvas_style.h"
+#include "canvas/canvas_toolbox.h"
 #include "canvas/canvas_view.h"
 #include "canvas/curve_flattening.h"
 #include "canvas/edge_markers.h"
@@ -50,18 +51,18 @@ class SceneCanvas : public QWidget {
 
     double time() const { return m_time; }
     bool followsBody() const { return m_view.follows(); }
-    bool drawMode() const { return m_drawMode; }
+    bool drawMode() const { return m_tools.drawMode; }
     /// Whether the Plan tool is the mouse's (docs/physics.md §10).
-    bool planMode() const { return m_planMode; }
-    PlanTool* planTool() const { return m_planTool; }
+    bool planMode() const { return m_tools.planMode; }
+    PlanTool* planTool() const { return m_tools.plan; }
     /// Whether the Measure tool is the mouse's: ruler, protractor and probe (docs/user-guide.md,
     /// Measuring); the scene is left unchanged.
     bool measureMode() const;
-    MeasureTool* measureTool() const { return m_measureTool; }
+    MeasureTool* measureTool() const { return m_tools.measure; }
     /// Whether the pen is the mouse's: marks and arrows over the canvas (docs/user-guide.md,
     /// Drawing over the lesson); the scene is left unchanged.
     bool penMode() const;
-    PenTool* penTool() const { return m_penTool; }
+    PenTool* penTool() const { return m_tools.pen; }
     /// Whether the genuine vakonomic body (a third body) is drawn.
     bool showsVakonomic() const { return m_look.vakonomic; }
     /// Whether the perturbed bodies are drawn when the scene has a perturbation
@@ -69,7 +70,7 @@ class SceneCanvas : public QWidget {
     bool showsOpenLoop() const { return m_look.openLoop; }
     bool showsClosedLoop() const { return m_look.closedLoop; }
     /// Whether a push is being dragged from the controlled body.
-    bool pushing() const { return m_pushTool->active(); }
+    bool pushing() const { return m_tools.push->active(); }
     /// Pixels per metre.
     double scale() const { return m_view.scale(); }
     /// World point (metres) <-> widget pixel.
@@ -222,11 +223,6 @@ class SceneCanvas : public QWidget {
     void frame(const QRectF& box, double margin, double minScale,
                double maxScale = CanvasView::kMaxScale);
     BodyLook bodyLook() const;
-    /// The tools the mouse reaches in the current mode, in the order they are offered a press.
-    std::vector<CanvasTool*> tools() const;
-    /// Every tool, in the order of their gestures' priority: editing a point, a stroke, a plan's
-    /// handle, a measurement, a pen's mark, a push, panning.
-    std::array<CanvasTool*, 7> allTools() const;
     /// After a gesture began or ended: the cursor of the gesture under way, else the mode's.
     void updateCursor();
     /// The path's band, the controlled trail and the knife point P again over the bodies drawn
@@ -331,16 +327,8 @@ class SceneCanvas : public QWidget {
     SceneDocument* m_document;
     double m_time = 0;
     CanvasView m_view;
-    CanvasLook m_look; // the style, the bodies shown and the legend
-    bool m_drawMode = false;
-    bool m_planMode = false;
-    DrawTool* m_drawTool;
-    EditPointsTool* m_editTool;
-    PushTool* m_pushTool;
-    PlanTool* m_planTool;
-    MeasureTool* m_measureTool;
-    PenTool* m_penTool;
-    PanTool* m_panTool;
+    CanvasLook m_look;     // the style, the bodies shown and the legend
+    CanvasToolbox m_tools; // one tool per gesture, and the mode
     struct PathBounds {
         const Solution* of = nullptr; // the solution box belongs to
         QRectF box;                   // [m]

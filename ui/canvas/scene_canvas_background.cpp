@@ -285,7 +285,7 @@ void SceneCanvas::paintLegend(QPainter& p) const {
                       "right turn, grey straight, blue left turn"),
              briefPath, compact ? right : -1);
     }
-    if (m_drawMode) {
+    if (m_tools.drawMode) {
         p.setFont(drawHintFont());
         p.drawText(drawHintBox(), kDrawHintFlags, drawHintText());
     }
@@ -312,7 +312,7 @@ QRectF SceneCanvas::drawHintBox() const {
 }
 
 QRectF SceneCanvas::drawHintBounds() const {
-    if (!m_drawMode)
+    if (!m_tools.drawMode)
         return {};
     return QFontMetricsF(drawHintFont())
         .boundingRect(drawHintBox(), kDrawHintFlags, drawHintText());
@@ -323,7 +323,7 @@ LayerKey SceneCanvas::layerKey() const {
             size(),
             m_view.scale(),
             m_view.centre(),
-            m_drawMode,
+            m_tools.drawMode,
             devicePixelRatioF(),
             m_look.vakonomic,
             m_look.style,
@@ -343,7 +343,7 @@ const QPixmap& SceneCanvas::background() {
         paintPath(p, worldTransform());
         // the draw-mode hint is painted with the legend; a layer at a fractional device pixel
         // ratio would land between device pixels
-        if (m_drawMode || dpr != std::round(dpr))
+        if (m_tools.drawMode || dpr != std::round(dpr))
             paintLegend(p);
         else
             paintLegendLayer(p);
@@ -367,7 +367,7 @@ void SceneCanvas::paintLegendLayer(QPainter& p) {
 
 bool SceneCanvas::followsWithWorldLayer() const {
     const qreal dpr = devicePixelRatioF();
-    return m_view.follows() && !m_drawMode && dpr == std::round(dpr) && m_document->solution();
+    return m_view.follows() && !m_tools.drawMode && dpr == std::round(dpr) && m_document->solution();
 }
 
 QTransform SceneCanvas::worldLayerTransform() const {

@@ -318,8 +318,8 @@ void SceneCanvas::updateMoving(double from, QPointF centre) {
     // whole pixels), the static layer, the pins (their runs move too), a stroke or a vertex
     // being drawn, a trail that shrinks
     const auto& solution = m_document->solution();
-    bool steady = solution && from <= m_time && m_movingPainted && !m_drawTool->active() &&
-                  !m_editTool->active() && m_document->pins()->count() == 0;
+    bool steady = solution && from <= m_time && m_movingPainted && !m_tools.draw->active() &&
+                  !m_tools.edit->active() && m_document->pins()->count() == 0;
     QPoint shift; // [px] how far the scene's pixels move
     if (steady && !m_view.follows()) {
         steady = m_layers.hasBackground(layerKey());
@@ -462,10 +462,10 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         // where the bodies out of view went
         m_edgeMarkers.paint(p, edgeMarkersAt(*now), edgeMarkerFont(), m_look.style.lineScale);
         // a planned motion played: its time along it and its arrival (docs/physics.md §10)
-        const int played = m_planMode && m_planTool->playTime() >= 0 ? m_planTool->chosen() : -1;
+        const int played = m_tools.planMode && m_tools.plan->playTime() >= 0 ? m_tools.plan->chosen() : -1;
         if (played >= 0)
-            paintTimeReadout(p, m_planTool->playTime(),
-                             m_planTool->planned().geodesics[std::size_t(played)].t, bodiesDrawn);
+            paintTimeReadout(p, m_tools.plan->playTime(),
+                             m_tools.plan->planned().geodesics[std::size_t(played)].t, bodiesDrawn);
         else
             paintTimeReadout(p, m_time, solution->tEnd(), bodiesDrawn);
         m_movingPainted = movingBounds(*solution, *now, m_time);
@@ -474,27 +474,27 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         m_edgeMarkers.clear();
     }
     // what the gestures show: a push being dragged, the drawn path's points, a stroke
-    m_pushTool->paint(p);
-    if (m_planMode) {
+    m_tools.push->paint(p);
+    if (m_tools.planMode) {
         p.save();
         p.setClipRect(drawingArea());
-        m_planTool->paint(p);
+        m_tools.plan->paint(p);
         paintPlanReadout(p);
         p.restore();
     }
-    if (m_drawMode && !m_planMode) {
-        m_editTool->paint(p);
-        m_drawTool->paint(p);
+    if (m_tools.drawMode && !m_tools.planMode) {
+        m_tools.edit->paint(p);
+        m_tools.draw->paint(p);
     }
     // the pen's marks over the scene
-    m_penTool->paint(p);
+    m_tools.pen->paint(p);
     // the ruler, the protractor and the probe over everything, in the widget's font
     p.setFont(font());
-    m_measureTool->paint(p);
+    m_tools.measure->paint(p);
 }
 
 double SceneCanvas::planReadoutHeight() const {
-    if (!m_planMode)
+    if (!m_tools.planMode)
         return 0;
     QFont font = this->font();
     font.setPointSizeF(font.pointSizeF() * m_look.style.lineScale);
@@ -510,7 +510,7 @@ void SceneCanvas::paintPlanReadout(QPainter& p) const {
     font.setPointSizeF(font.pointSizeF() * m_look.style.lineScale);
     p.setFont(font);
     const QFontMetricsF metrics(font);
-    QStringList lines{m_planTool->chosenSummary()};
+    QStringList lines{m_tools.plan->chosenSummary()};
     // presenting, the chosen motion alone: the drawing keeps the room
     if (!m_look.style.largeTime)
         lines << tr("Plan: drag the target's dot or its heading's handle (Shift snaps), or the "
