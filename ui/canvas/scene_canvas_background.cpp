@@ -367,7 +367,8 @@ void SceneCanvas::paintLegendLayer(QPainter& p) {
 
 bool SceneCanvas::followsWithWorldLayer() const {
     const qreal dpr = devicePixelRatioF();
-    return m_view.follows() && !m_tools.drawMode && dpr == std::round(dpr) && m_document->solution();
+    return m_view.follows() && !m_tools.drawMode && dpr == std::round(dpr) &&
+           m_document->solution();
 }
 
 QTransform SceneCanvas::worldLayerTransform() const {

@@ -462,7 +462,8 @@ void SceneCanvas::paintEvent(QPaintEvent* e) {
         // where the bodies out of view went
         m_edgeMarkers.paint(p, edgeMarkersAt(*now), edgeMarkerFont(), m_look.style.lineScale);
         // a planned motion played: its time along it and its arrival (docs/physics.md §10)
-        const int played = m_tools.planMode && m_tools.plan->playTime() >= 0 ? m_tools.plan->chosen() : -1;
+        const int played =
+            m_tools.planMode && m_tools.plan->playTime() >= 0 ? m_tools.plan->chosen() : -1;
         if (played >= 0)
             paintTimeReadout(p, m_tools.plan->playTime(),
                              m_tools.plan->planned().geodesics[std::size_t(played)].t, bodiesDrawn);

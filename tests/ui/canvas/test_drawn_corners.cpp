@@ -66,12 +66,7 @@ class TestDrawnCorners : public QObject, public test::WindowFixture {
 
   private slots:
     void initTestCase() { startSuite("ui_drawn_corners_tests"); }
-    void init() {
-        // settings of each function's own: ctest runs the functions in parallel processes
-        QCoreApplication::setApplicationName(QStringLiteral("ui_drawn_corners_tests_") +
-                                             QString::fromLatin1(QTest::currentTestFunction()));
-        openWindow();
-    }
+    void init() { openWindowWithOwnSettings("ui_drawn_corners_tests"); }
     void cleanup() { closeWindow(); }
     void zigZagOfFourStrokesPivotsThreeTimes();
     void drawnHalfCircleDoesNotPivot();

@@ -112,11 +112,7 @@ void TestMeasureTool::reachedFromMenuToolbarAndKey() {
     auto* measure = m_window->findChild<QAction*>(QStringLiteral("measureAction"));
     QVERIFY(measure && measure->isCheckable());
     QVERIFY(m_window->timeline()->actions().contains(measure));
-    bool inMenu = false;
-    for (QAction* menu : m_window->menuBar()->actions())
-        if (menu->menu() && menu->menu()->actions().contains(measure))
-            inMenu = true;
-    QVERIFY(inMenu);
+    QVERIFY(test::inMenuBar(m_window->menuBar(), measure));
     QVERIFY(!m_canvas->measureMode());
     QTest::keySequence(m_window.get(), measure->shortcut());
     QVERIFY(m_canvas->measureMode());

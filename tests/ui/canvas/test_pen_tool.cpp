@@ -133,11 +133,7 @@ void TestPenTool::reachedFromMenuToolbarAndKeys() {
     auto* pen = m_window->findChild<QAction*>(QStringLiteral("penAction"));
     QVERIFY(pen && pen->isCheckable());
     QVERIFY(m_window->timeline()->actions().contains(pen));
-    bool inMenu = false;
-    for (QAction* menu : m_window->menuBar()->actions())
-        if (menu->menu() && menu->menu()->actions().contains(pen))
-            inMenu = true;
-    QVERIFY(inMenu);
+    QVERIFY(test::inMenuBar(m_window->menuBar(), pen));
     QVERIFY(!m_canvas->penMode());
     QTest::keySequence(m_window.get(), pen->shortcut());
     QVERIFY(m_canvas->penMode());

@@ -5,6 +5,7 @@
 // motion is chosen, the plots of Psi, chi, lambda and T and the Accuracy dock are its own.
 #include "canvas/plan_tool.h"
 #include "canvas/scene_canvas.h"
+#include "classical_rk4.h"
 #include "common/input_error.h"
 #include "document/plot_series.h"
 #include "document/scene_document.h"
@@ -30,6 +31,7 @@
 #include <qcustomplot.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <memory>
@@ -63,23 +65,8 @@ std::vector<Knife> integrateKnife(Knife k, double b, double v, double t, int n) 
         return Knife{v * std::sin(s.psi) * std::cos(s.phi), v * std::sin(s.psi) * std::sin(s.phi),
                      v * std::cos(s.psi) / b, s.lambda, -v * v / (2 * b * b) * std::sin(2 * s.psi)};
     };
-    auto step = [](const Knife& s, const Knife& d, double h) {
-        return Knife{s.x + h * d.x, s.y + h * d.y, s.phi + h * d.phi, s.psi + h * d.psi,
-                     s.lambda + h * d.lambda};
-    };
-    std::vector<Knife> out{k};
-    const double h = t / n;
-    for (int i = 0; i < n; ++i) {
-        const Knife k1 = rate(k), k2 = rate(step(k, k1, h / 2)), k3 = rate(step(k, k2, h / 2)),
-                    k4 = rate(step(k, k3, h));
-        k = Knife{k.x + h / 6 * (k1.x + 2 * k2.x + 2 * k3.x + k4.x),
-                  k.y + h / 6 * (k1.y + 2 * k2.y + 2 * k3.y + k4.y),
-                  k.phi + h / 6 * (k1.phi + 2 * k2.phi + 2 * k3.phi + k4.phi),
-                  k.psi + h / 6 * (k1.psi + 2 * k2.psi + 2 * k3.psi + k4.psi),
-                  k.lambda + h / 6 * (k1.lambda + 2 * k2.lambda + 2 * k3.lambda + k4.lambda)};
-        out.push_back(k);
-    }
-    return out;
+    return reference::classicalRk4(
+        k, std::array{&Knife::x, &Knife::y, &Knife::phi, &Knife::psi, &Knife::lambda}, rate, t, n);
 }
 
 // the graph of `plot` named `name`, or null
@@ -176,11 +163,7 @@ void TestPlanTool::reachedFromMenuToolbarAndKey() {
     QAction* plan = m_window->planAction();
     QVERIFY(plan && plan->isCheckable());
     QVERIFY(m_window->timeline()->actions().contains(plan));
-    bool inMenu = false;
-    for (QAction* menu : m_window->menuBar()->actions())
-        if (menu->menu() && menu->menu()->actions().contains(plan))
-            inMenu = true;
-    QVERIFY(inMenu);
+    QVERIFY(test::inMenuBar(m_window->menuBar(), plan));
     QVERIFY(!m_canvas->planMode());
     QTest::keySequence(m_window.get(), plan->shortcut());
     QVERIFY(m_canvas->planMode());

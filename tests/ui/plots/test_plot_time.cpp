@@ -230,7 +230,9 @@ void TestPlotTime::doubleClickDoesNotSeek() {
     QTest::qWait(QApplication::doubleClickInterval() + 200);
     QCOMPARE(m_window->playback()->time(), time);
     QCOMPARE(m_window->canvas()->time(), time);
-    // a drag with the button down scrubs at once, without waiting
+    // a drag with the button down scrubs at once, without waiting; the whole run was drawn
+    // anew, its axis rectangle too
+    rect = psi->axisRect();
     const QPointF to(rect->left() + 0.3 * rect->width(), rect->center().y());
     const double target = timeAtPixel(psi, to.x());
     mouse(psi, QEvent::MouseButtonPress, at, Qt::LeftButton, Qt::LeftButton);

@@ -52,13 +52,7 @@ class TestExports : public QObject, public test::WindowFixture {
     Q_OBJECT
   private slots:
     void initTestCase() { startSuite("ui_exports_tests"); }
-    void init() {
-        // settings of each function's own: ctest runs the functions in parallel processes,
-        // and these tests write and read the settings
-        QCoreApplication::setApplicationName(QStringLiteral("ui_exports_tests_") +
-                                             QString::fromLatin1(QTest::currentTestFunction()));
-        openWindow();
-    }
+    void init() { openWindowWithOwnSettings("ui_exports_tests"); }
     void cleanup() {
         ExportReport::setOpenUrlHook({});
         closeWindow();

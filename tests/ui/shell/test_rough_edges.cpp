@@ -52,13 +52,7 @@ class TestRoughEdges : public QObject, public test::WindowFixture {
     Q_OBJECT
   private slots:
     void initTestCase() { startSuite("ui_rough_edges_tests"); }
-    void init() {
-        // settings of each function's own: ctest runs the functions in parallel processes,
-        // and these tests write and read the settings
-        QCoreApplication::setApplicationName(QStringLiteral("ui_rough_edges_tests_") +
-                                             QString::fromLatin1(QTest::currentTestFunction()));
-        openWindow();
-    }
+    void init() { openWindowWithOwnSettings("ui_rough_edges_tests"); }
     void cleanup() {
         ExportReport::setOpenUrlHook({});
         closeWindow();

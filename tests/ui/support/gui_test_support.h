@@ -4,6 +4,7 @@
 #include "document/scene_document.h"
 #include "shell/main_window.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QCoreApplication>
 #include <QMenu>
@@ -64,6 +65,14 @@ inline QAction* menuAction(QMenuBar* bar, const QString& text) {
                 if (a->text().remove(QLatin1Char('&')) == text)
                     return a;
     return nullptr;
+}
+
+/// Whether one of the menu bar's menus holds the action.
+inline bool inMenuBar(QMenuBar* bar, QAction* action) {
+    for (QAction* menu : bar->actions())
+        if (menu->menu() && menu->menu()->actions().contains(action))
+            return true;
+    return false;
 }
 
 } // namespace chaplygin::ui::test

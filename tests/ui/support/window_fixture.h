@@ -7,6 +7,7 @@
 #include "scene/presets.h"
 #include "shell/main_window.h"
 
+#include <QCoreApplication>
 #include <QDockWidget>
 #include <QSettings>
 #include <QTemporaryDir>
@@ -32,6 +33,14 @@ class WindowFixture {
         QSettings().clear();
         m_window = showTestWindow();
         QVERIFY(m_window && m_window->document()->solution());
+    }
+    /// openWindow with settings of this test function's own (settingsName_function): ctest
+    /// runs a suite's functions in parallel processes, and tests that write and read the
+    /// settings must not meet there.
+    void openWindowWithOwnSettings(const char* settingsName) {
+        QCoreApplication::setApplicationName(QString::fromLatin1(settingsName) + QLatin1Char('_') +
+                                             QString::fromLatin1(QTest::currentTestFunction()));
+        openWindow();
     }
     void closeWindow() {
         m_window.reset();
