@@ -72,6 +72,7 @@ void PenTool::setSavesWithScene(bool on) {
 void PenTool::setMarks(std::vector<AnnotationMark> marks) {
     m_drawing.reset();
     m_marks = std::move(marks);
+    m_savedMarks = m_marks;
     emit marksChanged();
     emit changed();
 }

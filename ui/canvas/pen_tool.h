@@ -48,8 +48,13 @@ class PenTool : public CanvasTool {
 
     /// The marks drawn, oldest first [m].
     const std::vector<AnnotationMark>& marks() const { return m_marks; }
-    /// The marks of a scene just loaded (none for a scene without them).
+    /// The marks of a scene just loaded (none for a scene without them): what its file holds.
     void setMarks(std::vector<AnnotationMark> marks);
+    /// The marks are what the scene's file now holds (it was just saved with them).
+    void setMarksSaved() { m_savedMarks = m_marks; }
+    /// Whether File > Save would write marks other than the file's: the marks are to be saved
+    /// with the scene and differ from those last loaded or saved.
+    bool hasUnsavedMarks() const { return m_savesWithScene && m_marks != m_savedMarks; }
     /// Removes the last mark (Ctrl+Z while the pen is on); false when there is none.
     bool undoLast();
     /// Removes every mark (E or Delete while the pen is on).
@@ -89,7 +94,8 @@ class PenTool : public CanvasTool {
     int m_colour = 0;
     MarkKind m_kind = MarkKind::Freehand;
     std::vector<AnnotationMark> m_marks;
-    std::optional<AnnotationMark> m_drawing; // the mark under way
+    std::vector<AnnotationMark> m_savedMarks; // as last loaded or saved
+    std::optional<AnnotationMark> m_drawing;  // the mark under way
 };
 
 } // namespace chaplygin::ui

@@ -99,6 +99,9 @@ MainWindow::MainWindow(bool useSettings, QWidget* parent)
     connect(m_document, &SceneDocument::errorChanged, this, &MainWindow::onDocumentError);
     connect(m_document, &SceneDocument::fileNameChanged, this, &MainWindow::updateTitle);
     connect(m_document, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    // the pen's marks, when they are saved with the scene, are part of what is unsaved
+    connect(m_canvas->penTool(), &PenTool::marksChanged, this, &MainWindow::updateTitle);
+    connect(m_canvas->penTool(), &PenTool::savesWithSceneChanged, this, &MainWindow::updateTitle);
     connect(m_document, &SceneDocument::sceneApplied, this, &MainWindow::showScene);
     // a scene that comes with a plan shows it (docs/physics.md §10)
     connect(m_document, &SceneDocument::sceneApplied, this,
@@ -385,8 +388,12 @@ void MainWindow::onTime(double t) {
     m_accuracy->setTime(t);
 }
 
+bool MainWindow::hasUnsavedChanges() const {
+    return m_document->isModified() || m_canvas->penTool()->hasUnsavedMarks();
+}
+
 bool MainWindow::maybeSave() {
-    if (!m_useSettings || !m_document->isModified())
+    if (!m_useSettings || !hasUnsavedChanges())
         return true;
     auto answer = QMessageBox::question(
         this, tr("Chaplygin Lab"), tr("The scene has unsaved changes. Save them?"),
@@ -434,6 +441,9 @@ bool MainWindow::saveFile(const QString& path) {
         showFileError(QString::fromStdString(e.what()));
         return false;
     }
+    if (pen.savesWithScene())
+        m_canvas->penTool()->setMarksSaved();
+    updateTitle();
     statusBar()->showMessage(tr("Saved %1").arg(path), 4000);
     return true;
 }
@@ -561,7 +571,7 @@ void MainWindow::updateTitle() {
     QString name = m_document->fileName().isEmpty() ? tr("untitled")
                                                     : QFileInfo(m_document->fileName()).fileName();
     QString title = tr("%1%2 \u2014 Chaplygin Lab")
-                        .arg(name, m_document->isModified() ? QStringLiteral("*") : QString());
+                        .arg(name, hasUnsavedChanges() ? QStringLiteral("*") : QString());
     if (const QString position = lecturePosition(); !position.isEmpty())
         title = tr("Lecture, %1 \u2014 %2").arg(position, title);
     setWindowTitle(title);

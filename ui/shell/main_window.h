@@ -65,6 +65,9 @@ class MainWindow : public QMainWindow {
     /// does not solve or is too large for a link.
     bool copyLink();
     bool saveFile(const QString& path);
+    /// Whether File > Save would change the scene's file: the scene was edited since it was
+    /// opened or saved, or the pen's marks, when they are saved with it, changed.
+    bool hasUnsavedChanges() const;
     bool exportPlotsTo(const QString& dir, const QStringList& formats);
     bool exportCsvTo(const QString& path);
     /// Writes the animation with a progress dialog; false when cancelled or failed (the

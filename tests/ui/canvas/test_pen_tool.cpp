@@ -88,6 +88,7 @@ class TestPenTool : public QObject {
     void drawsInPresentationMode();
     void theSceneAndItsResultAreUnchanged();
     void savedOnlyWhenAskedAndReadBack();
+    void marksToBeSavedAreUnsavedChangesUntilSaved();
 
   private:
     PenTool* startPen();
@@ -419,11 +420,7 @@ void TestPenTool::savedOnlyWhenAskedAndReadBack() {
     auto* option = m_window->findChild<QAction*>(QStringLiteral("saveAnnotationsAction"));
     QVERIFY(option && option->isCheckable());
     QVERIFY(!option->isChecked()); // off by default
-    bool inFileMenu = false;
-    for (QAction* menu : m_window->menuBar()->actions())
-        if (menu->menu() && menu->menu()->actions().contains(option))
-            inFileMenu = true;
-    QVERIFY(inFileMenu);
+    QVERIFY(test::inMenuBar(m_window->menuBar(), option));
     PenTool* pen = startPen();
     strokeAt(0.8);
     drag(m_canvas, m_canvas->toPixel({1, 1}).toPoint(), m_canvas->toPixel({2, 0.5}).toPoint(), 10,
@@ -477,6 +474,52 @@ void TestPenTool::savedOnlyWhenAskedAndReadBack() {
     // another scene comes without them
     m_window->openFile(plain);
     QVERIFY(m_canvas->penTool()->marks().empty());
+}
+
+void TestPenTool::marksToBeSavedAreUnsavedChangesUntilSaved() {
+    // marks saved with the scene are part of what File > Save keeps: the title's star and the
+    // question before closing know them; marks that are not to be saved are not asked for
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    auto* option = m_window->findChild<QAction*>(QStringLiteral("saveAnnotationsAction"));
+    QVERIFY(option);
+    const QString path = dir.filePath(QStringLiteral("scene.json"));
+    QVERIFY(m_window->saveFile(path));
+    auto starred = [this] { return m_window->windowTitle().contains(QLatin1Char('*')); };
+    QVERIFY(!m_window->hasUnsavedChanges());
+    QVERIFY(!starred());
+    PenTool* pen = startPen();
+    strokeAt(0.8);
+    QCOMPARE(pen->marks().size(), std::size_t(1));
+    QVERIFY(!m_window->hasUnsavedChanges()); // not to be saved
+    QVERIFY(!starred());
+    option->trigger();
+    QVERIFY(m_window->hasUnsavedChanges());
+    QVERIFY(starred());
+    QVERIFY(m_window->saveFile(path));
+    QVERIFY(!m_window->hasUnsavedChanges());
+    QVERIFY(!starred());
+    // a new mark, and its undo back to what the file holds
+    strokeAt(-0.8);
+    QVERIFY(m_window->hasUnsavedChanges());
+    QVERIFY(starred());
+    QVERIFY(pen->undoLast());
+    QVERIFY(!m_window->hasUnsavedChanges());
+    // cleared: the file still has the mark
+    pen->clear();
+    QVERIFY(m_window->hasUnsavedChanges());
+    QVERIFY(starred());
+    // the file read again: its marks are what is saved
+    QVERIFY(m_window->openFile(path));
+    QCOMPARE(pen->marks().size(), std::size_t(1));
+    QVERIFY(!m_window->hasUnsavedChanges());
+    QVERIFY(!starred());
+    // the scene's own edits still count, marks or not
+    Scene s = m_window->document()->scene();
+    s.system.params["m"] = 2.0;
+    m_window->document()->edit(s, QStringLiteral("mass"));
+    m_window->document()->flush();
+    QVERIFY(m_window->hasUnsavedChanges());
 }
 
 QTEST_MAIN(TestPenTool)
