@@ -31,13 +31,6 @@
 namespace chaplygin::ui {
 
 class SceneDocument;
-class CanvasTool;
-class DrawTool;
-class EditPointsTool;
-class MeasureTool;
-class PanTool;
-class PenTool;
-class PlanTool;
 
 /// The animation canvas: the prescribed path coloured by curvature, the controlled body to scale
 /// at its pose with its trail, and a translucent ghost of the free motion with its own trail.
