@@ -166,7 +166,6 @@ class TestFrame : public QObject {
     void framesRepaintWhatMovesAsAFullRepaintWould();
     void followingShiftsTheStaticLayerAsRedrawingWould();
     void fastFramesAfterZoomAndPanRepaintAsAFullRepaintWould();
-    void pathOverBodiesAtAViewsFirstPaintIsWhatItsLayerDraws();
     void trailLayerKeepsStepAcrossLoopsJumpsAndFollowing();
     void flatPlotsShowWhatQCustomPlotPaints();
 
@@ -485,49 +484,6 @@ void TestFrame::fastFramesAfterZoomAndPanRepaintAsAFullRepaintWould() {
     QCoreApplication::processEvents();
     play(45);
     QVERIFY(painted.count > 0);
-}
-
-void TestFrame::pathOverBodiesAtAViewsFirstPaintIsWhatItsLayerDraws() {
-    // the catenary's large sleighs drawn to scale cover the path: at a view's first paint (a zoom
-    // step) the band is drawn within each body's box, at the next from the layer made for the
-    // view; the same picture, zoomed out, zoomed in and while following
-    m_window->loadScene(presetScene("catenary"));
-    m_window->document()->flush();
-    SceneCanvas* canvas = m_window->canvas();
-    canvas->fitScene();
-    CanvasStyle style = canvas->canvasStyle();
-    style.body = BodyDisplay::ToScale;
-    canvas->setCanvasStyle(style);
-    m_window->playback()->seek(2);
-    QCoreApplication::processEvents();
-    auto twice = [&](const char* where) {
-        const QImage first = canvas->grab().toImage().convertToFormat(QImage::Format_RGB32);
-        QVERIFY2(!canvas->pathOverBodiesFromLayer(), where);
-        const QImage second = canvas->grab().toImage().convertToFormat(QImage::Format_RGB32);
-        QVERIFY2(canvas->pathOverBodiesFromLayer(), where);
-        QCOMPARE(first.size(), second.size());
-        int differing = 0, largest = 0;
-        for (int y = 0; y < first.height(); ++y)
-            for (int x = 0; x < first.width(); ++x) {
-                const QRgb a = first.pixel(x, y), b = second.pixel(x, y);
-                const int d = test::channelDifference(a, b);
-                largest = std::max(largest, d);
-                differing += d > 0 ? 1 : 0;
-            }
-        QVERIFY2(largest <= 2 && differing <= 20,
-                 qPrintable(QStringLiteral("%1: %2 pixels differ, by up to %3")
-                                .arg(where)
-                                .arg(differing)
-                                .arg(largest)));
-    };
-    canvas->zoomBy(1 / 1.1); // each view is new: the window has not painted it
-    twice("zoomed out by 1.1");
-    canvas->zoomBy(3.3);
-    twice("zoomed in by 3");
-    canvas->setFollowBody(true);
-    QCoreApplication::processEvents();
-    canvas->zoomBy(1.1);
-    twice("following, zoomed in by 3.3");
 }
 
 void TestFrame::trailLayerKeepsStepAcrossLoopsJumpsAndFollowing() {
