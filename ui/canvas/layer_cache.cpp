@@ -115,6 +115,7 @@ void LayerCache::drop() {
     m_worldLayer = {};
     m_legendLayer = {};
     m_pathLayer = {};
+    m_pathSeenKey = {};
     m_trailLayer = {};
 }
 

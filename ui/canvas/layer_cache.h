@@ -79,7 +79,8 @@ class LayerCache {
     TrailUpdate bringTrailLayerTo(const QPixmap& base, double t);
     QImage& trailLayer() { return m_trailLayer; }
 
-    /// Forgets every layer: the next paint draws everything anew.
+    /// Forgets every layer and the views seen: the next paint draws everything anew, as a
+    /// view's first paint does.
     void drop();
 
   private:

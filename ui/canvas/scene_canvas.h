@@ -7,6 +7,7 @@
 #include "canvas/canvas_view.h"
 #include "canvas/curve_flattening.h"
 #include "canvas/edge_markers.h"
+#include "canvas/ink_rows.h"
 #include "canvas/layer_cache.h"
 #include "canvas/push_tool.h"
 #include "canvas/vector_layer.h"
@@ -124,7 +125,13 @@ class SceneCanvas : public QWidget {
     void dropLayers();
     /// Whether the last paint drew the path over the bodies from the path's layer (a view
     /// painted before) rather than within each body's box (a view's first paint).
-    bool pathOverBodiesFromLayer() const { return m_pathOverBodiesFromLayer; }
+    bool pathOverBodiesFromLayer() const { return m_pathOverBodies.fromLayer; }
+    /// Tests: the path over a body laid over its whole box, not only where ink can be (the
+    /// reference the parts must match).
+    void setPathOverBodiesWhole(bool whole) {
+        m_pathOverBodies.whole = whole;
+        update();
+    }
 
   public slots:
     void setTime(double t);
@@ -237,10 +244,18 @@ class SceneCanvas : public QWidget {
     QString scaleBarLabel() const;
     QFont scaleBarFont() const;
     double scaleBarLeft() const;
-    /// The path's band; with `within` [px] only the segments that reach it.
-    void paintPath(QPainter& p, const QTransform& world, const QRectF& within = {}) const;
+    /// The path's band; with `within` [px] only the segments that reach it, and with `inked`
+    /// (within `within`) only their strokes' pixels there: the runs of one colour, which
+    /// overlap where the colour changes, are those of `within`, so those pixels are the same.
+    void paintPath(QPainter& p, const QTransform& world, const QRectF& within = {},
+                   const QRectF& inked = {}) const;
     /// Whether a segment of the path's band reaches `within` [px].
     bool bandReaches(const QTransform& world, const QRectF& within) const;
+    /// What paintPath draws, as ink [px]: the band's points and how far its ink reaches from
+    /// them, and the marks (start, end, pivots) with theirs.
+    QPolygonF bandPoints(const QTransform& world) const;
+    double bandInkReach() const;
+    std::vector<InkMark> pathMarks(const QTransform& world) const;
     /// A trail to draw: its flattened curve up to the parameter `limit` (time, or arc length for
     /// the controlled body), then its end now.
     struct Trail {
@@ -329,7 +344,11 @@ class SceneCanvas : public QWidget {
     mutable PathBounds m_pathBounds;
     std::optional<QRegion> m_movingPainted; // the boxes of what moves, as last painted
     LayerCache m_layers;
-    bool m_pathOverBodiesFromLayer = false;
+    // the path over the bodies: whether the last paint took it from the layer, and whether it
+    // is laid over each body's whole box (tests)
+    struct {
+        bool fromLayer = false, whole = false;
+    } m_pathOverBodies;
     VectorLayer m_vectors;
     BodySprites m_bodies;
     mutable CanvasCurves m_curves;

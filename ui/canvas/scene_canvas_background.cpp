@@ -137,7 +137,46 @@ bool SceneCanvas::bandReaches(const QTransform& world, const QRectF& within) con
     return false;
 }
 
-void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& within) const {
+QPolygonF SceneCanvas::bandPoints(const QTransform& world) const {
+    const FlatCurve& flat = curves().path();
+    QPolygonF band;
+    band.reserve(qsizetype(flat.points.size()));
+    for (const QPointF& point : flat.points)
+        band << world.map(point);
+    return band;
+}
+
+double SceneCanvas::bandInkReach() const {
+    return bandReach(m_look.style.lineScale);
+}
+
+namespace {
+
+// the path's marks: circles of radius 5 (pivots) and 4 (start), a square 8 px wide (end), all
+// with a pen 1.5 px wide, reach less than this [px] from their centres
+double pathMarkReach(double lineScale) {
+    return 8 + 1.5 * lineScale;
+}
+
+} // namespace
+
+std::vector<InkMark> SceneCanvas::pathMarks(const QTransform& world) const {
+    const auto& solution = m_document->solution();
+    if (!solution)
+        return {};
+    const double reach = pathMarkReach(m_look.style.lineScale);
+    const Path& path = *solution->path();
+    std::vector<InkMark> marks;
+    for (const PathPiece& piece : path.pieces())
+        if (piece.kind == PathPiece::Kind::Pivot)
+            marks.push_back({world.map(QPointF{piece.x, piece.y}), reach});
+    marks.push_back({world.map(QPointF{path.start().x, path.start().y}), reach});
+    marks.push_back({world.map(QPointF{path.end().x, path.end().y}), reach});
+    return marks;
+}
+
+void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& within,
+                            const QRectF& inked) const {
     const auto& solution = m_document->solution();
     // a wide pale band, so that the trail on top of it stays visible: one polyline per run of
     // one colour, through the flattened curve
@@ -148,7 +187,9 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
         const double kappa = 0.5 * (flat.kappa[i - 1] + flat.kappa[i]);
         return pale(curvatureColor(std::isnan(kappa) ? 0 : kappa)).rgb();
     };
-    const QRegion area = within.isNull() ? paintableArea(p) : QRegion(within.toAlignedRect());
+    const QRegion area = !inked.isNull()   ? QRegion(inked.toAlignedRect())
+                         : within.isNull() ? paintableArea(p)
+                                           : QRegion(within.toAlignedRect());
     QPolygonF run;
     QRgb runColour = 0;
     auto flush = [&] {
@@ -191,6 +232,7 @@ void SceneCanvas::paintPath(QPainter& p, const QTransform& world, const QRectF& 
         run << to;
     }
     flush();
+    // the marks: within pathMarkReach of their centres
     for (const PathPiece& piece : solution->path()->pieces()) {
         if (piece.kind != PathPiece::Kind::Pivot)
             continue;

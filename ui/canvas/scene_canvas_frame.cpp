@@ -586,7 +586,13 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     const qreal dpr = devicePixelRatioF();
     QPoint origin;
     const QImage* layer = dpr == std::round(dpr) ? &pathLayer(origin) : nullptr;
-    m_pathOverBodiesFromLayer = layer && !layer->isNull();
+    m_pathOverBodies.fromLayer = layer && !layer->isNull();
+    // where in a body's box the band, its marks and the trail can ink: only there is the
+    // layer masked and laid over, in bands of 64 device rows
+    const QPolygonF band = layer ? bandPoints(world) : QPolygonF();
+    const std::vector<InkLine> inks{{&band, bandInkReach()}, {&line, controlled.pen.widthF() + 2}};
+    const std::vector<InkMark> marks = layer ? pathMarks(world) : std::vector<InkMark>();
+    const int rows = std::max(8, int(64 / dpr));
     // the band and the controlled trail up to now on it, then the knife at P
     for (const auto& [area, outline, both] : clips) {
         const QRect box =
@@ -606,17 +612,20 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
             }
             continue;
         }
-        // the layer's band within the box (or the band drawn there, at a view's first paint)
+        // the layer's band within each part (or the band drawn there, at a view's first paint)
         // and the trail on it, in the body's area or under its outline
-        const auto over = [&](QPainter& c) {
-            if (layer->isNull())
-                paintPath(c, world, QRectF(box));
-            strokePolylineWithin(c, line, controlled.pen, QRegion(box));
-        };
-        if (covered)
-            drawMaskedLayer(p, *layer, origin, box, {&both}, over);
-        else
-            drawMaskedLayer(p, *layer, origin, box, {&area, &outline}, over);
+        for (const QRect& part :
+             m_pathOverBodies.whole ? std::vector<QRect>{box} : inkRows(box, rows, inks, marks)) {
+            const auto over = [&](QPainter& c) {
+                if (layer->isNull())
+                    paintPath(c, world, QRectF(box), QRectF(part));
+                strokePolylineWithin(c, line, controlled.pen, QRegion(part));
+            };
+            if (covered)
+                drawMaskedLayer(p, *layer, origin, part, {&both}, over);
+            else
+                drawMaskedLayer(p, *layer, origin, part, {&area, &outline}, over);
+        }
     }
     p.save();
     const QPointF at = world.map(QPointF(now.x, now.y));

@@ -206,6 +206,8 @@ void strokePolylineWithin(QPainter& p, const QPolygonF& line, const QPen& pen,
             }
         }
     }
+    if (path.isEmpty()) // nothing reaches area
+        return;
     QPen solid = pen;
     solid.setStyle(Qt::SolidLine);
     p.setPen(solid);
