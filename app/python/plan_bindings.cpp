@@ -136,6 +136,10 @@ void bindPlan(py::module_& m) {
             "modulus", [](const PlannedMotion& p) { return p.geodesic.modulus; },
             "the pendulum's k")
         .def_property_readonly(
+            "modulus_gap", [](const PlannedMotion& p) { return p.geodesic.modulusGap; },
+            "1 - k^2 as the planner carries it: exact next to the separatrix, where "
+            "1 - modulus**2 in double is not; 0 on the line, 1 pivoting (docs/physics.md §10)")
+        .def_property_readonly(
             "start",
             [](const PlannedMotion& p) {
                 return py::make_tuple(p.request.from.x, p.request.from.y, p.request.from.phi);

@@ -1,12 +1,17 @@
 """plan(), its Motion objects and Scene.from_plan (docs/physics.md §10) against references written
 here: an integration of the genuine vakonomic equations (19)-(21) by SciPy's DOP853 at 1e-12 from
-each motion's start, the sideways shift's known answer, and the tracking scene's controlled body
-against the motion's own closed form."""
+each motion's start, the sideways shift's known answer, the tracking scene's controlled body
+against the motion's own closed form, and 1 - k^2 against a 40-digit reference and the command
+line's summary."""
+import json
 import math
+import sys
 
 import numpy as np
 import pytest
 from scipy.integrate import solve_ivp
+
+from conftest import SOURCE_DIR, run_cli
 
 M, A_CM, B, VT = 2.0, 0.3, 0.8, 1.5
 
@@ -67,6 +72,74 @@ def test_sideways_shift_two_mirror_optima(cl):
         assert m.psidot0 == pytest.approx(1.492853942033, abs=1e-11)
     assert sorted(m.psi0 for m in best) == pytest.approx([-1.107148717794, 2.034443935796],
                                                           abs=1e-11)
+
+
+def end_miss_40_digits(motion, gap, target):
+    """|dx| + |dy| + |dphi| at motion.t of the normalised motion (b = v_T = 1) from (0, 0, 0) of
+    Psi0 = motion.psi0 with this 1 - k^2, from the pendulum's closed form in mpmath's own elliptic
+    functions at 40 digits (tests/core/planning/far_target_reference.py, no code of the program)."""
+    import mpmath as mp
+    sys.path.insert(0, str(SOURCE_DIR / "tests/core/planning"))
+    try:
+        import far_target_reference as reference
+    finally:
+        sys.path.pop(0)
+    with mp.workdps(40):
+        cos0 = mp.cos(motion.psi0)
+        lambda0 = mp.sqrt(cos0**2 - mp.mpf(gap))
+        x, y, phi = reference.end_pose(mp.mpf(motion.psi0), lambda0, mp.mpf(motion.t))
+        turn = phi - target[2]
+        turn -= 2 * mp.pi * mp.nint(turn / (2 * mp.pi))
+        return float(abs(x - target[0]) + abs(y - target[1]) + abs(turn))
+
+
+def test_modulus_gap_is_one_minus_k_squared(cl):
+    """1 - k^2 (docs/physics.md §10) against values derived independently of the program: the line
+    (k = 1) and pivoting (k = 0) by their definitions, the sideways shift from the shared notes'
+    Psi0 = -atan 2 and b Psidot0 / v_T, and a far target whose optimum lies next to the
+    separatrix, where 1 - modulus**2 in double has lost its digits and modulus_gap has not."""
+    line = cl.plan((0, 0, 0), (3, 0, 0), horizon=3.5)
+    assert [m.family for m in line] == ["line"]
+    assert line[0].modulus == 1 and line[0].modulus_gap == 0
+    pivot = cl.plan((0, 0, 0), (0, 0, 1), horizon=1.5)
+    assert [m.family for m in pivot] == ["pivot"]
+    assert pivot[0].modulus == 0 and pivot[0].modulus_gap == 1
+    # the sideways shift by b: k^2 = sin^2 Psi0 + Psidot0^2 with b = v_T = 1, sin^2 atan 2 = 4/5
+    best = [m for m in cl.plan((0, 0, 0), (0, 1, 0)) if m.optimal]
+    assert len(best) == 2
+    for m in best:
+        assert m.modulus_gap == pytest.approx(1 - 0.8 - 1.492853942033**2, abs=1e-11)
+        assert m.family == "rotation" and m.modulus_gap < 0
+    # (20, 0.5, 0.3): 1 - k^2 of the optimum from the 40-digit mpmath reference
+    # (tests/core/planning/far_target_reference.py 20 0.5 0.3, its end checked by mpmath.odefun)
+    gap = 2.5941070643728894849e-11
+    far = [m for m in cl.plan((0, 0, 0), (20, 0.5, 0.3), horizon=21) if m.optimal]
+    assert len(far) == 1 and far[0].family == "libration"
+    assert abs(far[0].modulus_gap / gap - 1) < 1e-11, far[0].modulus_gap
+    assert abs(far[0].modulus - math.sqrt(1 - gap)) < 1e-15
+    # what the modulus alone gives: 1 - k^2 to the spacing of doubles below 1, 1.1e-16, which is
+    # 4e-6 of this gap
+    assert abs((1 - far[0].modulus**2) / gap - 1) > 1e-8, far[0].modulus
+    # at 40 digits, the motion of psi0 with this 1 - k^2 (Lambda0 = +sqrt(cos^2 Psi0 - gap), as
+    # psidot0 > 0) ends on the target at t; with 1 - modulus**2 it misses by far more
+    assert far[0].psidot0 > 0
+    assert end_miss_40_digits(far[0], far[0].modulus_gap, (20, 0.5, 0.3)) < 1e-12
+    assert end_miss_40_digits(far[0], 1 - far[0].modulus**2, (20, 0.5, 0.3)) > 1e-8
+
+
+def test_modulus_gap_is_the_command_lines(cl):
+    """The same core number reaches --summary and the module: every listed motion's modulus and
+    modulus_gap are the same doubles (the JSON's numbers read back exactly)."""
+    for target, horizon in (((20, 0.5, 0.3), 21), ((0, 1, 0), None), ((3, 0, 0), 3.5)):
+        args = ["--plan-to", ",".join(map(str, target)), "--summary", "-"]
+        if horizon is not None:
+            args += ["--plan-horizon", str(horizon)]
+        listed = json.loads(run_cli(*args))["plan"]["geodesics"]
+        motions = cl.plan((0, 0, 0), target, horizon=horizon)
+        assert len(listed) == len(motions) >= 1
+        for g, m in zip(listed, motions):
+            assert g["t"] == m.t and g["family"] == m.family
+            assert g["modulus"] == m.modulus and g["modulus_gap"] == m.modulus_gap, (g, m)
 
 
 def test_scene_from_plan_tracks_the_genuine_vakonomic_body(cl):

@@ -7,6 +7,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCoreApplication>
+#include <QLineEdit>
 #include <QMenu>
 #include <QMenuBar>
 #include <QMouseEvent>
@@ -55,6 +56,13 @@ inline void dragStroke(QWidget* canvas, QPoint from, std::initializer_list<QPoin
         QApplication::sendEvent(canvas, &move);
     }
     QTest::mouseRelease(canvas, Qt::LeftButton, {}, to);
+}
+
+/// Text typed into a line edit as the user does: all selected, deleted, then the keys.
+inline void typeInto(QLineEdit* edit, const QString& text) {
+    edit->selectAll();
+    QTest::keyClick(edit, Qt::Key_Delete);
+    QTest::keyClicks(edit, text);
 }
 
 /// The menu bar's item with this text (its mnemonic's ampersand aside), or null.
