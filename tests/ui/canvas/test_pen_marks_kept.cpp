@@ -321,7 +321,6 @@ void TestPenMarksKept::aPresetsUndoBringsTheMarksBackAndRedoTakesThem() {
     loadStraight(*window);
     const auto marks = drawThreeMarks(*window);
     const QPointF drawnAt = window->canvas()->toPixel({2, 0.8});
-    const QTransform view = window->canvas()->worldToPixel();
     QVERIFY(near(picture(*window).pixelColor(drawnAt.toPoint()), kRed));
     SceneDocument* document = window->document();
     QUndoStack* stack = document->undoStack();
@@ -347,18 +346,20 @@ void TestPenMarksKept::aPresetsUndoBringsTheMarksBackAndRedoTakesThem() {
         QCOMPARE(stack->index(), steps);
         QCOMPARE(sceneToLink(document->scene()), link);
         QCOMPARE(pen->marks(), marks);
-        window->canvas()->fitScene();
-        QCOMPARE(window->canvas()->worldToPixel(), view);
+        // at the same place of the scene: where the view puts the metres they were drawn at
+        const QPointF shownAt = window->canvas()->toPixel({2, 0.8});
         QImage image = picture(*window);
-        QVERIFY2(near(image.pixelColor(drawnAt.toPoint()), kRed),
-                 qPrintable(image.pixelColor(drawnAt.toPoint()).name()));
+        QVERIFY2(near(image.pixelColor(shownAt.toPoint()), kRed),
+                 qPrintable(image.pixelColor(shownAt.toPoint()).name()));
+        QVERIFY(near(image.pixelColor(window->canvas()->toPixel({2, -0.8}).toPoint()),
+                     PenTool::colourOf(1)));
         // Edit > Redo: the line again, without them
         redo->trigger();
         document->flush();
         QCOMPARE(stack->index(), steps + 1);
         QVERIFY(pen->marks().empty());
         image = picture(*window);
-        QVERIFY(!near(image.pixelColor(drawnAt.toPoint()), kRed, 60));
+        QVERIFY(!near(image.pixelColor(window->canvas()->toPixel({2, 0.8}).toPoint()), kRed, 60));
     }
     // the same preset again is no step, and takes no mark drawn over it
     drag(window->canvas(), drawnAt.toPoint(), drawnAt.toPoint() + QPoint(80, 0));
@@ -390,31 +391,43 @@ void TestPenMarksKept::aGalleryScenesStepKeepsTheUnsavedMarksRule() {
     QVERIFY(pen->marks().empty());
     QVERIFY(window->document()->fileName().isEmpty());
     QVERIFY(!window->hasUnsavedChanges());
+    QVERIFY(!window->windowTitle().contains(QLatin1Char('*')));
     undo->trigger();
     window->document()->flush();
     QCOMPARE(pen->marks(), marks);
     QCOMPARE(window->document()->fileName(), path);
     QVERIFY(pen->savesWithScene());
-    QVERIFY(!window->hasUnsavedChanges());
-    QVERIFY(!window->windowTitle().contains(QLatin1Char('*')));
+    QVERIFY(!pen->hasUnsavedMarks()); // the file's own
+    redo->trigger();
+    QVERIFY(pen->marks().empty());
+    QVERIFY(!pen->hasUnsavedMarks());
 
-    // a mark the file does not hold is an unsaved change a step back, as a scene edit is
+    // the file again, clean, and a mark it does not hold: an unsaved change that stays a step
+    // back, the document modified, as the scene's own unsaved edits do
+    QVERIFY(window->openFile(path));
+    QCOMPARE(pen->marks(), marks);
+    QVERIFY(!window->hasUnsavedChanges());
+    window->canvas()->setPenMode(true);
     drag(window->canvas(), window->canvas()->toPixel({1, 0.4}).toPoint(),
          window->canvas()->toPixel({3, 0.4}).toPoint());
     const auto more = pen->marks();
     QCOMPARE(more.size(), marks.size() + 1);
     QVERIFY(window->hasUnsavedChanges());
     QVERIFY(window->loadGalleryEntry(QStringLiteral("cusp")));
-    QVERIFY(!redo->isEnabled()); // a new step
     QVERIFY(pen->marks().empty());
+    QVERIFY(!pen->hasUnsavedMarks());
+    QVERIFY(window->document()->isModified());
     QVERIFY(window->hasUnsavedChanges());
     QVERIFY(window->windowTitle().contains(QLatin1Char('*')));
     undo->trigger();
     window->document()->flush();
     QCOMPARE(pen->marks(), more);
+    QCOMPARE(window->document()->fileName(), path);
+    QVERIFY(pen->hasUnsavedMarks());
     QVERIFY(window->hasUnsavedChanges());
-    // the last mark undone: the file's marks, nothing unsaved
+    // the last mark undone: the file's marks and scene, nothing unsaved
     QVERIFY(pen->undoLast());
+    QVERIFY(!pen->hasUnsavedMarks());
     QVERIFY(!window->hasUnsavedChanges());
 }
 
