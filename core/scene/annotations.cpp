@@ -20,6 +20,11 @@ int markColourFromName(const std::string& name) {
     return -1;
 }
 
+PenMarks PenMarks::ofFile(std::vector<AnnotationMark> marks, bool savedWithScene) {
+    const bool any = !marks.empty();
+    return {marks, marks, savedWithScene || any};
+}
+
 std::vector<std::pair<double, double>>
 simplifyStroke(const std::vector<std::pair<double, double>>& points, double minDistance) {
     if (points.size() <= 2)

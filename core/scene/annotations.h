@@ -24,6 +24,25 @@ struct AnnotationMark {
     bool operator==(const AnnotationMark&) const = default;
 };
 
+/// The pen's marks beside the scene's file (docs/user-guide.md, Drawing over the lesson): those
+/// shown over the canvas, those the file holds, and whether File > Save writes them into it.
+struct PenMarks {
+    std::vector<AnnotationMark> shown;
+    std::vector<AnnotationMark> inFile;
+    bool savedWithScene = false;
+
+    /// File > Save would write marks other than the file's: unsaved changes, as the scene's own.
+    bool unsaved() const { return savedWithScene && shown != inFile; }
+    /// Marks shown that the file does not hold, to be saved with it or not: what the
+    /// crash-recovery copy keeps (docs/robustness.md, Crash recovery).
+    bool outsideFile() const { return shown != inFile; }
+    /// The marks that come with a scene's file: shown as they are, File > Save annotations ticked
+    /// when there are any and otherwise as it was (`savedWithScene`).
+    static PenMarks ofFile(std::vector<AnnotationMark> marks, bool savedWithScene);
+
+    bool operator==(const PenMarks&) const = default;
+};
+
 /// At most this many marks on a scene, this many points in one mark.
 constexpr std::size_t kMaxMarks = 500;
 constexpr std::size_t kMaxMarkPoints = 5000;

@@ -355,7 +355,10 @@ std::string sceneToJson(const Scene& scene) {
     return j.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
-Scene sceneFromJson(const std::string& text) {
+namespace {
+
+// the text as JSON, after its shape is checked
+json parseSceneText(const std::string& text) {
     checkShape(text);
     json j;
     try {
@@ -374,6 +377,10 @@ Scene sceneFromJson(const std::string& text) {
                                            (pos == std::string::npos ? msg : msg.substr(pos + 2)) +
                                            ")");
     }
+    return j;
+}
+
+Scene readScene(const json& j) {
     object(j, "");
     if (auto it = j.find("format"); it != j.end() && *it == kLectureFormatName)
         bad("/format", "the file is a lecture (\"" + std::string(kLectureFormatName) +
@@ -428,6 +435,28 @@ Scene sceneFromJson(const std::string& text) {
     if (auto it = j.find("annotations"); it != j.end())
         s.annotations = annotationsFromJson(*it, "/annotations");
     return s;
+}
+
+} // namespace
+
+Scene sceneFromJson(const std::string& text) {
+    return readScene(parseSceneText(text));
+}
+
+SceneSparingMarks sceneFromJsonSparingMarks(const std::string& text) {
+    json j = parseSceneText(text);
+    const auto marks = j.find("annotations");
+    if (marks == j.end())
+        return {readScene(j), std::nullopt};
+    const json member = *marks;
+    j.erase(marks);
+    SceneSparingMarks read{readScene(j), std::nullopt};
+    try {
+        read.scene.annotations = annotationsFromJson(member, "/annotations");
+    } catch (const InputError& e) {
+        read.marksError = e;
+    }
+    return read;
 }
 
 Scene loadSceneFile(const std::string& path) {

@@ -1237,6 +1237,13 @@ realimentação: %2</translation>
     </message>
 </context>
 <context>
+    <name>chaplygin::ui::Autosave</name>
+    <message>
+        <source>cannot open &apos;%1&apos;</source>
+        <translation>não é possível abrir &apos;%1&apos;</translation>
+    </message>
+</context>
+<context>
     <name>chaplygin::ui::BodyDiagram</name>
     <message>
         <source>Drawing of the body on its path with the angles Ψ, φ and χ</source>
@@ -2207,6 +2214,10 @@ realimentação: %2</translation>
     <message>
         <source>&amp;Clear marks</source>
         <translation>&amp;Apagar as marcas</translation>
+    </message>
+    <message>
+        <source>The scene is restored without the pen&apos;s marks, which were damaged: %1</source>
+        <translation>A cena foi restaurada sem as marcas da caneta, que estavam danificadas: %1</translation>
     </message>
 </context>
 <context>

@@ -63,18 +63,25 @@ void PenTool::setKind(MarkKind kind) {
 }
 
 void PenTool::setSavesWithScene(bool on) {
-    if (on == m_savesWithScene)
+    if (on == m_state.savedWithScene)
         return;
-    m_savesWithScene = on;
+    m_state.savedWithScene = on;
     emit savesWithSceneChanged(on);
 }
 
-void PenTool::setMarks(std::vector<AnnotationMark> marks) {
+void PenTool::setPenMarks(PenMarks marks) {
     m_drawing.reset();
-    m_marks = std::move(marks);
-    m_savedMarks = m_marks;
+    const bool option = marks.savedWithScene;
+    marks.savedWithScene = m_state.savedWithScene;
+    m_state = std::move(marks);
     emit marksChanged();
+    setSavesWithScene(option);
     emit changed();
+}
+
+void PenTool::setMarksSaved() {
+    m_state.inFile = m_state.savedWithScene ? m_state.shown : std::vector<AnnotationMark>{};
+    emit marksChanged();
 }
 
 bool PenTool::undoLast() {
@@ -82,9 +89,9 @@ bool PenTool::undoLast() {
         cancel();
         return true;
     }
-    if (m_marks.empty())
+    if (m_state.shown.empty())
         return false;
-    m_marks.pop_back();
+    m_state.shown.pop_back();
     emit marksChanged();
     emit changed();
     return true;
@@ -92,8 +99,8 @@ bool PenTool::undoLast() {
 
 void PenTool::clear() {
     m_drawing.reset();
-    if (!m_marks.empty()) {
-        m_marks.clear();
+    if (!m_state.shown.empty()) {
+        m_state.shown.clear();
         emit marksChanged();
     }
     emit changed();
@@ -173,14 +180,14 @@ void PenTool::finish() {
             emit changed();
             return;
         }
-        m_marks.push_back(std::move(mark));
+        m_state.shown.push_back(std::move(mark));
     } else {
         // the points closer than kMinStepPx at this zoom are dropped; a long stroke is kept as
         // marks of at most kMaxMarkPoints, each starting where the one before ended
         const auto points = simplifyStroke(mark.points, kMinStepPx / m_view.scale());
         for (std::size_t from = 0;;) {
             const std::size_t to = std::min(points.size(), from + kMaxMarkPoints);
-            m_marks.push_back(
+            m_state.shown.push_back(
                 {mark.colour,
                  MarkKind::Freehand,
                  {points.begin() + std::ptrdiff_t(from), points.begin() + std::ptrdiff_t(to)}});
@@ -190,8 +197,8 @@ void PenTool::finish() {
         }
     }
     // the oldest marks go past the most a scene holds
-    if (m_marks.size() > kMaxMarks)
-        m_marks.erase(m_marks.begin(), m_marks.end() - std::ptrdiff_t(kMaxMarks));
+    if (m_state.shown.size() > kMaxMarks)
+        m_state.shown.erase(m_state.shown.begin(), m_state.shown.end() - std::ptrdiff_t(kMaxMarks));
     emit marksChanged();
     emit changed();
 }
@@ -261,7 +268,7 @@ void PenTool::paintMark(QPainter& p, const AnnotationMark& mark, const QRectF& a
 }
 
 void PenTool::paint(QPainter& p) const {
-    if (m_marks.empty() && !m_drawing)
+    if (m_state.shown.empty() && !m_drawing)
         return;
     QRectF area = m_area();
     // an animation frame repaints a small region: the marks that cannot reach it are left out
@@ -272,7 +279,7 @@ void PenTool::paint(QPainter& p) const {
     p.save();
     p.setClipRect(area, Qt::IntersectClip);
     p.setRenderHint(QPainter::Antialiasing);
-    for (const AnnotationMark& mark : m_marks)
+    for (const AnnotationMark& mark : m_state.shown)
         paintMark(p, mark, area);
     if (m_drawing)
         paintMark(p, *m_drawing, area);

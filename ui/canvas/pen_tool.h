@@ -19,8 +19,9 @@ struct CanvasStyle;
 /// The pen: freehand marks and arrows drawn over the canvas while it plays (docs/user-guide.md,
 /// Drawing over the lesson). The marks are held in metres, so that they follow zoom and pan, and
 /// they belong to the pen, not to the scene: they change neither the path nor the computation,
-/// and no step of the scene's undo stack. A drag draws a mark in the pen's colour; with arrows
-/// chosen, or Shift held, the drag is an arrow from its start to its end.
+/// and no step of the scene's undo stack (a step that replaces the whole scene carries the marks
+/// it took away: SceneDocument::penMarksLoaded). A drag draws a mark in the pen's colour; with
+/// arrows chosen, or Shift held, the drag is an arrow from its start to its end.
 class PenTool : public CanvasTool {
     Q_OBJECT
   public:
@@ -43,18 +44,21 @@ class PenTool : public CanvasTool {
     void setKind(MarkKind kind);
     /// Whether File > Save writes the marks into the scene file (off unless asked, or unless
     /// the opened file had them).
-    bool savesWithScene() const { return m_savesWithScene; }
+    bool savesWithScene() const { return m_state.savedWithScene; }
     void setSavesWithScene(bool on);
 
     /// The marks drawn, oldest first [m].
-    const std::vector<AnnotationMark>& marks() const { return m_marks; }
-    /// The marks of a scene just loaded (none for a scene without them): what its file holds.
-    void setMarks(std::vector<AnnotationMark> marks);
-    /// The marks are what the scene's file now holds (it was just saved with them).
-    void setMarksSaved() { m_savedMarks = m_marks; }
+    const std::vector<AnnotationMark>& marks() const { return m_state.shown; }
+    /// The marks shown, those the scene's file holds and the option to save them.
+    const PenMarks& penMarks() const { return m_state; }
+    /// All of it at once: a scene loaded or restored, or its undo step undone or redone.
+    void setPenMarks(PenMarks marks);
+    /// The scene's file was just written: it holds the marks if they are saved with the scene,
+    /// else none.
+    void setMarksSaved();
     /// Whether File > Save would write marks other than the file's: the marks are to be saved
-    /// with the scene and differ from those last loaded or saved.
-    bool hasUnsavedMarks() const { return m_savesWithScene && m_marks != m_savedMarks; }
+    /// with the scene and differ from those last loaded or saved (PenMarks::unsaved).
+    bool hasUnsavedMarks() const { return m_state.unsaved(); }
     /// Removes the last mark (Ctrl+Z while the pen is on); false when there is none.
     bool undoLast();
     /// Removes every mark (E or Delete while the pen is on).
@@ -73,7 +77,7 @@ class PenTool : public CanvasTool {
     void paint(QPainter& p) const override;
 
   signals:
-    /// A mark was added or removed.
+    /// A mark was added or removed, or the marks the scene's file holds changed.
     void marksChanged();
     void colourChanged(int colour);
     void kindChanged(chaplygin::MarkKind kind);
@@ -90,12 +94,10 @@ class PenTool : public CanvasTool {
     const CanvasStyle& m_style;
     std::function<QRectF()> m_area;
     bool m_enabled = false;
-    bool m_savesWithScene = false;
     int m_colour = 0;
     MarkKind m_kind = MarkKind::Freehand;
-    std::vector<AnnotationMark> m_marks;
-    std::vector<AnnotationMark> m_savedMarks; // as last loaded or saved
-    std::optional<AnnotationMark> m_drawing;  // the mark under way
+    PenMarks m_state;
+    std::optional<AnnotationMark> m_drawing; // the mark under way
 };
 
 } // namespace chaplygin::ui

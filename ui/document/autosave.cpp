@@ -1,7 +1,7 @@
 #include "document/autosave.h"
 
 #include "common/atomic_file.h"
-#include "document/scene_files.h"
+#include "common/input_error.h"
 #include "scene/scene_json.h"
 
 #include <QCoreApplication>
@@ -113,8 +113,12 @@ std::vector<Autosave::Orphan> Autosave::orphans() const {
     return found;
 }
 
-Scene Autosave::readOrphan(const Orphan& orphan) {
-    return openSceneFile(orphan.file);
+SceneSparingMarks Autosave::readOrphan(const Orphan& orphan) {
+    QFile f(orphan.file);
+    if (!f.open(QIODevice::ReadOnly))
+        throw InputError(tr("cannot open '%1'").arg(orphan.file).toStdString(),
+                         f.errorString().toStdString());
+    return sceneFromJsonSparingMarks(f.readAll().toStdString());
 }
 
 void Autosave::removeOrphan(const Orphan& orphan) {

@@ -1,5 +1,6 @@
 #pragma once
 #include "scene/scene.h"
+#include "scene/scene_json.h"
 
 #include <QDateTime>
 #include <QLockFile>
@@ -31,8 +32,9 @@ class Autosave : public QObject {
     /// $XDG_STATE_HOME/chaplygin-lab/autosave (by default ~/.local/state/chaplygin-lab/autosave).
     static QString defaultDirectory();
 
-    /// The scene changed and differs from its file: write it kDelayMs from now (a later change
-    /// restarts the wait). fileName: the file it was loaded from or saved to, if any.
+    /// The scene, or the pen's marks it carries, changed and differ from its file: write it
+    /// kDelayMs from now (a later change restarts the wait). fileName: the file it was loaded
+    /// from or saved to, if any.
     void sceneChanged(const Scene& scene, const QString& fileName);
     /// The scene is saved or back to its saved state: nothing to keep.
     void discard();
@@ -50,8 +52,10 @@ class Autosave : public QObject {
     };
     /// The copies in the folder whose program is no longer running, newest first.
     std::vector<Orphan> orphans() const;
-    /// Reads an orphan's scene; throws InputError when the copy is damaged.
-    static Scene readOrphan(const Orphan& orphan);
+    /// Reads an orphan's scene and its pen marks ("annotations", as a scene file holds them); a
+    /// damaged annotations member costs the marks only (sceneFromJsonSparingMarks). Throws
+    /// InputError when the copy cannot be read or its scene is damaged.
+    static SceneSparingMarks readOrphan(const Orphan& orphan);
     /// Removes an orphan's copy (restored or declined).
     static void removeOrphan(const Orphan& orphan);
 

@@ -93,8 +93,17 @@ class SceneDocument : public QObject {
     /// The copy of the unsaved scene on disk (null unless persistent).
     Autosave* autosave() const { return m_autosave; }
     /// Loads a copy a killed program left as the document, modified, with the scene's own file
-    /// name; throws InputError when the copy is damaged.
-    void restore(const Autosave::Orphan& orphan);
+    /// name, and its marks to the pen (penMarksLoaded): those of the copy shown, beside those the
+    /// scene's own file holds now, the option to save them as opening that file would set it.
+    /// Throws InputError when the scene is damaged; returns the refusal of a damaged
+    /// "annotations" member, which costs the marks only ("" when they were good).
+    QString restore(const Autosave::Orphan& orphan);
+
+    /// The pen's marks as the window shows them (they are the pen's, never the scene's): kept
+    /// in the autosaved copy, and carried by the undo step of a known scene that takes them away.
+    const PenMarks& penMarks() const { return m_penMarks; }
+    /// The pen's marks changed: the copy on disk follows.
+    void setPenMarks(const PenMarks& marks);
 
     /// Free-motion samples for the live plots and the ghost's trail (each costs a Solution::at).
     static constexpr int kFreeSamples = 400;
@@ -147,22 +156,27 @@ class SceneDocument : public QObject {
     void sceneApplied(const Scene& scene, bool pathChanged);
     void modifiedChanged(bool modified);
     void recentFilesChanged();
-    /// A whole scene came in (a file, a preset, a gallery or lecture scene) with these marks of
-    /// the pen (none for most): the pen shows them; the document's scene holds none.
-    void annotationsLoaded(const std::vector<chaplygin::AnnotationMark>& marks);
+    /// A whole scene came in (a file, a preset, a gallery or lecture scene, a restored copy) with
+    /// these marks of the pen (none for most), or the undo step of a known scene was undone or
+    /// redone: the pen shows them; the document's scene holds none.
+    void penMarksLoaded(const chaplygin::PenMarks& marks);
 
   private:
     /// A preset or a gallery scene as one undo step that is no modification: the document is
-    /// then that known scene, untitled, and clean if it was clean before; unsaved changes made
-    /// before it stay a step back, and the document stays modified. Undo gives the scene and the
-    /// file name back. A scene equal to the current one is no step.
-    void loadKnown(const Scene& scene, const QString& description);
+    /// then that known scene, untitled, with `marks`, and clean if it was clean before; unsaved
+    /// changes made before it (the scene's or the pen's marks') stay a step back, and the
+    /// document stays modified. Undo gives the scene, the file name and the pen's marks back. A
+    /// scene equal to the current one is no step, and leaves the marks alone.
+    void loadKnown(const Scene& scene, const QString& description, const PenMarks& marks);
     /// Sets the scene from an edit, an undo or a load; emits sceneApplied, with pathChanged for
     /// a new document (whole) as for a new path.
     void apply(const Scene& scene, bool whole = false);
     /// The end of a load, its path built: vets the scene, installs it as a new document or as
-    /// a known scene (description), solves it; throws InputError and changes nothing.
-    void install(const Scene& scene, const QString& description);
+    /// a known scene (description) with the pen's `marks`, solves it; throws InputError and
+    /// changes nothing.
+    void install(const Scene& scene, const QString& description, const PenMarks& marks);
+    /// The pen's marks now: those given (penMarksLoaded).
+    void loadPenMarks(const PenMarks& marks);
     /// The document is now the file at path: clean, and first in the recent files.
     void markSavedAs(const QString& path);
     void keepCopy();
@@ -190,6 +204,7 @@ class SceneDocument : public QObject {
     PlotSeries m_series;
     SceneError m_error;
     QString m_fileName;
+    PenMarks m_penMarks;
     std::vector<std::pair<PathSource, std::shared_ptr<const Path>>> m_pathCache;
     std::shared_ptr<const Solution> m_checked; // solved by check(), taken by the next recompute
     // the system editParameters vetted, with its derivation: the recompute solves with it

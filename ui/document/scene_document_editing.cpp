@@ -5,6 +5,7 @@
 #include "document/scene_command.h"
 #include "document/scene_document.h"
 #include "document/scene_files.h"
+#include "scene/scene_json.h"
 #include "scene/scene_plan.h"
 #include "systems/system.h"
 
@@ -22,7 +23,8 @@ void SceneDocument::apply(const Scene& scene, bool whole) {
     emit sceneApplied(scene, pathChanged);
 }
 
-void SceneDocument::install(const Scene& loaded, const QString& description) {
+void SceneDocument::install(const Scene& loaded, const QString& description,
+                            const PenMarks& marks) {
     // the pen's marks go to the pen: the document's scene, its undo steps, its link and its
     // summary never hold them
     Scene scene = loaded;
@@ -34,11 +36,24 @@ void SceneDocument::install(const Scene& loaded, const QString& description) {
     if (description.isEmpty()) {
         m_undo->clear();
         apply(scene, true);
+        loadPenMarks(marks);
     } else {
-        loadKnown(scene, description);
+        loadKnown(scene, description, marks);
     }
     flush();
-    emit annotationsLoaded(loaded.annotations);
+}
+
+void SceneDocument::loadPenMarks(const PenMarks& marks) {
+    m_penMarks = marks;
+    emit penMarksLoaded(marks);
+    keepCopy();
+}
+
+void SceneDocument::setPenMarks(const PenMarks& marks) {
+    if (marks == m_penMarks)
+        return;
+    m_penMarks = marks;
+    keepCopy();
 }
 
 void SceneDocument::load(const Scene& scene, LoadOptions options) {
@@ -46,7 +61,8 @@ void SceneDocument::load(const Scene& scene, LoadOptions options) {
         SceneError refusal = error.isEmpty() ? SceneError() : SceneError::ofPath(error);
         if (refusal.isEmpty()) {
             try {
-                install(scene, options.description);
+                install(scene, options.description,
+                        PenMarks::ofFile(scene.annotations, m_penMarks.savedWithScene));
             } catch (const InputError& e) {
                 refusal = SceneError::of(e);
             }
@@ -62,7 +78,7 @@ void SceneDocument::load(const Scene& scene, LoadOptions options) {
 
 void SceneDocument::loadNow(const Scene& scene, const QString& description) {
     pathFor(scene.path);
-    install(scene, description);
+    install(scene, description, PenMarks::ofFile(scene.annotations, m_penMarks.savedWithScene));
 }
 
 void SceneDocument::edit(const Scene& scene, const QString& description, const QString& mergeKey) {
@@ -72,15 +88,18 @@ void SceneDocument::edit(const Scene& scene, const QString& description, const Q
         description, m_scene, scene, [this](const Scene& s) { apply(s); }, mergeKey));
 }
 
-void SceneDocument::loadKnown(const Scene& scene, const QString& description) {
+void SceneDocument::loadKnown(const Scene& scene, const QString& description,
+                              const PenMarks& marks) {
     if (m_applied && scene == m_scene)
         return;
-    const bool wasClean = m_undo->isClean();
+    // marks to be saved and not yet saved are an unsaved change a step back, as the scene's are
+    const bool keepClean = m_undo->isClean() && !m_penMarks.unsaved();
     auto* step =
         new SceneCommand(description, m_scene, scene, [this](const Scene& s) { apply(s); });
     step->setFileNames(m_fileName, {}, [this](const QString& name) { setFileName(name); });
+    step->setMarks(m_penMarks, marks, [this](const PenMarks& m) { loadPenMarks(m); });
     m_undo->push(step);
-    if (wasClean)
+    if (keepClean)
         m_undo->setClean();
 }
 
@@ -131,21 +150,40 @@ QStringList SceneDocument::recentFiles() const {
     return m_persistent ? chaplygin::ui::recentFiles() : QStringList();
 }
 
-void SceneDocument::restore(const Autosave::Orphan& orphan) {
-    loadNow(Autosave::readOrphan(orphan));
+QString SceneDocument::restore(const Autosave::Orphan& orphan) {
+    const SceneSparingMarks copy = Autosave::readOrphan(orphan);
+    // the marks the scene's own file holds now, as opening it would give them: what File > Save
+    // would change, and whether the option to save them is ticked
+    std::vector<AnnotationMark> inFile;
+    if (!orphan.fileName.isEmpty()) {
+        try {
+            inFile = openSceneFile(orphan.fileName).annotations;
+        } catch (const std::exception&) {
+            // gone or damaged since: it holds no marks of its own
+        }
+    }
+    PenMarks marks = PenMarks::ofFile(std::move(inFile), m_penMarks.savedWithScene);
+    marks.shown = copy.scene.annotations;
+    pathFor(copy.scene.path);
+    install(copy.scene, {}, marks);
     setFileName(orphan.fileName);
     m_undo->resetClean();
     keepCopy();
+    return copy.marksError ? QString::fromStdString(copy.marksError->what()) : QString();
 }
 
-// the copy on disk follows the modified state: written after a change, gone when clean
+// the copy on disk follows the modified state and the pen's marks: written after a change, gone
+// when the scene is clean and the scene's file holds the marks shown
 void SceneDocument::keepCopy() {
     if (!m_autosave)
         return;
-    if (m_undo->isClean())
+    if (m_undo->isClean() && !m_penMarks.outsideFile()) {
         m_autosave->discard();
-    else
-        m_autosave->sceneChanged(m_scene, m_fileName);
+        return;
+    }
+    Scene copy = m_scene;
+    copy.annotations = m_penMarks.shown;
+    m_autosave->sceneChanged(copy, m_fileName);
 }
 
 } // namespace chaplygin::ui

@@ -441,8 +441,7 @@ bool MainWindow::saveFile(const QString& path) {
         showFileError(QString::fromStdString(e.what()));
         return false;
     }
-    if (pen.savesWithScene())
-        m_canvas->penTool()->setMarksSaved();
+    m_canvas->penTool()->setMarksSaved();
     updateTitle();
     statusBar()->showMessage(tr("Saved %1").arg(path), 4000);
     return true;
@@ -607,10 +606,14 @@ bool MainWindow::offerRestore(const RestoreQuestion& restore) {
     bool restored = false;
     if (wanted) {
         try {
-            m_document->restore(newest);
+            const QString marksRefused = m_document->restore(newest);
             m_playback->seek(0);
             m_canvas->fitScene();
             restored = true;
+            if (!marksRefused.isEmpty())
+                showFileError(
+                    tr("The scene is restored without the pen's marks, which were damaged: %1")
+                        .arg(marksRefused));
         } catch (const std::exception& e) {
             showFileError(QString::fromStdString(e.what()));
         }

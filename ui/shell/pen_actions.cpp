@@ -22,13 +22,15 @@ void installSaveAnnotationsAction(MainWindow* window, QMenu& fileMenu) {
                                       "file; the scene's link and its computation are unchanged"));
     QObject::connect(save, &QAction::toggled, pen, &PenTool::setSavesWithScene);
     QObject::connect(pen, &PenTool::savesWithSceneChanged, save, &QAction::setChecked);
-    // a file saved with its marks is saved with them again
-    QObject::connect(window->document(), &SceneDocument::annotationsLoaded, pen,
-                     [pen](const std::vector<AnnotationMark>& marks) {
-                         pen->setMarks(marks);
-                         if (!marks.empty())
-                             pen->setSavesWithScene(true);
-                     });
+    // the marks of a scene that came in (a file saved with its marks is saved with them again),
+    // and those a known scene's undo step gives back; the document knows the pen's for its copy
+    // on disk and for those steps
+    SceneDocument* document = window->document();
+    QObject::connect(document, &SceneDocument::penMarksLoaded, pen, &PenTool::setPenMarks);
+    auto tell = [pen, document] { document->setPenMarks(pen->penMarks()); };
+    QObject::connect(pen, &PenTool::marksChanged, document, tell);
+    QObject::connect(pen, &PenTool::savesWithSceneChanged, document, tell);
+    tell();
 }
 
 void installPenActions(MainWindow* window, QMenu& editMenu, QAction& sceneUndo) {

@@ -8,7 +8,9 @@ namespace chaplygin::ui {
 class MainWindow;
 
 /// File > Save annotations with the scene: whether File > Save writes the pen's marks into the
-/// scene file (off unless asked, or unless the opened file had marks). Called once, by the
+/// scene file (off unless asked, or unless the opened file had marks). The pen and the document
+/// keep each other's marks: those of a scene that comes in go to the pen, the pen's to the
+/// document (its autosaved copy, the undo step of a preset or gallery scene). Called once, by the
 /// window, with its File menu.
 void installSaveAnnotationsAction(MainWindow* window, QMenu& fileMenu);
 

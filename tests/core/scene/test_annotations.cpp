@@ -1,7 +1,9 @@
 // The pen's marks in the scene file: the round trip (exact doubles), a scene without marks
 // written as before, a link without them, every bad "annotations" member refused with its JSON
 // path (non-finite numbers, too many marks or points, an unknown colour or kind, an arrow without
-// two points), and the simplification of a freehand stroke against the distances it promises.
+// two points), the crash-recovery copy's reader that a bad member costs the marks only, the rule
+// of unsaved marks, and the simplification of a freehand stroke against the distances it
+// promises.
 #include "common/input_error.h"
 #include "scene/annotations.h"
 #include "scene/annotations_json.h"
@@ -195,6 +197,58 @@ TEST(Annotations, TheWriterLeavesOutWhatTheReaderRefuses) {
     EXPECT_EQ(markColourFromName("green"), 2);
     EXPECT_EQ(markColourFromName("Green"), -1);
     EXPECT_EQ(markColourName(4), "");
+}
+
+TEST(Annotations, ACopyReadSparingItsMarksKeepsTheSceneOfABadMember) {
+    // the crash-recovery copy's reader: the same scene as sceneFromJson's and the same marks,
+    // or, for a bad member, the scene alone and the refusal sceneFromJson would have thrown
+    const Scene s = sceneWithMarks();
+    const SceneSparingMarks good = sceneFromJsonSparingMarks(sceneToJson(s));
+    EXPECT_EQ(good.scene, s);
+    EXPECT_FALSE(good.marksError.has_value());
+    Scene plain = s;
+    plain.annotations.clear();
+    const SceneSparingMarks none = sceneFromJsonSparingMarks(sceneToJson(plain));
+    EXPECT_EQ(none.scene, plain);
+    EXPECT_FALSE(none.marksError.has_value());
+    const json pair = json::array({json::array({0, 0}), json::array({1, 1})});
+    json tooMany = json::array();
+    for (std::size_t i = 0; i <= kMaxMarks; ++i)
+        tooMany.push_back(mark("red", "freehand", pair));
+    for (const json& bad :
+         {json::array({mark("purple", "freehand", pair)}), tooMany,
+          json::object({{"colour", "red"}}),
+          json::array({mark("red", "freehand", json::array({json::array({0, "x"})}))})}) {
+        json scene = json::parse(sceneToJson(plain));
+        scene["annotations"] = bad;
+        const auto [where, what] = refusal(bad);
+        ASSERT_FALSE(where.empty());
+        const SceneSparingMarks read = sceneFromJsonSparingMarks(scene.dump());
+        EXPECT_EQ(read.scene, plain) << where;
+        ASSERT_TRUE(read.marksError.has_value()) << where;
+        EXPECT_EQ(read.marksError->where(), where);
+        EXPECT_EQ(std::string(read.marksError->what()), what);
+    }
+    // the rest of the file is read as strictly as ever
+    json badScene = json::parse(sceneToJson(s));
+    badScene["speed"] = "fast";
+    EXPECT_THROW(sceneFromJsonSparingMarks(badScene.dump()), InputError);
+    EXPECT_THROW(sceneFromJsonSparingMarks(""), InputError);
+}
+
+TEST(Annotations, MarksBesideTheFileAreUnsavedOnlyWhenSavedWithTheScene) {
+    const std::vector<AnnotationMark> a{{0, MarkKind::Freehand, {{0, 0}, {1, 1}}}};
+    const std::vector<AnnotationMark> b{{1, MarkKind::Arrow, {{0, 0}, {1, 1}}}};
+    EXPECT_FALSE((PenMarks{a, a, true}).unsaved());
+    EXPECT_TRUE((PenMarks{b, a, true}).unsaved());
+    EXPECT_FALSE((PenMarks{b, a, false}).unsaved());
+    EXPECT_TRUE((PenMarks{b, a, false}).outsideFile());
+    EXPECT_TRUE((PenMarks{a, {}, false}).outsideFile());
+    EXPECT_FALSE((PenMarks{{}, {}, true}).outsideFile());
+    // a file's marks: shown as they are, the option ticked by marks and never unticked
+    EXPECT_EQ(PenMarks::ofFile(a, false), (PenMarks{a, a, true}));
+    EXPECT_EQ(PenMarks::ofFile({}, false), (PenMarks{{}, {}, false}));
+    EXPECT_EQ(PenMarks::ofFile({}, true), (PenMarks{{}, {}, true}));
 }
 
 TEST(Annotations, ASimplifiedStrokeKeepsItsEndsAndItsShape) {

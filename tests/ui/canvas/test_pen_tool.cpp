@@ -8,6 +8,7 @@
 #include "canvas/scene_canvas.h"
 #include "document/scene_document.h"
 #include "gui_test_support.h"
+#include "pen_strokes.h"
 #include "scene/scene_json.h"
 #include "scene/scene_link.h"
 #include "scene/summary_json.h"
@@ -30,6 +31,9 @@
 
 using namespace chaplygin;
 using namespace chaplygin::ui;
+using test::drag;
+using test::near;
+using test::sendMove;
 
 namespace {
 
@@ -39,26 +43,6 @@ Scene straightScene() {
     s.path.kind = PathKind::Polyline;
     s.path.points = {{0, 0}, {4, 0}};
     return s;
-}
-
-void sendMove(QWidget* w, QPointF at, Qt::MouseButtons buttons, Qt::KeyboardModifiers keys) {
-    QMouseEvent move(QEvent::MouseMove, at, w->mapToGlobal(at), Qt::NoButton, buttons, keys);
-    QApplication::sendEvent(w, &move);
-}
-
-// a drag of the left button between two whole pixels in `steps` moves
-void drag(QWidget* w, QPoint from, QPoint to, int steps = 20,
-          Qt::KeyboardModifiers keys = Qt::NoModifier) {
-    QTest::mousePress(w, Qt::LeftButton, keys, from);
-    for (int i = 1; i <= steps; ++i)
-        sendMove(w, QPointF(from) + QPointF(to - from) * (double(i) / steps), Qt::LeftButton, keys);
-    QTest::mouseRelease(w, Qt::LeftButton, keys, to);
-}
-
-bool near(QColor a, QColor b, int tolerance = 12) {
-    return std::abs(a.red() - b.red()) <= tolerance &&
-           std::abs(a.green() - b.green()) <= tolerance &&
-           std::abs(a.blue() - b.blue()) <= tolerance;
 }
 
 // the pixels of a horizontal stroke's colour in the column through `centre`, within 12 px of it
