@@ -4,6 +4,7 @@
 
 #include "canvas/draw_tool.h"
 #include "canvas/edit_points_tool.h"
+#include "canvas/halo_text.h"
 #include "canvas/masked_layer.h"
 #include "canvas/measure_tool.h"
 #include "canvas/pen_tool.h"
@@ -635,20 +636,6 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
     p.drawLine(at - along, at + along);
     p.restore();
 }
-
-namespace {
-
-// black text in a white halo: legible over the bodies and trails that pass under it
-void drawHaloText(QPainter& p, const QRectF& box, int flags, const QString& text, double width) {
-    p.setPen(QColor(255, 255, 255, 220));
-    for (QPointF d : {QPointF(-1, 0), QPointF(1, 0), QPointF(0, -1), QPointF(0, 1), QPointF(-1, -1),
-                      QPointF(1, 1), QPointF(-1, 1), QPointF(1, -1)})
-        p.drawText(box.translated(d * width), flags, text);
-    p.setPen(Qt::black);
-    p.drawText(box, flags, text);
-}
-
-} // namespace
 
 void SceneCanvas::paintTimeReadout(QPainter& p, double t, double tEnd, bool bodiesDrawn) const {
     QFont f = font();

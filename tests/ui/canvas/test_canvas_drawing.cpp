@@ -1,6 +1,7 @@
 // GUI tests of the canvas's drawing economies that need no window: a trail stroked only where a
 // frame repaints, and a layer kept within areas by a coverage mask, each against the Qt drawing
 // it stands in for (docs/numerics.md §7). Offscreen, on images.
+#include "canvas/halo_text.h"
 #include "canvas/legend_text.h"
 #include "canvas/masked_layer.h"
 #include "canvas/trail_stroke.h"
@@ -45,6 +46,7 @@ class TestCanvasDrawing : public QObject {
     void trailStrokesWithinAnAreaDrawWhatDrawPolylineDraws();
     void maskedLayerDrawsWhatClipPathsDraw();
     void legendTextTakesTheLongestFormThatFits();
+    void haloTextLaidOutOnceIsWhatNineDrawTextCallsDraw();
 };
 
 void TestCanvasDrawing::trailStrokesWithinAnAreaDrawWhatDrawPolylineDraws() {
@@ -251,6 +253,74 @@ void TestCanvasDrawing::legendTextTakesTheLongestFormThatFits() {
     // an entry without a shortest form keeps its brief one
     QCOMPARE(fittingLegendText(font, &device, wBrief - 1, {full, brief, QString()}),
              QFontMetrics(font, &device).elidedText(brief, Qt::ElideRight, int(wBrief - 1)));
+}
+
+void TestCanvasDrawing::haloTextLaidOutOnceIsWhatNineDrawTextCallsDraw() {
+    // the reference: the halo as QPainter::drawText draws it, nine times at the offsets
+    auto reference = [](QPainter& p, const QRectF& box, int flags, const QString& text,
+                        double width) {
+        p.setPen(QColor(255, 255, 255, 220));
+        for (QPointF d : {QPointF(-1, 0), QPointF(1, 0), QPointF(0, -1), QPointF(0, 1),
+                          QPointF(-1, -1), QPointF(1, 1), QPointF(-1, 1), QPointF(1, -1)})
+            p.drawText(box.translated(d * width), flags, text);
+        p.setPen(Qt::black);
+        p.drawText(box, flags, text);
+    };
+    const QString texts[] = {
+        QStringLiteral("t = 12.34 s of 20.00 s    scale 57.3 px/m"),
+        QStringLiteral("t = 0.00 s de 20.00 s    escala 1.2e+03 px/m    curvas desenhadas em "
+                       "parte neste zoom"),
+        QStringLiteral("t = 3.50 s   "), // trailing spaces
+    };
+    int compared = 0;
+    for (double dpr : {1.0, 2.0})
+        for (int flags : {int(Qt::AlignLeft), int(Qt::AlignLeft | Qt::AlignVCenter)})
+            for (double points : {9.0, 13.5, 36.0})
+                for (const QString& text : texts)
+                    for (const QRectF& box : {QRectF(8, 6, 700, 28), QRectF(10.5, 0, 300, 61.25)}) {
+                        QImage image[2];
+                        for (int k = 0; k < 2; ++k) {
+                            image[k] =
+                                QImage(QSize(760, 80) * dpr, QImage::Format_ARGB32_Premultiplied);
+                            image[k].setDevicePixelRatio(dpr);
+                            image[k].fill(QColor(90, 160, 230));
+                            QPainter p(&image[k]);
+                            p.setRenderHint(QPainter::Antialiasing, true);
+                            QFont f = p.font();
+                            f.setPointSizeF(points);
+                            f.setBold(points > 30);
+                            p.setFont(f);
+                            const double halo = points > 30 ? 2 : 1;
+                            if (k == 0)
+                                reference(p, box, flags, text, halo);
+                            else
+                                drawHaloText(p, box, flags, text, halo);
+                        }
+                        int differing = 0;
+                        QRect where;
+                        for (int y = 0; y < image[0].height(); ++y)
+                            for (int x = 0; x < image[0].width(); ++x)
+                                if (image[0].pixel(x, y) != image[1].pixel(x, y)) {
+                                    ++differing;
+                                    where |= QRect(x, y, 1, 1);
+                                }
+                        QVERIFY2(differing == 0,
+                                 qPrintable(QStringLiteral("ratio %1, flags %2, %3 pt, box at "
+                                                           "%4, \"%5\": %6 pixels differ in "
+                                                           "(%7, %8) %9 x %10")
+                                                .arg(dpr)
+                                                .arg(flags)
+                                                .arg(points)
+                                                .arg(box.x())
+                                                .arg(text)
+                                                .arg(differing)
+                                                .arg(where.x())
+                                                .arg(where.y())
+                                                .arg(where.width())
+                                                .arg(where.height())));
+                        ++compared;
+                    }
+    QCOMPARE(compared, 72);
 }
 
 QTEST_MAIN(TestCanvasDrawing)
