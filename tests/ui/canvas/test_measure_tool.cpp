@@ -33,16 +33,9 @@
 
 using namespace chaplygin;
 using namespace chaplygin::ui;
+using test::straightScene;
 
 namespace {
-
-// a straight drawn path along x from the origin
-Scene straightScene() {
-    Scene s;
-    s.path.kind = PathKind::Polyline;
-    s.path.points = {{0, 0}, {4, 0}};
-    return s;
-}
 
 void sendMove(QWidget* w, QPointF at, Qt::MouseButtons buttons) {
     QMouseEvent move(QEvent::MouseMove, at, w->mapToGlobal(at), Qt::NoButton, buttons, {});

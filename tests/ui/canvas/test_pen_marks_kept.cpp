@@ -38,9 +38,7 @@ namespace {
 
 // a straight drawn path along x from the origin, at a speed of its own
 Scene straightScene() {
-    Scene s;
-    s.path.kind = PathKind::Polyline;
-    s.path.points = {{0, 0}, {4, 0}};
+    Scene s = test::straightScene();
     s.speed = 1.5;
     return s;
 }

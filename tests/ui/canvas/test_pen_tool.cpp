@@ -34,16 +34,9 @@ using namespace chaplygin::ui;
 using test::drag;
 using test::near;
 using test::sendMove;
+using test::straightScene;
 
 namespace {
-
-// a straight drawn path along x from the origin
-Scene straightScene() {
-    Scene s;
-    s.path.kind = PathKind::Polyline;
-    s.path.points = {{0, 0}, {4, 0}};
-    return s;
-}
 
 // the pixels of a horizontal stroke's colour in the column through `centre`, within 12 px of it
 int thickness(const QImage& image, QPointF centre, QColor colour) {

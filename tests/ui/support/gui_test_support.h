@@ -21,6 +21,14 @@
 
 namespace chaplygin::ui::test {
 
+/// A straight drawn path along x from the origin, 4 m long.
+inline Scene straightScene() {
+    Scene s;
+    s.path.kind = PathKind::Polyline;
+    s.path.points = {{0, 0}, {4, 0}};
+    return s;
+}
+
 /// QSettings go to a folder of this process, never the user's and never another test's: ctest
 /// runs the functions of one suite as parallel processes, and a folder one of them remembered
 /// and then deleted must not reach another through a shared settings file.

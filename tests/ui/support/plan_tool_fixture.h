@@ -19,14 +19,6 @@
 
 namespace chaplygin::ui::test {
 
-// a straight drawn path along x from the origin: the plan starts at (0, 0, 0)
-inline Scene straightScene() {
-    Scene s;
-    s.path.kind = PathKind::Polyline;
-    s.path.points = {{0, 0}, {4, 0}};
-    return s;
-}
-
 struct Knife {
     double x, y, phi, psi, lambda;
 };
