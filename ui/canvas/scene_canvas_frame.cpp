@@ -147,6 +147,25 @@ QRegion SceneCanvas::movingBounds(const Solution& solution, const MotionSample& 
     return finite ? region : QRegion(rect());
 }
 
+std::vector<int> SceneCanvas::bodiesCrossing(const Solution& solution,
+                                             const std::vector<QRectF>& boxes) const {
+    constexpr int kSamples = 48;
+    std::vector<int> crossed(boxes.size(), 0);
+    const QTransform world = worldTransform();
+    const SystemSpec& spec = solution.scene().system;
+    const BodyLook look = bodyLook();
+    for (int k = 0; k <= kSamples; ++k) {
+        const MotionSample at = solution.at(solution.tEnd() * k / kSamples);
+        for (const DrawnBody& drawn : drawnBodies(at)) {
+            const QRectF body = BodySprites::pixelBounds(world, m_view.scale(), spec,
+                                                         solution.system(), drawn.pose, look);
+            for (std::size_t c = 0; c < boxes.size(); ++c)
+                crossed[c] += body.intersects(boxes[c]) ? 1 : 0;
+        }
+    }
+    return crossed;
+}
+
 void SceneCanvas::placeScaleBars(const Solution& solution) {
     const VectorOverlay& overlay = m_document->scene().vectors;
     const QRectF area = drawingArea();
@@ -166,25 +185,13 @@ void SceneCanvas::placeScaleBars(const Solution& solution) {
     if (!m_vectors.placeBarsAnew(key))
         return;
     // the bodies at 49 times of the run against each corner's box
-    constexpr int kSamples = 48;
     constexpr Qt::Corner kCorners[] = {Qt::BottomRightCorner, Qt::BottomLeftCorner,
                                        Qt::TopRightCorner};
-    QRect boxes[3];
-    for (int c = 0; c < 3; ++c)
-        boxes[c] = m_vectors.scaleBarsBounds(overlay, area, kCorners[c]);
-    int crossed[3] = {};
-    const SystemSpec& spec = solution.scene().system;
-    const BodyLook look = bodyLook();
-    for (int k = 0; k <= kSamples; ++k) {
-        const MotionSample at = solution.at(solution.tEnd() * k / kSamples);
-        for (const DrawnBody& drawn : drawnBodies(at)) {
-            const QRectF body = BodySprites::pixelBounds(world, m_view.scale(), spec,
-                                                         solution.system(), drawn.pose, look);
-            for (int c = 0; c < 3; ++c)
-                crossed[c] += body.intersects(QRectF(boxes[c])) ? 1 : 0;
-        }
-    }
-    const int best = int(std::min_element(std::begin(crossed), std::end(crossed)) - crossed);
+    std::vector<QRectF> boxes;
+    for (Qt::Corner corner : kCorners)
+        boxes.push_back(QRectF(m_vectors.scaleBarsBounds(overlay, area, corner)));
+    const std::vector<int> crossed = bodiesCrossing(solution, boxes);
+    const auto best = std::min_element(crossed.begin(), crossed.end()) - crossed.begin();
     if (kCorners[best] != m_vectors.barsCorner()) {
         const QRect left = m_vectors.scaleBarsBounds(overlay, area);
         m_vectors.setBarsCorner(kCorners[best]);
@@ -243,23 +250,14 @@ void SceneCanvas::placeWheelInset(const Solution& solution) {
     m_insetPlacedFor = key;
     // the corners the scale bars leave, each scored by the bodies at 49 times of the run that
     // cross it, then by the path's points under it; the first of the least crossed
-    constexpr int kSamples = 48;
     std::vector<Qt::Corner> corners;
+    std::vector<QRectF> boxes;
     for (Qt::Corner c : {Qt::BottomLeftCorner, Qt::TopRightCorner, Qt::BottomRightCorner})
-        if (!barsShown || c != m_vectors.barsCorner())
+        if (!barsShown || c != m_vectors.barsCorner()) {
             corners.push_back(c);
-    std::vector<int> crossed(corners.size(), 0);
-    const SystemSpec& spec = solution.scene().system;
-    const BodyLook look = bodyLook();
-    for (int k = 0; k <= kSamples; ++k) {
-        const MotionSample at = solution.at(solution.tEnd() * k / kSamples);
-        for (const DrawnBody& drawn : drawnBodies(at)) {
-            const QRectF body = BodySprites::pixelBounds(world, m_view.scale(), spec,
-                                                         solution.system(), drawn.pose, look);
-            for (std::size_t c = 0; c < corners.size(); ++c)
-                crossed[c] += body.intersects(wheelInsetBounds(corners[c])) ? 1 : 0;
+            boxes.push_back(wheelInsetBounds(c));
         }
-    }
+    const std::vector<int> crossed = bodiesCrossing(solution, boxes);
     std::vector<std::pair<int, int>> score(corners.size());
     for (std::size_t c = 0; c < corners.size(); ++c) {
         const QRectF box = wheelInsetBounds(corners[c]);
