@@ -99,10 +99,20 @@ void SceneCanvas::paintPathOverBodies(QPainter& p, const MotionSample& now) {
             }
             continue;
         }
+        // the parts pay where they leave out most of the box; where the ink crosses most of it
+        // (zoomed far in on the band), each part's fixed cost is lost: the whole box then
+        std::vector<QRect> parts{box};
+        if (!m_pathOverBodies.whole) {
+            std::vector<QRect> ink = inkRows(box, rows, inks, marks);
+            qint64 inked = 0;
+            for (const QRect& r : ink)
+                inked += qint64(r.width()) * r.height();
+            if (inked <= qint64(box.width()) * box.height() / 2)
+                parts = std::move(ink);
+        }
         // the layer's band within each part (or the band drawn there, at a view's first paint)
         // and the trail on it, in the body's area or under its outline
-        for (const QRect& part :
-             m_pathOverBodies.whole ? std::vector<QRect>{box} : inkRows(box, rows, inks, marks)) {
+        for (const QRect& part : parts) {
             const auto over = [&](QPainter& c) {
                 if (layer->isNull())
                     paintPath(c, world, QRectF(box), QRectF(part));
