@@ -67,14 +67,7 @@ void TestPathOverBodies::pathOverBodiesAtAViewsFirstPaintIsWhatItsLayerDraws() {
         const QImage second = canvas->grab().toImage().convertToFormat(QImage::Format_RGB32);
         QVERIFY2(canvas->pathOverBodiesFromLayer(), where);
         QCOMPARE(first.size(), second.size());
-        int differing = 0, largest = 0;
-        for (int y = 0; y < first.height(); ++y)
-            for (int x = 0; x < first.width(); ++x) {
-                const QRgb a = first.pixel(x, y), b = second.pixel(x, y);
-                const int d = test::channelDifference(a, b);
-                largest = std::max(largest, d);
-                differing += d > 0 ? 1 : 0;
-            }
+        const auto [differing, largest] = test::pictureDifference(first, second);
         QVERIFY2(largest <= 2 && differing <= 20,
                  qPrintable(QStringLiteral("%1: %2 pixels differ, by up to %3")
                                 .arg(where)
@@ -110,14 +103,7 @@ void TestPathOverBodies::thePartsInkCanReachDrawWhatTheWholeBoxDraws() {
                     canvas->grab().toImage().convertToFormat(QImage::Format_RGB32);
             }
             canvas->setPathOverBodiesWhole(false);
-            int differing = 0, largest = 0;
-            for (int y = 0; y < image[0].height(); ++y)
-                for (int x = 0; x < image[0].width(); ++x) {
-                    const int d =
-                        test::channelDifference(image[0].pixel(x, y), image[1].pixel(x, y));
-                    differing += d > 0 ? 1 : 0;
-                    largest = std::max(largest, d);
-                }
+            const auto [differing, largest] = test::pictureDifference(image[0], image[1]);
             const QString what = QStringLiteral("%1, %2: %3 pixels differ, by up to %4")
                                      .arg(where)
                                      .arg(fromLayer ? "from the layer" : "first")
